@@ -1,0 +1,239 @@
+//! The `tress` command: render a scene, print what a scene holds, benchmark tracing.
+
+use anyhow::{bail, Context, Result};
+use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+use tress::accel::Shape;
+use tress::bench::{trace_rays, HairMemory};
+use tress::scene::{prepare, Description, World};
+use tress::stats::{human_bytes, peak_memory_bytes};
+
+#[derive(Parser)]
+#[command(name = "tress", version, about = "A ray tracer for hair and fur")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a scene file (or the built-in demo scene) to an image.
+    Render {
+        /// Scene file (TOML); the built-in demo scene when omitted.
+        scene: Option<PathBuf>,
+        #[command(flatten)]
+        overrides: Overrides,
+        /// Output image: .png (8-bit sRGB) or .exr (linear float with AOVs).
+        #[arg(short, long, default_value = "tress.png")]
+        output: PathBuf,
+        /// Do not show the progress bar.
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Print the counts and memory of a scene (the demo scene when omitted).
+    Info {
+        /// Scene file (TOML).
+        scene: Option<PathBuf>,
+        /// Strands in the demo scene.
+        #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
+        demo_strands: u32,
+    },
+    /// Measure BVH build time, ray throughput and memory per hair segment.
+    Bench {
+        /// Scene file (TOML); the built-in demo scene when omitted.
+        scene: Option<PathBuf>,
+        #[command(flatten)]
+        overrides: Overrides,
+        /// Thread counts to measure, comma separated (0 = every core).
+        #[arg(long, value_delimiter = ',', default_value = "1,0")]
+        thread_counts: Vec<usize>,
+    },
+}
+
+/// Settings that override the scene file's.
+#[derive(clap::Args)]
+struct Overrides {
+    /// Samples per pixel.
+    #[arg(long)]
+    spp: Option<u32>,
+    /// Worker threads (0 = every core).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Image size as WIDTHxHEIGHT, e.g. 640x480.
+    #[arg(long, value_parser = parse_resolution)]
+    resolution: Option<(u32, u32)>,
+    /// Seed of every random decision.
+    #[arg(long)]
+    seed: Option<u32>,
+    /// Strands in the demo scene (ignored for scene files).
+    #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
+    demo_strands: u32,
+}
+
+fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("`{s}` is not WIDTHxHEIGHT"))?;
+    let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("`{s}` is not WIDTHxHEIGHT"));
+    Ok((parse(w)?, parse(h)?))
+}
+
+fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
+    let mut desc = match scene {
+        Some(path) => tress::io::scene_file::read_scene(path)?,
+        None => tress::demo::description(o.demo_strands, 1),
+    };
+    let s = &mut desc.settings;
+    if let Some(spp) = o.spp {
+        s.spp = spp;
+    }
+    if let Some(t) = o.threads {
+        s.threads = t;
+    }
+    if let Some((w, h)) = o.resolution {
+        (s.width, s.height) = (w, h);
+    }
+    if let Some(seed) = o.seed {
+        s.seed = seed;
+    }
+    Ok(desc)
+}
+
+fn pool(threads: usize) -> Result<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new().num_threads(threads).build().context("cannot start worker threads")
+}
+
+fn main() {
+    if let Err(e) = run(Cli::parse()) {
+        eprintln!("error: {e:#}");
+        std::process::exit(1);
+    }
+}
+
+fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Render { scene, overrides, output, quiet } => render(scene.as_deref(), &overrides, &output, quiet),
+        Command::Info { scene, demo_strands } => {
+            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let desc = load(scene.as_deref(), &o)?;
+            let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
+            info(&world);
+            println!("build: load {:.3} s, bvh {:.3} s", times.load.as_secs_f64(), times.build.as_secs_f64());
+            Ok(())
+        }
+        Command::Bench { scene, overrides, thread_counts } => bench(scene.as_deref(), &overrides, &thread_counts),
+    }
+}
+
+fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Result<()> {
+    // Check the output before spending time on the render.
+    let ext = output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    if !matches!(ext.as_deref(), Some("png" | "exr")) {
+        bail!("{}: unsupported output format: use a .png or .exr file name", output.display());
+    }
+    let desc = load(scene, o)?;
+    let pool = pool(desc.settings.threads)?;
+    let (world, times) = pool.install(|| prepare(&desc))?;
+    let s = &world.settings;
+    let tiles = tress::render::tile_count(s.width, s.height);
+    let bar = if quiet { ProgressBar::hidden() } else { ProgressBar::new(tiles) };
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} [{elapsed_precise}] {wide_bar} {percent}% ETA {eta}")
+            .expect("static template"),
+    );
+    let (film, stats) = pool.install(|| tress::render::render(&world, Some(&bar)));
+    bar.finish_and_clear();
+    tress::film::write_image(output, &film)?;
+    let hair = HairMemory::of(&world.accel);
+    let secs = stats.elapsed.as_secs_f64();
+    eprintln!(
+        "wrote {} ({}x{}, {} spp, {} threads)",
+        output.display(),
+        s.width,
+        s.height,
+        s.spp,
+        pool.current_num_threads()
+    );
+    eprintln!(
+        "scene build   {:.3} s (load {:.3} s, bvh {:.3} s)",
+        (times.load + times.build).as_secs_f64(),
+        times.load.as_secs_f64(),
+        times.build.as_secs_f64()
+    );
+    eprintln!("render        {secs:.3} s");
+    eprintln!("rays          {} ({:.2} M rays/s)", stats.rays, stats.rays as f64 / secs / 1e6);
+    if let Some(peak) = peak_memory_bytes() {
+        eprintln!("peak memory   {}", human_bytes(peak));
+    }
+    if hair.segments > 0 {
+        eprintln!(
+            "hair          {} segments, {:.1} bytes/segment (points + BVH)",
+            hair.segments,
+            hair.bytes_per_segment()
+        );
+    }
+    Ok(())
+}
+
+fn info(world: &World) {
+    let (mut meshes, mut triangles, mut sets, mut strands, mut segments) = (0, 0, 0, 0, 0);
+    let (mut mesh_bytes, mut strand_bytes, mut mesh_bvh, mut strand_bvh) = (0, 0, 0, 0);
+    for o in &world.accel.objects {
+        match &o.shape {
+            Shape::Mesh(m) => {
+                meshes += 1;
+                triangles += m.indices.len();
+                mesh_bytes += m.memory_bytes();
+                mesh_bvh += o.bvh().memory_bytes();
+            }
+            Shape::Strands(s) => {
+                sets += 1;
+                strands += s.strand_count();
+                segments += s.segment_count();
+                strand_bytes += s.memory_bytes();
+                strand_bvh += o.bvh().memory_bytes();
+            }
+        }
+    }
+    let top = world.accel.bvh_bytes() - mesh_bvh - strand_bvh;
+    println!("meshes        {meshes} ({triangles} triangles)");
+    println!("strand sets   {sets} ({strands} strands, {segments} segments)");
+    println!("lights        {}", world.lights.len());
+    println!("memory");
+    println!("  mesh data   {}", human_bytes(mesh_bytes as u64));
+    println!("  mesh bvh    {}", human_bytes(mesh_bvh as u64));
+    println!("  strand data {}", human_bytes(strand_bytes as u64));
+    println!("  strand bvh  {}", human_bytes(strand_bvh as u64));
+    println!("  top bvh     {}", human_bytes(top as u64));
+    if segments > 0 {
+        println!(
+            "  per segment {:.1} bytes (strand data + strand bvh)",
+            (strand_bytes + strand_bvh) as f64 / segments as f64
+        );
+    }
+}
+
+fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize]) -> Result<()> {
+    let desc = load(scene, o)?;
+    let all = pool(0)?.current_num_threads();
+    let start = Instant::now();
+    let (world, times) = pool(0)?.install(|| prepare(&desc))?;
+    let _ = start;
+    let hair = HairMemory::of(&world.accel);
+    let s = &world.settings;
+    println!("scene        {} hair segments, {}x{} x {} spp camera rays", hair.segments, s.width, s.height, s.spp);
+    println!("bvh_build    {:.3} s ({all} threads)", times.build.as_secs_f64());
+    println!(
+        "memory       {:.1} bytes/segment (points {:.1} + bvh {:.1})",
+        hair.bytes_per_segment(),
+        hair.strand_bytes as f64 / hair.segments.max(1) as f64,
+        hair.bvh_bytes as f64 / hair.segments.max(1) as f64
+    );
+    for &t in thread_counts {
+        let threads = if t == 0 { all } else { t };
+        let r = pool(threads)?.install(|| trace_rays(&world, threads));
+        println!("primary      {:>2} threads {:>8.3} Mrays/s", threads, r.primary_rate() / 1e6);
+        println!("shadow       {:>2} threads {:>8.3} Mrays/s", threads, r.shadow_rate() / 1e6);
+    }
+    Ok(())
+}

@@ -1,0 +1,91 @@
+//! The perspective camera.
+
+use crate::math::{Ray, RayCone};
+use glam::Vec3;
+
+/// A pinhole camera looking from `eye` towards `target`.
+#[derive(Clone, Debug)]
+pub struct Camera {
+    eye: Vec3,
+    /// Direction to the image centre.
+    forward: Vec3,
+    /// Offset to the right image edge, at unit distance.
+    right: Vec3,
+    /// Offset to the top image edge, at unit distance.
+    up: Vec3,
+    width: u32,
+    height: u32,
+    /// Angle a pixel subtends: the spread of every camera ray cone.
+    pixel_spread: f32,
+}
+
+/// Why a camera cannot be built.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum CameraError {
+    /// Eye and target coincide.
+    #[error("camera eye and target are the same point")]
+    NoDirection,
+    /// Up is parallel to the view direction.
+    #[error("camera up vector is parallel to the view direction")]
+    UpParallel,
+    /// Field of view out of range.
+    #[error("vertical field of view {0} is not between 0 and 180 degrees")]
+    BadFov(f32),
+    /// Zero-sized image.
+    #[error("resolution {0}x{1} has no pixels")]
+    EmptyImage(u32, u32),
+}
+
+impl Camera {
+    /// A camera with a vertical field of view `vfov_deg` for a `width` x `height` image.
+    pub fn new(
+        eye: Vec3,
+        target: Vec3,
+        up: Vec3,
+        vfov_deg: f32,
+        width: u32,
+        height: u32,
+    ) -> Result<Camera, CameraError> {
+        let forward = (target - eye).try_normalize().ok_or(CameraError::NoDirection)?;
+        let right = forward.cross(up).try_normalize().ok_or(CameraError::UpParallel)?;
+        if !(vfov_deg > 0.0 && vfov_deg < 180.0) {
+            return Err(CameraError::BadFov(vfov_deg));
+        }
+        if width == 0 || height == 0 {
+            return Err(CameraError::EmptyImage(width, height));
+        }
+        let half_h = (vfov_deg.to_radians() * 0.5).tan();
+        let half_w = half_h * width as f32 / height as f32;
+        let true_up = right.cross(forward);
+        Ok(Camera {
+            eye,
+            forward,
+            right: right * half_w,
+            up: true_up * half_h,
+            width,
+            height,
+            // Akenine-Moller et al. 2019, eq. 20.30: gamma_0 = atan(2 tan(fov/2) / height).
+            pixel_spread: (2.0 * half_h / height as f32).atan(),
+        })
+    }
+
+    /// Image width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Image height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The ray through image position (`x`, `y`) in pixels from the top-left corner.
+    pub fn ray(&self, x: f32, y: f32) -> Ray {
+        let sx = 2.0 * x / self.width as f32 - 1.0;
+        let sy = 1.0 - 2.0 * y / self.height as f32;
+        let dir = (self.forward + self.right * sx + self.up * sy).normalize();
+        let mut ray = Ray::new(self.eye, dir);
+        ray.cone = RayCone { width: 0.0, spread: self.pixel_spread };
+        ray
+    }
+}

@@ -1,0 +1,44 @@
+//! The film: per-pixel colour and auxiliary outputs (AOVs), and writing them to files.
+
+mod output;
+
+pub use output::{srgb_encode, write_image, write_image_with, OutputError};
+
+use glam::Vec3;
+
+/// What one pixel's samples add up to, averaged over the samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Pixel {
+    /// Linear RGB radiance.
+    pub color: Vec3,
+    /// Fraction of samples that hit geometry (the alpha channel).
+    pub coverage: f32,
+    /// Distance along the camera ray to the first hit of the pixel's first sample that hit
+    /// anything (infinite when none did).
+    pub depth: f32,
+    /// Shading normal (surfaces) or tangent (hair) at that hit, zero when none.
+    pub normal: Vec3,
+    /// Object index at that hit, -1 when none.
+    pub object_id: f32,
+    /// Strand index at that hit when it is hair, -1 otherwise.
+    pub strand_id: f32,
+}
+
+/// An image being rendered: `width * height` pixels, row by row from the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Film {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Pixels, row-major from the top-left corner.
+    pub pixels: Vec<Pixel>,
+}
+
+impl Film {
+    /// A black film.
+    pub fn new(width: u32, height: u32) -> Film {
+        let empty = Pixel { depth: f32::INFINITY, object_id: -1.0, strand_id: -1.0, ..Default::default() };
+        Film { width, height, pixels: vec![empty; width as usize * height as usize] }
+    }
+}

@@ -1,0 +1,196 @@
+//! Triangle meshes.
+
+use glam::Vec3;
+
+/// An indexed triangle mesh with optional per-vertex normals and UVs.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TriangleMesh {
+    /// Vertex positions.
+    pub positions: Vec<Vec3>,
+    /// Optional per-vertex shading normals (same length as `positions`).
+    pub normals: Option<Vec<Vec3>>,
+    /// Optional per-vertex texture coordinates (same length as `positions`).
+    pub uvs: Option<Vec<[f32; 2]>>,
+    /// Vertex indices, three per triangle.
+    pub indices: Vec<[u32; 3]>,
+}
+
+impl TriangleMesh {
+    /// Corners of triangle `i`.
+    #[inline]
+    pub fn corners(&self, i: u32) -> [Vec3; 3] {
+        let [a, b, c] = self.indices[i as usize];
+        [self.positions[a as usize], self.positions[b as usize], self.positions[c as usize]]
+    }
+
+    /// Area of triangle `i`.
+    pub fn area(&self, i: u32) -> f32 {
+        let [a, b, c] = self.corners(i);
+        0.5 * (b - a).cross(c - a).length()
+    }
+
+    /// Shading normal at barycentrics (`b1`, `b2`) of triangle `i`: interpolated vertex
+    /// normals when present, else the geometric normal.
+    pub fn shading_normal(&self, i: u32, b1: f32, b2: f32) -> Vec3 {
+        let [a, b, c] = self.corners(i);
+        let geometric = (b - a).cross(c - a).normalize_or(Vec3::Y);
+        match &self.normals {
+            Some(n) => {
+                let [ia, ib, ic] = self.indices[i as usize];
+                let v = n[ia as usize] * (1.0 - b1 - b2) + n[ib as usize] * b1 + n[ic as usize] * b2;
+                v.try_normalize().unwrap_or(geometric)
+            }
+            None => geometric,
+        }
+    }
+
+    /// Bytes held by the arrays of this mesh.
+    pub fn memory_bytes(&self) -> usize {
+        self.positions.len() * 12
+            + self.normals.as_ref().map_or(0, |n| n.len() * 12)
+            + self.uvs.as_ref().map_or(0, |u| u.len() * 8)
+            + self.indices.len() * 12
+    }
+
+    /// Applies an affine transform to positions and normals.
+    pub fn transform(&mut self, m: &glam::Affine3A) {
+        for p in &mut self.positions {
+            *p = m.transform_point3(*p);
+        }
+        if let Some(ns) = &mut self.normals {
+            let nm = glam::Mat3::from(m.matrix3).inverse().transpose();
+            for n in ns {
+                *n = (nm * *n).normalize_or(Vec3::Y);
+            }
+        }
+    }
+
+    /// Checks indices are in range and positions finite; returns a description of the
+    /// first problem found.
+    pub fn validate(&self) -> Result<(), String> {
+        let n = self.positions.len() as u32;
+        if let Some(i) = self.positions.iter().position(|p| !p.is_finite()) {
+            return Err(format!("vertex {i} is not finite"));
+        }
+        if let Some(t) = self.indices.iter().position(|t| t.iter().any(|&v| v >= n)) {
+            return Err(format!("triangle {t} refers to a vertex past the {n} vertices"));
+        }
+        for (name, len) in
+            [("normals", self.normals.as_ref().map(|v| v.len())), ("uvs", self.uvs.as_ref().map(|v| v.len()))]
+        {
+            if let Some(len) = len {
+                if len != n as usize {
+                    return Err(format!("{len} {name} for {n} vertices"));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Procedural meshes for built-in scenes and scene files.
+impl TriangleMesh {
+    /// A torus around the y axis (ring in the xz-plane) with `major` and `minor` radii,
+    /// `nu` steps around the ring and `nv` around the tube; UVs run 0..1 along both.
+    pub fn torus(major: f32, minor: f32, nu: u32, nv: u32) -> TriangleMesh {
+        use std::f32::consts::TAU;
+        let (nu, nv) = (nu.max(3), nv.max(3));
+        let mut mesh = TriangleMesh::default();
+        let (mut normals, mut uvs) = (Vec::new(), Vec::new());
+        // One extra row and column so UVs do not wrap inside a triangle.
+        for i in 0..=nu {
+            let u = TAU * i as f32 / nu as f32;
+            for j in 0..=nv {
+                let v = TAU * j as f32 / nv as f32;
+                let n = Vec3::new(v.cos() * u.cos(), v.sin(), v.cos() * u.sin());
+                mesh.positions.push(Vec3::new(major * u.cos(), 0.0, major * u.sin()) + n * minor);
+                normals.push(n);
+                uvs.push([i as f32 / nu as f32, j as f32 / nv as f32]);
+            }
+        }
+        let row = nv + 1;
+        for i in 0..nu {
+            for j in 0..nv {
+                let (a, b, c, d) = (i * row + j, (i + 1) * row + j, (i + 1) * row + j + 1, i * row + j + 1);
+                mesh.indices.push([a, d, c]);
+                mesh.indices.push([a, c, b]);
+            }
+        }
+        mesh.normals = Some(normals);
+        mesh.uvs = Some(uvs);
+        mesh
+    }
+
+    /// A UV sphere of `radius` around the origin.
+    pub fn sphere(radius: f32, rings: u32) -> TriangleMesh {
+        use std::f32::consts::{PI, TAU};
+        let rings = rings.max(3);
+        let segments = 2 * rings;
+        let mut mesh = TriangleMesh::default();
+        let (mut normals, mut uvs) = (Vec::new(), Vec::new());
+        for i in 0..=rings {
+            let theta = PI * i as f32 / rings as f32;
+            for j in 0..=segments {
+                let phi = TAU * j as f32 / segments as f32;
+                let n = Vec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin());
+                mesh.positions.push(n * radius);
+                normals.push(n);
+                uvs.push([j as f32 / segments as f32, i as f32 / rings as f32]);
+            }
+        }
+        let row = segments + 1;
+        for i in 0..rings {
+            for j in 0..segments {
+                let (a, b, c, d) = (i * row + j, (i + 1) * row + j, (i + 1) * row + j + 1, i * row + j + 1);
+                if i > 0 {
+                    mesh.indices.push([a, d, b]);
+                }
+                if i + 1 < rings {
+                    mesh.indices.push([d, c, b]);
+                }
+            }
+        }
+        mesh.normals = Some(normals);
+        mesh.uvs = Some(uvs);
+        mesh
+    }
+
+    /// A square of side `size` in the xz-plane, centred on the origin, facing +y.
+    pub fn plane(size: f32) -> TriangleMesh {
+        let h = 0.5 * size;
+        TriangleMesh {
+            positions: vec![Vec3::new(-h, 0.0, -h), Vec3::new(h, 0.0, -h), Vec3::new(h, 0.0, h), Vec3::new(-h, 0.0, h)],
+            normals: Some(vec![Vec3::Y; 4]),
+            uvs: Some(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]),
+            indices: vec![[0, 2, 1], [0, 3, 2]],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn procedural_meshes_are_valid_and_have_the_right_area() {
+        use std::f32::consts::PI;
+        let total = |m: &TriangleMesh| (0..m.indices.len() as u32).map(|i| m.area(i)).sum::<f32>();
+        let torus = TriangleMesh::torus(1.0, 0.35, 96, 48);
+        torus.validate().unwrap();
+        let exact = 4.0 * PI * PI * 0.35;
+        assert!((total(&torus) - exact).abs() < 0.01 * exact);
+        let sphere = TriangleMesh::sphere(2.0, 48);
+        sphere.validate().unwrap();
+        assert!((total(&sphere) - 16.0 * PI).abs() < 0.01 * 16.0 * PI);
+        let plane = TriangleMesh::plane(3.0);
+        assert!((total(&plane) - 9.0).abs() < 1e-5);
+        // Triangles face outward along the given normals.
+        for m in [&torus, &sphere, &plane] {
+            for i in 0..m.indices.len() as u32 {
+                let [a, b, c] = m.corners(i);
+                let ng = (b - a).cross(c - a);
+                assert!(ng.dot(m.shading_normal(i, 1.0 / 3.0, 1.0 / 3.0)) > 0.0, "triangle {i} faces inward");
+            }
+        }
+    }
+}

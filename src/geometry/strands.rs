@@ -1,0 +1,116 @@
+//! `StrandSet`: hair strands as flat arrays (structure of arrays).
+//!
+//! A strand is a chain of control points; a segment joins point `i` to point `i + 1` of the
+//! same strand and needs no record of its own: it is named by the index of its first point.
+//! A point is 16 bytes (`x, y, z, radius`), against the thesis' 82 bytes per segment
+//! (section 2.1.7). Tangents are derived at the points when shading (thesis fig. 2.2).
+
+use glam::Vec3;
+
+/// A set of hair strands sharing one material.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StrandSet {
+    /// Control points: position and radius (half the thickness).
+    pub points: Vec<[f32; 4]>,
+    /// Strand `i` owns `points[offsets[i]..offsets[i + 1]]`; `offsets.len()` is strands + 1.
+    pub offsets: Vec<u32>,
+    /// Optional linear RGB colour per point.
+    pub colors: Option<Vec<[f32; 3]>>,
+    /// Optional opacity per point (1 = opaque).
+    pub opacity: Option<Vec<f32>>,
+}
+
+impl StrandSet {
+    /// An empty set.
+    pub fn new() -> StrandSet {
+        StrandSet { offsets: vec![0], ..Default::default() }
+    }
+
+    /// Appends a strand given as (position, radius) points.
+    pub fn push_strand(&mut self, points: impl IntoIterator<Item = (Vec3, f32)>) {
+        if self.offsets.is_empty() {
+            self.offsets.push(0);
+        }
+        self.points.extend(points.into_iter().map(|(p, r)| [p.x, p.y, p.z, r]));
+        self.offsets.push(self.points.len() as u32);
+    }
+
+    /// Number of strands.
+    pub fn strand_count(&self) -> usize {
+        self.offsets.len().saturating_sub(1)
+    }
+
+    /// Number of segments (points minus one, per strand with at least two points).
+    pub fn segment_count(&self) -> usize {
+        self.offsets.windows(2).map(|w| (w[1] - w[0]).saturating_sub(1) as usize).sum()
+    }
+
+    /// The first-point index of every segment, in strand order.
+    pub fn segment_starts(&self) -> Vec<u32> {
+        let mut out = Vec::with_capacity(self.segment_count());
+        for w in self.offsets.windows(2) {
+            if w[1] > w[0] + 1 {
+                out.extend(w[0]..w[1] - 1);
+            }
+        }
+        out
+    }
+
+    /// Position of point `i`.
+    #[inline]
+    pub fn position(&self, i: u32) -> Vec3 {
+        let p = self.points[i as usize];
+        Vec3::new(p[0], p[1], p[2])
+    }
+
+    /// The strand that owns point `i`.
+    pub fn strand_of(&self, i: u32) -> u32 {
+        (self.offsets.partition_point(|&o| o <= i) - 1) as u32
+    }
+
+    /// Unit tangent at point `i` by central differences inside the strand, one-sided at
+    /// its ends (thesis fig. 2.2). Falls back to the nearest non-degenerate difference.
+    pub fn point_tangent(&self, i: u32) -> Vec3 {
+        let s = self.strand_of(i) as usize;
+        let (first, last) = (self.offsets[s], self.offsets[s + 1] - 1);
+        let prev = self.position(i.saturating_sub(1).max(first));
+        let next = self.position((i + 1).min(last));
+        (next - prev).try_normalize().unwrap_or(Vec3::Y)
+    }
+
+    /// Shading tangent at parameter `s` in [0, 1] along the segment starting at point `i`:
+    /// the point tangents interpolated, so shading is smooth across segment joints.
+    pub fn tangent(&self, i: u32, s: f32) -> Vec3 {
+        let t0 = self.point_tangent(i);
+        let t1 = self.point_tangent(i + 1);
+        t0.lerp(t1, s).try_normalize().unwrap_or(t0)
+    }
+
+    /// Colour at parameter `s` along segment `i`, if the set has colours.
+    pub fn color(&self, i: u32, s: f32) -> Option<Vec3> {
+        self.colors.as_ref().map(|c| Vec3::from(c[i as usize]).lerp(Vec3::from(c[i as usize + 1]), s))
+    }
+
+    /// Opacity at parameter `s` along segment `i` (1 when the set has none).
+    pub fn opacity_at(&self, i: u32, s: f32) -> f32 {
+        self.opacity.as_ref().map_or(1.0, |o| o[i as usize] + (o[i as usize + 1] - o[i as usize]) * s)
+    }
+
+    /// Bytes held by the arrays of this set.
+    pub fn memory_bytes(&self) -> usize {
+        self.points.len() * 16
+            + self.offsets.len() * 4
+            + self.colors.as_ref().map_or(0, |c| c.len() * 12)
+            + self.opacity.as_ref().map_or(0, |o| o.len() * 4)
+    }
+
+    /// Applies an affine transform to positions; radii scale by the cube root of the
+    /// determinant (the mean scale), so a uniformly scaled strand keeps its proportions.
+    pub fn transform(&mut self, m: &glam::Affine3A) {
+        let scale = m.matrix3.determinant().abs().cbrt();
+        for p in &mut self.points {
+            let q = m.transform_point3(Vec3::new(p[0], p[1], p[2]));
+            *p = [q.x, q.y, q.z, p[3] * scale];
+        }
+    }
+}

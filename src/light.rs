@@ -1,0 +1,272 @@
+//! Lights: distant, point, spot, quad and sphere area lights, and a constant environment.
+
+use crate::math::{frame, sampling, Color};
+use glam::Vec3;
+use std::f32::consts::PI;
+
+/// A light source. Quantities are linear RGB in the scene's units.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Light {
+    /// Parallel light from a direction (the sun).
+    Distant {
+        /// Unit direction towards the light.
+        direction: Vec3,
+        /// Irradiance on a surface facing the light.
+        irradiance: Color,
+    },
+    /// A point emitting equally in all directions.
+    Point {
+        /// Position.
+        position: Vec3,
+        /// Radiant intensity (irradiance at unit distance).
+        intensity: Color,
+    },
+    /// A point emitting in a cone, with a smooth falloff between two angles.
+    Spot {
+        /// Position.
+        position: Vec3,
+        /// Unit direction the spot points to.
+        direction: Vec3,
+        /// Intensity inside the inner cone.
+        intensity: Color,
+        /// Cosine of the inner cone half-angle (full intensity inside).
+        cos_inner: f32,
+        /// Cosine of the outer cone half-angle (dark outside).
+        cos_outer: f32,
+    },
+    /// A one-sided parallelogram emitting towards `edge_u x edge_v`.
+    Quad {
+        /// One corner.
+        corner: Vec3,
+        /// First edge from the corner.
+        edge_u: Vec3,
+        /// Second edge from the corner.
+        edge_v: Vec3,
+        /// Emitted radiance.
+        radiance: Color,
+    },
+    /// A sphere emitting uniformly from its surface.
+    Sphere {
+        /// Centre.
+        center: Vec3,
+        /// Radius.
+        radius: f32,
+        /// Emitted radiance.
+        radiance: Color,
+    },
+    /// Constant radiance from every direction not blocked by geometry.
+    Environment {
+        /// Radiance.
+        radiance: Color,
+    },
+}
+
+/// Light arriving at a point from one sampled direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSample {
+    /// Unit direction towards the light.
+    pub dir: Vec3,
+    /// Distance to the light along `dir` (infinite for distant and environment lights).
+    pub dist: f32,
+    /// Incident radiance divided by the solid-angle pdf of `dir` (for delta lights, the
+    /// irradiance on a surface facing the light): multiplied by a material's response and
+    /// the visibility, it is an unbiased estimate of the reflected radiance.
+    pub value: Color,
+}
+
+impl Light {
+    /// Samples the light as seen from `p`. `normal` is the shading normal of a surface
+    /// (the environment then samples the cosine-weighted hemisphere around it) or `None`
+    /// for hair (the whole sphere). Returns `None` when no light arrives.
+    pub fn sample(&self, p: Vec3, normal: Option<Vec3>, (u, v): (f32, f32)) -> Option<LightSample> {
+        let s = match *self {
+            Light::Distant { direction, irradiance } => {
+                LightSample { dir: direction, dist: f32::INFINITY, value: irradiance }
+            }
+            Light::Point { position, intensity } => {
+                let (dir, dist) = towards(p, position)?;
+                LightSample { dir, dist, value: intensity / (dist * dist) }
+            }
+            Light::Spot { position, direction, intensity, cos_inner, cos_outer } => {
+                let (dir, dist) = towards(p, position)?;
+                let cos = -dir.dot(direction);
+                let falloff = smoothstep(cos_outer, cos_inner, cos);
+                LightSample { dir, dist, value: intensity * falloff / (dist * dist) }
+            }
+            Light::Quad { corner, edge_u, edge_v, radiance } => {
+                let q = corner + edge_u * u + edge_v * v;
+                let (dir, dist) = towards(p, q)?;
+                let n = edge_u.cross(edge_v);
+                let area = n.length();
+                let cos_light = -dir.dot(n) / area;
+                if cos_light <= 0.0 {
+                    return None;
+                }
+                // Uniform on the area: pdf_solid_angle = dist^2 / (area * cos_light).
+                LightSample { dir, dist, value: radiance * (area * cos_light / (dist * dist)) }
+            }
+            Light::Sphere { center, radius, radiance } => {
+                let (axis, dc) = towards(p, center)?;
+                if dc <= radius {
+                    return None;
+                }
+                // Uniform over the cone of directions the sphere subtends (PBR 4th ed. 6.2.4).
+                let sin_max = radius / dc;
+                let cos_max = (1.0 - sin_max * sin_max).max(0.0).sqrt();
+                let local = sampling::uniform_cone(u, v, cos_max);
+                let (b1, b2) = frame(axis);
+                let dir = (b1 * local.x + b2 * local.y + axis * local.z).normalize();
+                // Distance to the near side of the sphere along dir.
+                let b = dir.dot(center - p);
+                let dist = b - (radius * radius - (dc * dc - b * b)).max(0.0).sqrt();
+                LightSample { dir, dist, value: radiance * (2.0 * PI * (1.0 - cos_max)) }
+            }
+            Light::Environment { radiance } => match normal {
+                Some(n) => {
+                    let local = sampling::cosine_hemisphere(u, v);
+                    let (b1, b2) = frame(n);
+                    let dir = (b1 * local.x + b2 * local.y + n * local.z).normalize();
+                    let cos = local.z;
+                    if cos <= 0.0 {
+                        return None;
+                    }
+                    LightSample { dir, dist: f32::INFINITY, value: radiance * (PI / cos) }
+                }
+                None => LightSample {
+                    dir: sampling::uniform_sphere(u, v),
+                    dist: f32::INFINITY,
+                    value: radiance * (4.0 * PI),
+                },
+            },
+        };
+        (s.value.max_element() > 0.0 && s.value.is_finite()).then_some(s)
+    }
+
+    /// Radiance a ray from `origin` along `dir` sees on this light before distance `tmax`,
+    /// with the distance of that point; only area lights can be seen this way.
+    pub fn emitted(&self, origin: Vec3, dir: Vec3, tmax: f32) -> Option<(f32, Color)> {
+        match *self {
+            Light::Quad { corner, edge_u, edge_v, radiance } => {
+                let n = edge_u.cross(edge_v);
+                let denom = dir.dot(n);
+                if denom >= 0.0 {
+                    return None;
+                }
+                let t = (corner - origin).dot(n) / denom;
+                let q = origin + dir * t - corner;
+                let (uu, vv) = (edge_u.length_squared(), edge_v.length_squared());
+                let (a, b) = (q.dot(edge_u) / uu, q.dot(edge_v) / vv);
+                // Edges need not be orthogonal; solve the 2x2 system for exact coordinates.
+                let uv = edge_u.dot(edge_v);
+                let det = uu * vv - uv * uv;
+                let (a, b) = if uv.abs() > 1e-6 * det.abs().sqrt() {
+                    let (qa, qb) = (a * uu, b * vv);
+                    ((qa * vv - qb * uv) / det, (qb * uu - qa * uv) / det)
+                } else {
+                    (a, b)
+                };
+                ((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) && t > 0.0 && t < tmax).then_some((t, radiance))
+            }
+            Light::Sphere { center, radius, radiance } => {
+                let oc = origin - center;
+                let b = oc.dot(dir);
+                let c = oc.length_squared() - radius * radius;
+                let disc = b * b - c;
+                if disc < 0.0 {
+                    return None;
+                }
+                let t = -b - disc.sqrt();
+                (t > 0.0 && t < tmax).then_some((t, radiance))
+            }
+            _ => None,
+        }
+    }
+
+    /// Radiance of the environment seen along any unblocked ray (zero for other lights).
+    pub fn background(&self) -> Color {
+        match *self {
+            Light::Environment { radiance } => radiance,
+            _ => Color::ZERO,
+        }
+    }
+}
+
+fn towards(p: Vec3, q: Vec3) -> Option<(Vec3, f32)> {
+    let d = q - p;
+    let dist = d.length();
+    (dist > 0.0 && dist.is_finite()).then(|| (d / dist, dist))
+}
+
+fn smoothstep(lo: f32, hi: f32, x: f32) -> f32 {
+    if hi <= lo {
+        return if x >= hi { 1.0 } else { 0.0 };
+    }
+    let t = ((x - lo) / (hi - lo)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Irradiance on a point facing a light, estimated by averaging `value * cos`.
+    fn irradiance(light: &Light, p: Vec3, n: Vec3, samples: u32) -> Color {
+        let mut sum = Color::ZERO;
+        for i in 0..samples {
+            for j in 0..samples {
+                let u = ((i as f32 + 0.5) / samples as f32, (j as f32 + 0.5) / samples as f32);
+                if let Some(s) = light.sample(p, Some(n), u) {
+                    sum += s.value * s.dir.dot(n).max(0.0);
+                }
+            }
+        }
+        sum / (samples * samples) as f32
+    }
+
+    #[test]
+    fn sphere_light_irradiance_matches_closed_form() {
+        // A sphere of radiance L seen straight on gives E = pi L sin^2(theta_max).
+        let light = Light::Sphere { center: Vec3::new(0.0, 0.0, 4.0), radius: 1.0, radiance: Color::ONE };
+        let e = irradiance(&light, Vec3::ZERO, Vec3::Z, 64).x;
+        let expected = PI * (1.0f32 / 16.0);
+        assert!((e - expected).abs() < 0.01 * expected, "{e} vs {expected}");
+    }
+
+    #[test]
+    fn quad_light_irradiance_matches_closed_form() {
+        // Irradiance under the centre of a square of side 2 at height h (Lambert's formula
+        // for a rectangle): E = 4 L (a / sqrt(a^2+h^2)) atan(a / sqrt(a^2+h^2)) for a = 1.
+        let h = 1.5f32;
+        let light = Light::Quad {
+            corner: Vec3::new(-1.0, -1.0, h),
+            edge_u: Vec3::new(0.0, 2.0, 0.0),
+            edge_v: Vec3::new(2.0, 0.0, 0.0),
+            radiance: Color::ONE,
+        };
+        let e = irradiance(&light, Vec3::ZERO, Vec3::Z, 128).x;
+        let s = 1.0 / (1.0 + h * h).sqrt();
+        let expected = 4.0 * s * (s).atan() * 1.0;
+        assert!((e - expected).abs() < 0.01 * expected, "{e} vs {expected}");
+    }
+
+    #[test]
+    fn environment_irradiance_is_pi_times_radiance() {
+        let light = Light::Environment { radiance: Color::splat(0.5) };
+        let e = irradiance(&light, Vec3::ZERO, Vec3::new(0.0, 0.6, 0.8), 32).x;
+        assert!((e - 0.5 * PI).abs() < 1e-3 * PI, "{e}");
+    }
+
+    #[test]
+    fn emitted_finds_area_lights_and_respects_tmax() {
+        let quad = Light::Quad {
+            corner: Vec3::new(-1.0, -1.0, 2.0),
+            edge_u: Vec3::new(0.0, 2.0, 0.0),
+            edge_v: Vec3::new(2.0, 0.0, 0.0),
+            radiance: Color::ONE,
+        };
+        assert_eq!(quad.emitted(Vec3::ZERO, Vec3::Z, 10.0).map(|h| h.0), Some(2.0));
+        assert!(quad.emitted(Vec3::ZERO, Vec3::Z, 1.0).is_none());
+        let sphere = Light::Sphere { center: Vec3::new(0.0, 0.0, 5.0), radius: 1.0, radiance: Color::ONE };
+        assert_eq!(sphere.emitted(Vec3::ZERO, Vec3::Z, 10.0).map(|h| h.0), Some(4.0));
+    }
+}

@@ -1,0 +1,65 @@
+//! Vectors, rays, ray cones, frames, random numbers and sampling warps.
+
+mod ray;
+pub mod rng;
+pub mod sampling;
+
+pub use glam::Vec3;
+pub use ray::{offset_origin, Ray, RayCone};
+
+/// Linear RGB colour (scene-referred, not clamped).
+pub type Color = glam::Vec3;
+
+/// An orthonormal frame around a unit vector `n` (Duff et al. 2017, "Building an
+/// orthonormal basis, revisited"), branch-free and continuous except at `n.z = -1`.
+pub fn frame(n: Vec3) -> (Vec3, Vec3) {
+    let sign = 1.0f32.copysign(n.z);
+    let a = -1.0 / (sign + n.z);
+    let b = n.x * n.y * a;
+    (Vec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), Vec3::new(b, sign + n.y * n.y * a, -n.y))
+}
+
+/// Axis-aligned bounding box.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    /// Minimum corner.
+    pub min: Vec3,
+    /// Maximum corner.
+    pub max: Vec3,
+}
+
+impl Aabb {
+    /// The empty box: the identity of [`Aabb::union`].
+    pub const EMPTY: Aabb = Aabb { min: Vec3::splat(f32::INFINITY), max: Vec3::splat(f32::NEG_INFINITY) };
+
+    /// The smallest box holding both boxes.
+    #[inline]
+    pub fn union(self, o: Aabb) -> Aabb {
+        Aabb { min: self.min.min(o.min), max: self.max.max(o.max) }
+    }
+
+    /// The smallest box holding this box and a point.
+    #[inline]
+    pub fn grow(self, p: Vec3) -> Aabb {
+        Aabb { min: self.min.min(p), max: self.max.max(p) }
+    }
+
+    /// Centre of the box.
+    #[inline]
+    pub fn center(&self) -> Vec3 {
+        0.5 * (self.min + self.max)
+    }
+
+    /// Half the surface area (the SAH only needs ratios); 0 for an empty box.
+    #[inline]
+    pub fn half_area(&self) -> f32 {
+        let d = (self.max - self.min).max(Vec3::ZERO);
+        d.x * d.y + d.y * d.z + d.z * d.x
+    }
+
+    /// True when the box holds no point.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.min.x > self.max.x || self.min.y > self.max.y || self.min.z > self.max.z
+    }
+}

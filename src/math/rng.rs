@@ -1,0 +1,59 @@
+//! Random numbers that depend only on *what* they are for, never on which thread asks:
+//! camera and light samples come from an Owen-scrambled Sobol sequence indexed by
+//! (pixel, sample, dimension), so an image is bit-identical whatever the thread count.
+//! Scene generation (strands, fur roots) uses a seeded PCG stream per object.
+
+/// A seeded PCG stream for deterministic scene generation.
+pub type GenRng = rand_pcg::Pcg32;
+
+/// A 32-bit integer hash (the "lowbias32" finaliser by C. Wellons, hash-prospector),
+/// used to derive independent seeds from indices.
+#[inline]
+pub fn hash_u32(mut x: u32) -> u32 {
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x7feb_352d);
+    x ^= x >> 15;
+    x = x.wrapping_mul(0x846c_a68b);
+    x ^= x >> 16;
+    x
+}
+
+/// Combines several values into one seed.
+#[inline]
+pub fn hash_combine(values: &[u32]) -> u32 {
+    values.iter().fold(0x9e37_79b9, |h, &v| hash_u32(h ^ v.wrapping_add(0x9e37_79b9)))
+}
+
+/// Sample values for one camera sample of one pixel: dimension by dimension, each an
+/// Owen-scrambled Sobol value (Burley 2020, "Practical Hash-based Owen Scrambling").
+#[derive(Clone, Debug)]
+pub struct PixelSampler {
+    seed: u32,
+    index: u32,
+    dimension: u32,
+}
+
+impl PixelSampler {
+    /// The sampler for sample `index` of pixel (`x`, `y`) under the render `seed`.
+    pub fn new(seed: u32, x: u32, y: u32, index: u32) -> PixelSampler {
+        PixelSampler { seed: hash_combine(&[seed, x, y]), index, dimension: 0 }
+    }
+
+    /// Next value in [0, 1).
+    #[inline]
+    pub fn next_1d(&mut self) -> f32 {
+        let d = self.dimension;
+        self.dimension += 1;
+        // The table has 256 dimensions; beyond them, re-seed per block of 256 so deep
+        // paths still get independent values.
+        let block = d / sobol_burley::NUM_DIMENSIONS;
+        let seed = if block == 0 { self.seed } else { hash_combine(&[self.seed, block]) };
+        sobol_burley::sample(self.index, d % sobol_burley::NUM_DIMENSIONS, seed)
+    }
+
+    /// Next two values in [0, 1)^2.
+    #[inline]
+    pub fn next_2d(&mut self) -> (f32, f32) {
+        (self.next_1d(), self.next_1d())
+    }
+}

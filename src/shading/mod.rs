@@ -1,0 +1,119 @@
+//! Materials: how a surface or a hair strand responds to light.
+//!
+//! Every material answers one question for direct lighting, [`Material::response`]: the
+//! radiance leaving towards `wo` per unit of light arriving from `wi` (a BRDF times the
+//! cosine for surfaces; the tube model for hair). Mirror and glass answer through
+//! [`Material::specular`] instead, which the integrator follows recursively.
+
+pub mod surface;
+pub mod tube;
+
+use crate::math::Color;
+use glam::Vec3;
+
+/// A material of a surface or a strand set.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Material {
+    /// Lambertian reflection.
+    Diffuse {
+        /// Albedo.
+        color: Color,
+    },
+    /// Lambertian plus a normalised Phong lobe.
+    Phong {
+        /// Diffuse albedo.
+        diffuse: Color,
+        /// Specular reflectance.
+        specular: Color,
+        /// Phong exponent.
+        exponent: f32,
+    },
+    /// A perfect mirror.
+    Mirror {
+        /// Reflectance.
+        color: Color,
+    },
+    /// A smooth dielectric: Fresnel-weighted reflection and refraction.
+    Glass {
+        /// Index of refraction inside.
+        ior: f32,
+        /// Transmittance tint.
+        color: Color,
+    },
+    /// The thesis' tube shading for hair (section 2.1.8, eq. 2.1 to 2.3).
+    Tube(tube::Tube),
+}
+
+/// Where and how a ray met a surface or a strand, as the materials need it.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadingPoint {
+    /// Hit position.
+    pub p: Vec3,
+    /// Unit normal of the true surface (for hair, the cylinder normal at the hit), facing
+    /// the side the ray came from.
+    pub normal: Vec3,
+    /// Unit hair tangent, interpolated along the strand; `None` on surfaces.
+    pub tangent: Option<Vec3>,
+    /// Per-strand or per-vertex colour from the geometry, replacing the material's base
+    /// colour when present.
+    pub color: Option<Color>,
+    /// True when the ray hit the surface from its back (inside glass).
+    pub backface: bool,
+}
+
+/// A ray a specular material continues with.
+#[derive(Clone, Copy, Debug)]
+pub struct SpecularRay {
+    /// Unit direction.
+    pub dir: Vec3,
+    /// Weight of the radiance it brings back.
+    pub weight: Color,
+    /// True for transmission (the ray leaves on the far side of the surface).
+    pub transmitted: bool,
+}
+
+impl Material {
+    /// Radiance towards `wo` per unit of light from `wi` (both unit, pointing away from
+    /// the point). Zero for purely specular materials.
+    pub fn response(&self, sp: &ShadingPoint, wo: Vec3, wi: Vec3) -> Color {
+        match self {
+            Material::Diffuse { color } => surface::lambert(sp.color.unwrap_or(*color), sp.normal, wi),
+            Material::Phong { diffuse, specular, exponent } => {
+                surface::phong(sp.color.unwrap_or(*diffuse), *specular, *exponent, sp.normal, wo, wi)
+            }
+            Material::Mirror { .. } | Material::Glass { .. } => Color::ZERO,
+            Material::Tube(t) => match sp.tangent {
+                Some(tangent) => t.response(sp.color, tangent, wo, wi),
+                // Tube shading on a surface: fall back to Lambert with the diffuse colour.
+                None => surface::lambert(sp.color.unwrap_or(t.diffuse), sp.normal, wi),
+            },
+        }
+    }
+
+    /// Constant light the material reflects from the environment without sampling it:
+    /// the tube model's ambient colour times the environment radiance (thesis eq. 2.3).
+    pub fn ambient(&self, sp: &ShadingPoint, environment: Color) -> Color {
+        match self {
+            Material::Tube(t) if sp.tangent.is_some() => t.ambient_color(sp.color) * environment,
+            _ => Color::ZERO,
+        }
+    }
+
+    /// True when the material lights itself from the environment through [`Material::ambient`],
+    /// so the integrator must not also sample the environment for it.
+    pub fn has_ambient_term(&self, sp: &ShadingPoint) -> bool {
+        matches!(self, Material::Tube(_)) && sp.tangent.is_some()
+    }
+
+    /// The specular rays to follow from this point for a ray arriving along `-wo`
+    /// (at most two: reflection and refraction).
+    pub fn specular(&self, sp: &ShadingPoint, wo: Vec3) -> [Option<SpecularRay>; 2] {
+        match self {
+            Material::Mirror { color } => {
+                [Some(SpecularRay { dir: surface::reflect(wo, sp.normal), weight: *color, transmitted: false }), None]
+            }
+            Material::Glass { ior, color } => surface::dielectric(*ior, *color, sp.normal, sp.backface, wo),
+            _ => [None, None],
+        }
+    }
+}
