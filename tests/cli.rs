@@ -44,6 +44,7 @@ fn bad_scene_files_and_geometry_give_clear_errors() {
     assert!(!d.join("x.png").exists(), "no image may be written for a failed render");
     write("ok.toml", HEAD.as_bytes());
     assert_clear_error(&["render", "ok.toml", "-o", "x.jpg"], d, &["x.jpg"]);
+    assert_clear_error(&["render", "ok.toml", "-o", "no/such/dir/x.png"], d, &["no/such/dir"]);
     assert_clear_error(&["render", "ok.toml", "--resolution", "8by6"], d, &["8by6"]);
 }
 

@@ -1,6 +1,6 @@
 //! The `tress` command: render a scene, print what a scene holds, benchmark tracing.
 
-use anyhow::{bail, Context, Result};
+use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
@@ -36,6 +36,17 @@ enum Command {
     Info {
         /// Scene file (TOML).
         scene: Option<PathBuf>,
+        /// Strands in the demo scene.
+        #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
+        demo_strands: u32,
+    },
+    /// Write the scene's render strands (all strand sets, in world space) to a file.
+    Export {
+        /// Scene file (TOML); the built-in demo scene when omitted.
+        scene: Option<PathBuf>,
+        /// Output file: a Cem Yuksel .hair file.
+        #[arg(short, long)]
+        output: PathBuf,
         /// Strands in the demo scene.
         #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
         demo_strands: u32,
@@ -121,16 +132,30 @@ fn run(cli: Cli) -> Result<()> {
             println!("build: load {:.3} s, bvh {:.3} s", times.load.as_secs_f64(), times.build.as_secs_f64());
             Ok(())
         }
+        Command::Export { scene, output, demo_strands } => {
+            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let desc = load(scene.as_deref(), &o)?;
+            let geometry = tress::scene::load_geometry(&desc)?;
+            let mut all = tress::geometry::StrandSet::new();
+            for (shape, _) in &geometry.shapes {
+                if let Shape::Strands(s) = shape {
+                    all.append(s);
+                }
+            }
+            if !output.extension().is_some_and(|e| e.eq_ignore_ascii_case("hair")) {
+                anyhow::bail!("{}: unsupported export format: use a .hair file name", output.display());
+            }
+            tress::io::hair::write_hair(&output, &all)?;
+            eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
+            Ok(())
+        }
         Command::Bench { scene, overrides, thread_counts } => bench(scene.as_deref(), &overrides, &thread_counts),
     }
 }
 
 fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Result<()> {
     // Check the output before spending time on the render.
-    let ext = output.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-    if !matches!(ext.as_deref(), Some("png" | "exr")) {
-        bail!("{}: unsupported output format: use a .png or .exr file name", output.display());
-    }
+    tress::film::check_output(output)?;
     let desc = load(scene, o)?;
     let pool = pool(desc.settings.threads)?;
     let (world, times) = pool.install(|| prepare(&desc))?;

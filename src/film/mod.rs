@@ -2,7 +2,7 @@
 
 mod output;
 
-pub use output::{srgb_encode, write_image, write_image_with, OutputError};
+pub use output::{check_output, srgb_encode, write_image, write_image_with, OutputError};
 
 use glam::Vec3;
 

@@ -165,6 +165,13 @@ pub fn write_image_with(path: &Path, film: &Film, attributes: &[(&str, &str)]) -
     }
 }
 
+/// Checks, before a long render, that an image could be written to `path`: a supported
+/// extension and an existing directory.
+pub fn check_output(path: &Path) -> Result<(), OutputError> {
+    Format::of(path)?;
+    destination_directory(path).map(|_| ())
+}
+
 /// The file formats [`write_image`] can produce.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Format {

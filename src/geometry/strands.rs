@@ -104,6 +104,34 @@ impl StrandSet {
             + self.opacity.as_ref().map_or(0, |o| o.len() * 4)
     }
 
+    /// Appends every strand of `other`. Colours and opacities are kept only when both sets
+    /// have them (a set without them gets none).
+    pub fn append(&mut self, other: &StrandSet) {
+        let base = self.points.len() as u32;
+        let had_points = !self.points.is_empty();
+        self.colors = match (self.colors.take(), &other.colors) {
+            (Some(mut a), Some(b)) => {
+                a.extend_from_slice(b);
+                Some(a)
+            }
+            (None, Some(b)) if !had_points => Some(b.clone()),
+            _ => None,
+        };
+        self.opacity = match (self.opacity.take(), &other.opacity) {
+            (Some(mut a), Some(b)) => {
+                a.extend_from_slice(b);
+                Some(a)
+            }
+            (None, Some(b)) if !had_points => Some(b.clone()),
+            _ => None,
+        };
+        self.points.extend_from_slice(&other.points);
+        if self.offsets.is_empty() {
+            self.offsets.push(0);
+        }
+        self.offsets.extend(other.offsets.iter().skip(1).map(|o| o + base));
+    }
+
     /// Applies an affine transform to positions; radii scale by the cube root of the
     /// determinant (the mean scale), so a uniformly scaled strand keeps its proportions.
     pub fn transform(&mut self, m: &glam::Affine3A) {
@@ -112,5 +140,53 @@ impl StrandSet {
             let q = m.transform_point3(Vec3::new(p[0], p[1], p[2]));
             *p = [q.x, q.y, q.z, p[3] * scale];
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(n: usize, color: Option<[f32; 3]>) -> StrandSet {
+        let mut s = StrandSet::new();
+        for k in 0..n {
+            s.push_strand((0..3).map(|i| (Vec3::new(k as f32, i as f32, 0.0), 0.1)));
+        }
+        s.colors = color.map(|c| vec![c; s.points.len()]);
+        s
+    }
+
+    #[test]
+    fn counts_segments_and_finds_strands() {
+        let mut s = set(2, None);
+        s.push_strand([(Vec3::ZERO, 0.1)]); // a single point: a strand without segments
+        assert_eq!((s.strand_count(), s.segment_count()), (3, 4));
+        assert_eq!(s.segment_starts(), vec![0, 1, 3, 4]);
+        assert_eq!((s.strand_of(2), s.strand_of(3), s.strand_of(6)), (0, 1, 2));
+    }
+
+    #[test]
+    fn tangents_are_central_differences_and_one_sided_at_ends() {
+        let mut s = StrandSet::new();
+        s.push_strand([(Vec3::ZERO, 0.1), (Vec3::X, 0.1), (Vec3::new(1.0, 1.0, 0.0), 0.1)]);
+        assert!((s.point_tangent(0) - Vec3::X).length() < 1e-6);
+        assert!((s.point_tangent(1) - Vec3::new(1.0, 1.0, 0.0).normalize()).length() < 1e-6);
+        assert!((s.point_tangent(2) - Vec3::Y).length() < 1e-6);
+        // Interpolated along a segment, normalised.
+        let mid = s.tangent(0, 0.5);
+        assert!((mid.length() - 1.0).abs() < 1e-6 && mid.x > mid.y && mid.y > 0.0);
+    }
+
+    #[test]
+    fn append_keeps_offsets_and_drops_colours_missing_on_one_side() {
+        let mut a = set(2, Some([1.0, 0.0, 0.0]));
+        a.append(&set(1, Some([0.0, 1.0, 0.0])));
+        assert_eq!(a.offsets, vec![0, 3, 6, 9]);
+        assert_eq!(a.colors.as_ref().unwrap()[8], [0.0, 1.0, 0.0]);
+        a.append(&set(1, None));
+        assert_eq!((a.strand_count(), a.colors), (4, None));
+        let mut empty = StrandSet::new();
+        empty.append(&set(1, Some([0.5; 3])));
+        assert!(empty.colors.is_some());
     }
 }

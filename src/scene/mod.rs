@@ -176,12 +176,16 @@ impl Description {
     }
 }
 
-/// Loads geometry, applies transforms and builds the BVHs.
-pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError> {
-    desc.validate()?;
-    let c = &desc.camera;
-    let camera = Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height)?;
-    let start = Instant::now();
+/// The geometry of a description, loaded and in world space, with one material per shape.
+pub struct LoadedGeometry {
+    /// Shapes with the index of their material.
+    pub shapes: Vec<(Shape, u32)>,
+    /// Materials, indexed by the shapes.
+    pub materials: Vec<Material>,
+}
+
+/// Loads every mesh and strand set a description names and applies its transform.
+pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError> {
     let mut materials = Vec::new();
     let mut shapes = Vec::new();
     for m in &desc.meshes {
@@ -208,6 +212,16 @@ pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
+    Ok(LoadedGeometry { shapes, materials })
+}
+
+/// Loads geometry, applies transforms and builds the BVHs.
+pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError> {
+    desc.validate()?;
+    let c = &desc.camera;
+    let camera = Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height)?;
+    let start = Instant::now();
+    let LoadedGeometry { shapes, materials } = load_geometry(desc)?;
     let load = start.elapsed();
     let start = Instant::now();
     let accel = Accel::build(shapes);
