@@ -18,6 +18,19 @@ pub struct StrandSet {
     pub colors: Option<Vec<[f32; 3]>>,
     /// Optional opacity per point (1 = opaque).
     pub opacity: Option<Vec<f32>>,
+    /// Optional per-strand data from the generator (fur, hair systems).
+    pub strand_info: Option<StrandInfo>,
+}
+
+/// Per-strand data a generator knows and shading or AOVs may use; each array has one
+/// entry per strand. A stable per-strand random value needs no storage: hash the strand
+/// index with [`crate::math::rng::hash_u32`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StrandInfo {
+    /// UV of the strand's root on the surface it grows from.
+    pub root_uv: Vec<[f32; 2]>,
+    /// Clump (or guide) each strand belongs to.
+    pub clump: Vec<u32>,
 }
 
 impl StrandSet {
@@ -102,10 +115,11 @@ impl StrandSet {
             + self.offsets.len() * 4
             + self.colors.as_ref().map_or(0, |c| c.len() * 12)
             + self.opacity.as_ref().map_or(0, |o| o.len() * 4)
+            + self.strand_info.as_ref().map_or(0, |i| i.root_uv.len() * 8 + i.clump.len() * 4)
     }
 
-    /// Appends every strand of `other`. Colours and opacities are kept only when both sets
-    /// have them (a set without them gets none).
+    /// Appends every strand of `other`. Colours, opacities and strand info are kept only
+    /// when both sets have them (a set without them gets none).
     pub fn append(&mut self, other: &StrandSet) {
         let base = self.points.len() as u32;
         let had_points = !self.points.is_empty();
@@ -120,6 +134,15 @@ impl StrandSet {
         self.opacity = match (self.opacity.take(), &other.opacity) {
             (Some(mut a), Some(b)) => {
                 a.extend_from_slice(b);
+                Some(a)
+            }
+            (None, Some(b)) if !had_points => Some(b.clone()),
+            _ => None,
+        };
+        self.strand_info = match (self.strand_info.take(), &other.strand_info) {
+            (Some(mut a), Some(b)) => {
+                a.root_uv.extend_from_slice(&b.root_uv);
+                a.clump.extend_from_slice(&b.clump);
                 Some(a)
             }
             (None, Some(b)) if !had_points => Some(b.clone()),

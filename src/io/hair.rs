@@ -287,7 +287,7 @@ pub fn parse_hair(bytes: &[u8], path: &Path) -> Result<StrandSet, LoadError> {
         None
     };
 
-    Ok(StrandSet { points, offsets, colors, opacity })
+    Ok(StrandSet { points, offsets, colors, opacity, strand_info: None })
 }
 
 /// Checks the data length against what the header requires, before anything is allocated.
