@@ -1,107 +1,270 @@
-//! Throughput benchmark: BVH build time, closest-hit (primary) and any-hit (shadow) rays
-//! per second, and memory per hair segment, measured on a prepared world.
+//! Throughput benchmark, laid out to sit beside the Embree baseline in `bench/embree/`:
+//! BVH build time, memory by part, and closest-hit (primary) and any-hit (shadow) rays per
+//! second for given thread counts, by wall clock and by CPU time (the machine is shared,
+//! so CPU-time rates are the steadier figure).
+//!
+//! The camera rays are exactly those of the Embree program: pixel `(x, y)`, sample `s`,
+//! jittered by `hash(key)`, `hash(key + 1)` with `key = ((y * w + x) * spp + s) * 2`; shadow
+//! rays start at each primary hit moved 2e-5 along the geometric normal facing the viewer
+//! and go towards the distant light.
 
-use crate::accel::{Accel, Shape};
-use crate::math::rng::PixelSampler;
-use crate::scene::World;
-use glam::Vec3;
+use crate::accel::{Accel, HitKind, Shape};
+use crate::light::Light;
+use crate::math::rng::hash_u32;
+use crate::math::Color;
+use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings, World};
+use crate::shading::{tube::Tube, Material};
+use glam::{Affine3A, Vec3};
 use rayon::prelude::*;
+use serde::Deserialize;
+use std::path::Path;
 use std::time::{Duration, Instant};
 
-/// Figures of one benchmark run.
-#[derive(Clone, Debug)]
-pub struct BenchReport {
-    /// Threads used for the ray measurements.
-    pub threads: usize,
-    /// Camera rays traced.
-    pub primary_rays: u64,
-    /// Time to trace them.
-    pub primary_time: Duration,
-    /// Shadow rays traced (one per primary hit, towards the first light).
-    pub shadow_rays: u64,
-    /// Time to trace them.
-    pub shadow_time: Duration,
-}
+/// Shadow-ray origin offset of the Embree baseline (`kEps` in bench.cpp).
+const SHADOW_EPS: f32 = 2e-5;
 
-impl BenchReport {
-    /// Primary rays per second.
-    pub fn primary_rate(&self) -> f64 {
-        self.primary_rays as f64 / self.primary_time.as_secs_f64()
-    }
-    /// Shadow rays per second.
-    pub fn shadow_rate(&self) -> f64 {
-        self.shadow_rays as f64 / self.shadow_time.as_secs_f64()
-    }
-}
-
-/// Memory of the hair in a scene: points, BVHs, and segments.
+/// Memory of a prepared scene by part, in bytes.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct HairMemory {
+pub struct Memory {
     /// Hair segments.
     pub segments: u64,
-    /// Bytes of strand arrays (points, offsets, colours).
-    pub strand_bytes: u64,
-    /// Bytes of the strand sets' BVHs.
-    pub bvh_bytes: u64,
+    /// Strand points and offsets (and colours, when present).
+    pub strand_points: u64,
+    /// Strand BVHs: nodes and segment ids.
+    pub strand_bvh: u64,
+    /// Mesh vertices, normals, UVs and indices.
+    pub mesh: u64,
+    /// Mesh BVHs and the top level.
+    pub other_bvh: u64,
 }
 
-impl HairMemory {
-    /// Measures the strand sets of `accel`.
-    pub fn of(accel: &Accel) -> HairMemory {
-        let mut m = HairMemory::default();
+impl Memory {
+    /// Measures the objects of `accel`.
+    pub fn of(accel: &Accel) -> Memory {
+        let mut m = Memory::default();
         for o in &accel.objects {
-            if let Shape::Strands(s) = &o.shape {
-                m.segments += s.segment_count() as u64;
-                m.strand_bytes += s.memory_bytes() as u64;
-                m.bvh_bytes += o.bvh().memory_bytes() as u64;
+            match &o.shape {
+                Shape::Strands(s) => {
+                    m.segments += s.segment_count() as u64;
+                    m.strand_points += s.memory_bytes() as u64;
+                    m.strand_bvh += o.bvh().memory_bytes() as u64;
+                }
+                Shape::Mesh(mesh) => {
+                    m.mesh += mesh.memory_bytes() as u64;
+                }
             }
         }
+        m.other_bvh = accel.bvh_bytes() as u64 - m.strand_bvh;
         m
     }
 
-    /// Bytes per segment, strands and BVH together.
+    /// Hair bytes per segment: points and BVH together.
     pub fn bytes_per_segment(&self) -> f64 {
-        (self.strand_bytes + self.bvh_bytes) as f64 / self.segments.max(1) as f64
+        (self.strand_points + self.strand_bvh) as f64 / self.segments.max(1) as f64
     }
 }
 
-/// Traces the world's camera rays (every pixel, `spp` jittered samples, closest hit), then
-/// one shadow ray per hit towards the direction of the first light, on the current rayon
-/// pool. Shading is not measured.
-pub fn trace_rays(world: &World, threads: usize) -> BenchReport {
+/// Rays traced in one measurement and the time they took.
+#[derive(Clone, Copy, Debug)]
+pub struct Rate {
+    /// Rays traced.
+    pub rays: u64,
+    /// Wall-clock time.
+    pub wall: Duration,
+    /// CPU time of the whole process over the same span.
+    pub cpu: Duration,
+    /// Threads used.
+    pub threads: usize,
+}
+
+impl Rate {
+    /// Million rays per second of wall-clock time.
+    pub fn mrays(&self) -> f64 {
+        self.rays as f64 / self.wall.as_secs_f64() / 1e6
+    }
+
+    /// Million rays per second of CPU time, times the thread count: what the threads would
+    /// reach on an idle machine.
+    pub fn mrays_cpu(&self) -> f64 {
+        self.rays as f64 / self.cpu.as_secs_f64().max(1e-9) * self.threads as f64 / 1e6
+    }
+}
+
+/// CPU time consumed by this process so far.
+pub fn process_cpu_time() -> Duration {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    // SAFETY: clock_gettime writes a timespec through a valid pointer and has no other effect.
+    let ok = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) } == 0;
+    if ok {
+        Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+    } else {
+        Duration::ZERO
+    }
+}
+
+fn measure<T>(threads: usize, f: impl FnOnce() -> (T, u64)) -> (T, Rate) {
+    let (c0, t0) = (process_cpu_time(), Instant::now());
+    let (out, rays) = f();
+    (out, Rate { rays, wall: t0.elapsed(), cpu: process_cpu_time().saturating_sub(c0), threads })
+}
+
+/// The Embree program's jitter in [0, 1) for a key.
+#[inline]
+fn u01(key: u32) -> f32 {
+    (hash_u32(key) >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
+/// Traces every camera ray (closest hit) on the current rayon pool; returns the shadow-ray
+/// origins of the hits and the rate.
+pub fn trace_primary(world: &World, threads: usize) -> (Vec<Vec3>, Rate) {
     let (w, h, spp) = (world.settings.width, world.settings.height, world.settings.spp);
-    let light_dir =
-        world.lights.iter().find_map(|l| l.sample(Vec3::ZERO, None, (0.5, 0.5)).map(|s| s.dir)).unwrap_or(Vec3::Y);
-    let start = Instant::now();
-    let hits: Vec<Vec<Vec3>> = (0..h)
-        .into_par_iter()
-        .map(|y| {
-            let mut row = Vec::new();
-            for x in 0..w {
-                for s in 0..spp {
-                    let (jx, jy) = PixelSampler::new(world.settings.seed, x, y, s).next_2d();
-                    let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
-                    if let Some(hit) = world.accel.intersect(&ray) {
-                        row.push(ray.at(hit.t));
+    measure(threads, || {
+        let origins: Vec<Vec3> = (0..h)
+            .into_par_iter()
+            .flat_map_iter(|y| {
+                let mut row = Vec::new();
+                for x in 0..w {
+                    for s in 0..spp {
+                        let key = ((y * w + x) * spp + s).wrapping_mul(2);
+                        let ray = world.camera.ray(x as f32 + u01(key), y as f32 + u01(key + 1));
+                        if let Some(hit) = world.accel.intersect(&ray) {
+                            let n = match hit.kind {
+                                HitKind::Segment { normal, .. } => normal,
+                                HitKind::Triangle { .. } => match &world.accel.objects[hit.object as usize].shape {
+                                    Shape::Mesh(m) => {
+                                        let [a, b, c] = m.corners(hit.prim);
+                                        (b - a).cross(c - a).normalize_or_zero()
+                                    }
+                                    Shape::Strands(_) => Vec3::ZERO,
+                                },
+                            };
+                            let n = if n.dot(ray.dir) > 0.0 { -n } else { n };
+                            row.push(ray.at(hit.t) + n * SHADOW_EPS);
+                        }
                     }
                 }
-            }
-            row
+                row
+            })
+            .collect();
+        (origins, (w * h * spp) as u64)
+    })
+}
+
+/// Traces one any-hit ray per origin towards `light` on the current rayon pool; returns
+/// how many were blocked and the rate.
+pub fn trace_shadow(world: &World, origins: &[Vec3], light: Vec3, threads: usize) -> (u64, Rate) {
+    measure(threads, || {
+        let blocked = origins
+            .par_chunks(4096)
+            .map(|chunk| chunk.iter().filter(|&&o| world.accel.occluded(o, light, f32::INFINITY, None)).count() as u64)
+            .sum();
+        (blocked, origins.len() as u64)
+    })
+}
+
+/// Direction towards the first distant light of a world (straight up when there is none).
+pub fn light_direction(world: &World) -> Vec3 {
+    world
+        .lights
+        .iter()
+        .find_map(|l| match l {
+            Light::Distant { direction, .. } => Some(*direction),
+            _ => None,
+        })
+        .unwrap_or(Vec3::Y)
+}
+
+#[derive(Deserialize)]
+struct RefScene {
+    film: RefFilm,
+    camera: RefCamera,
+    lights: Vec<RefLight>,
+    meshes: Vec<RefMesh>,
+    hair: Vec<RefHair>,
+}
+#[derive(Deserialize)]
+struct RefFilm {
+    width: u32,
+    height: u32,
+    spp: u32,
+}
+#[derive(Deserialize)]
+struct RefCamera {
+    eye: [f32; 3],
+    target: [f32; 3],
+    up: [f32; 3],
+    vfov_deg: f32,
+}
+#[derive(Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
+enum RefLight {
+    Distant { direction_to_light: [f32; 3], radiance: [f32; 3] },
+    ConstantEnvironment { radiance: [f32; 3] },
+}
+#[derive(Deserialize)]
+struct RefMesh {
+    obj: String,
+    diffuse: [f32; 3],
+}
+#[derive(Deserialize)]
+struct RefHair {
+    file: String,
+    diffuse: [f32; 3],
+}
+
+/// Reads a reference scene directory written by `shared/scenes/gen_scenes.py`
+/// (`scene.json`, the OBJ and the `.hair` it names) as a scene description.
+pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
+    use anyhow::Context;
+    let path = dir.join("scene.json");
+    let text = std::fs::read_to_string(&path).with_context(|| format!("{}: cannot read", path.display()))?;
+    let s: RefScene = serde_json::from_str(&text).with_context(|| format!("{}: not a reference scene", path.display()))?;
+    let lights = s
+        .lights
+        .iter()
+        .map(|l| match *l {
+            RefLight::Distant { direction_to_light, radiance } => Light::Distant {
+                direction: Vec3::from(direction_to_light).normalize_or(Vec3::Y),
+                irradiance: radiance.into(),
+            },
+            RefLight::ConstantEnvironment { radiance } => Light::Environment { radiance: radiance.into() },
         })
         .collect();
-    let primary_time = start.elapsed();
-    let start = Instant::now();
-    let shadow_rays: u64 = hits
-        .par_iter()
-        .map(|row| {
-            for p in row {
-                // A fixed relative offset is enough for a throughput measurement.
-                let origin = *p + light_dir * (1e-4 * (1.0 + p.abs().max_element()));
-                std::hint::black_box(world.accel.occluded(origin, light_dir, f32::INFINITY, None));
-            }
-            row.len() as u64
+    let meshes = s
+        .meshes
+        .iter()
+        .map(|m| MeshEntry {
+            source: MeshSource::File(dir.join(&m.obj)),
+            material: Material::Diffuse { color: m.diffuse.into() },
+            transform: Affine3A::IDENTITY,
         })
-        .sum();
-    let shadow_time = start.elapsed();
-    BenchReport { threads, primary_rays: (w * h * spp) as u64, primary_time, shadow_rays, shadow_time }
+        .collect();
+    let hair = s
+        .hair
+        .iter()
+        .map(|h| HairEntry {
+            source: HairSource::File(dir.join(&h.file)),
+            material: Material::Tube(Tube {
+                ambient: h.diffuse.into(),
+                diffuse: h.diffuse.into(),
+                specular: Color::splat(0.3),
+                specular_power: 40.0,
+            }),
+            transform: Affine3A::IDENTITY,
+            radius_scale: 1.0,
+            file_colors: false,
+        })
+        .collect();
+    Ok(Description {
+        camera: CameraDesc {
+            eye: s.camera.eye.into(),
+            target: s.camera.target.into(),
+            up: s.camera.up.into(),
+            vfov: s.camera.vfov_deg,
+        },
+        settings: RenderSettings { width: s.film.width, height: s.film.height, spp: s.film.spp, ..Default::default() },
+        lights,
+        meshes,
+        hair,
+    })
 }

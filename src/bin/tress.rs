@@ -4,9 +4,8 @@ use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 use tress::accel::Shape;
-use tress::bench::{trace_rays, HairMemory};
+use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_shadow, Memory};
 use tress::scene::{prepare, Description, World};
 use tress::stats::{human_bytes, peak_memory_bytes};
 
@@ -53,13 +52,18 @@ enum Command {
     },
     /// Measure BVH build time, ray throughput and memory per hair segment.
     Bench {
-        /// Scene file (TOML); the built-in demo scene when omitted.
+        /// Scene file (TOML), or a reference scene directory written by
+        /// shared/scenes/gen_scenes.py (scene.json, torus.obj, hairy_torus.hair);
+        /// the built-in demo scene when omitted.
         scene: Option<PathBuf>,
         #[command(flatten)]
         overrides: Overrides,
         /// Thread counts to measure, comma separated (0 = every core).
         #[arg(long, value_delimiter = ',', default_value = "1,0")]
         thread_counts: Vec<usize>,
+        /// Repetitions of each measurement (the median is reported).
+        #[arg(long, default_value_t = 3)]
+        reps: usize,
     },
 }
 
@@ -149,7 +153,7 @@ fn run(cli: Cli) -> Result<()> {
             eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
             Ok(())
         }
-        Command::Bench { scene, overrides, thread_counts } => bench(scene.as_deref(), &overrides, &thread_counts),
+        Command::Bench { scene, overrides, thread_counts, reps } => bench(scene.as_deref(), &overrides, &thread_counts, reps),
     }
 }
 
@@ -169,7 +173,7 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Re
     let (film, stats) = pool.install(|| tress::render::render(&world, Some(&bar)));
     bar.finish_and_clear();
     tress::film::write_image(output, &film)?;
-    let hair = HairMemory::of(&world.accel);
+    let hair = Memory::of(&world.accel);
     let secs = stats.elapsed.as_secs_f64();
     eprintln!(
         "wrote {} ({}x{}, {} spp, {} threads)",
@@ -238,27 +242,74 @@ fn info(world: &World) {
     }
 }
 
-fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize]) -> Result<()> {
-    let desc = load(scene, o)?;
+fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usize) -> Result<()> {
+    // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
+    let mut desc = match scene {
+        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
+        _ => load(scene, o)?,
+    };
+    if let Some((w, h)) = o.resolution {
+        (desc.settings.width, desc.settings.height) = (w, h);
+    }
+    if let Some(spp) = o.spp {
+        desc.settings.spp = spp;
+    }
     let all = pool(0)?.current_num_threads();
-    let start = Instant::now();
-    let (world, times) = pool(0)?.install(|| prepare(&desc))?;
-    let _ = start;
-    let hair = HairMemory::of(&world.accel);
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let list = |v: &[f64]| v.iter().map(|x| format!("{x:.3}")).collect::<Vec<_>>().join(", ");
+    let mut builds = Vec::new();
+    let mut world = None;
+    for _ in 0..reps.max(1) {
+        let (w, times) = pool(0)?.install(|| prepare(&desc))?;
+        builds.push(times.build.as_secs_f64() * 1e3);
+        world = Some(w);
+    }
+    let world = world.expect("at least one repetition");
+    let m = Memory::of(&world.accel);
     let s = &world.settings;
-    println!("scene        {} hair segments, {}x{} x {} spp camera rays", hair.segments, s.width, s.height, s.spp);
-    println!("bvh_build    {:.3} s ({all} threads)", times.build.as_secs_f64());
+    println!("scene: {} hair segments, {}x{} x {} spp camera rays", m.segments, s.width, s.height, s.spp);
+    println!("RESULT build_ms median {:.1} [{}] ({all} threads)", median(builds.clone()), list(&builds));
+    let seg = m.segments.max(1) as f64;
     println!(
-        "memory       {:.1} bytes/segment (points {:.1} + bvh {:.1})",
-        hair.bytes_per_segment(),
-        hair.strand_bytes as f64 / hair.segments.max(1) as f64,
-        hair.bvh_bytes as f64 / hair.segments.max(1) as f64
+        "RESULT mem points {} B, bvh {} B, total {} B, bvh/segment {:.1} B, total/segment {:.1} B (meshes {} B, their bvh {} B)",
+        m.strand_points,
+        m.strand_bvh,
+        m.strand_points + m.strand_bvh,
+        m.strand_bvh as f64 / seg,
+        m.bytes_per_segment(),
+        m.mesh,
+        m.other_bvh
     );
+    let light = light_direction(&world);
     for &t in thread_counts {
         let threads = if t == 0 { all } else { t };
-        let r = pool(threads)?.install(|| trace_rays(&world, threads));
-        println!("primary      {:>2} threads {:>8.3} Mrays/s", threads, r.primary_rate() / 1e6);
-        println!("shadow       {:>2} threads {:>8.3} Mrays/s", threads, r.shadow_rate() / 1e6);
+        let pool = pool(threads)?;
+        let mut primary = Vec::new();
+        let mut shadow = Vec::new();
+        let mut origins = Vec::new();
+        for _ in 0..reps.max(1) {
+            let (o, r) = pool.install(|| trace_primary(&world, threads));
+            primary.push(r);
+            origins = o;
+        }
+        for _ in 0..reps.max(1) {
+            shadow.push(pool.install(|| trace_shadow(&world, &origins, light, threads)).1);
+        }
+        for (name, rates) in [("primary", &primary), ("shadow", &shadow)] {
+            let wall: Vec<f64> = rates.iter().map(|r| r.mrays()).collect();
+            let cpu: Vec<f64> = rates.iter().map(|r| r.mrays_cpu()).collect();
+            println!(
+                "RESULT threads {threads} {name:<8} Mrays/s median {:7.3} [{}] | cpu-time based {:7.3} [{}] | rays {}",
+                median(wall.clone()),
+                list(&wall),
+                median(cpu.clone()),
+                list(&cpu),
+                rates[0].rays
+            );
+        }
     }
     Ok(())
 }
