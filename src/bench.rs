@@ -218,7 +218,8 @@ pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
     use anyhow::Context;
     let path = dir.join("scene.json");
     let text = std::fs::read_to_string(&path).with_context(|| format!("{}: cannot read", path.display()))?;
-    let s: RefScene = serde_json::from_str(&text).with_context(|| format!("{}: not a reference scene", path.display()))?;
+    let s: RefScene =
+        serde_json::from_str(&text).with_context(|| format!("{}: not a reference scene", path.display()))?;
     let lights = s
         .lights
         .iter()

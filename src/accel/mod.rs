@@ -137,15 +137,17 @@ impl Accel {
         let test = RayBoxTest::new(ray.origin, ray.dir);
         let mut tmax = ray.tmax;
         let mut best = None;
-        self.top.traverse(&test, &mut tmax, |object, tmax| {
-            let o = &self.objects[object as usize];
-            o.bvh.traverse(&test, tmax, |prim, tmax| {
-                if let Some(hit) = intersect_primitive(&o.shape, prim, ray.origin, ray.dir, *tmax) {
-                    *tmax = hit.0;
-                    best = Some(Hit { t: hit.0, object, prim, kind: hit.1 });
-                }
-                false
-            });
+        self.top.traverse(&test, &mut tmax, |objects, tmax| {
+            for &object in objects {
+                let o = &self.objects[object as usize];
+                o.bvh.traverse(&test, tmax, |prims, tmax| {
+                    if let Some((prim, t, kind)) = intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None) {
+                        *tmax = t;
+                        best = Some(Hit { t, object, prim, kind });
+                    }
+                    false
+                });
+            }
             false
         });
         best
@@ -157,16 +159,19 @@ impl Accel {
         let test = RayBoxTest::new(origin, dir);
         let mut t = tmax;
         let mut blocked = false;
-        self.top.traverse(&test, &mut t, |object, t| {
-            let o = &self.objects[object as usize];
-            o.bvh.traverse(&test, t, |prim, t| {
-                if skip.is_some_and(|s| s.object == object && (s.first..=s.last).contains(&prim)) {
-                    return false;
+        self.top.traverse(&test, &mut t, |objects, t| {
+            for &object in objects {
+                let o = &self.objects[object as usize];
+                let skip = skip.filter(|s| s.object == object);
+                o.bvh.traverse(&test, t, |prims, t| {
+                    blocked = intersect_leaf(&o.shape, prims, origin, dir, *t, skip).is_some();
+                    blocked
+                });
+                if blocked {
+                    return true;
                 }
-                blocked = intersect_primitive(&o.shape, prim, origin, dir, *t).is_some();
-                blocked
-            });
-            blocked
+            }
+            false
         });
         blocked
     }
@@ -191,17 +196,55 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
     }
 }
 
+/// The nearest hit among a leaf's primitives before `tmax`, ignoring `skip`: (primitive,
+/// distance, where). Segments are tested four at a time.
 #[inline]
-fn intersect_primitive(shape: &Shape, prim: u32, origin: Vec3, dir: Vec3, tmax: f32) -> Option<(f32, HitKind)> {
+fn intersect_leaf(
+    shape: &Shape,
+    prims: &[u32],
+    origin: Vec3,
+    dir: Vec3,
+    tmax: f32,
+    skip: Option<Skip>,
+) -> Option<(u32, f32, HitKind)> {
+    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
+    let mut best = None;
+    let mut tmax = tmax;
     match shape {
-        Shape::Mesh(m) => triangle::intersect_triangle(origin, dir, 0.0, tmax, m.corners(prim))
-            .map(|h| (h.t, HitKind::Triangle { b1: h.b1, b2: h.b2 })),
+        Shape::Mesh(m) => {
+            for &p in prims {
+                if let Some(h) = triangle::intersect_triangle(origin, dir, 0.0, tmax, m.corners(p)) {
+                    tmax = h.t;
+                    best = Some((p, h.t, HitKind::Triangle { b1: h.b1, b2: h.b2 }));
+                }
+            }
+        }
         Shape::Strands(s) => {
-            let i = prim as usize;
-            segment::intersect_cylinder(origin, dir, 0.0, tmax, s.points[i], s.points[i + 1])
-                .map(|h| (h.t, HitKind::Segment { s: h.s, normal: h.normal }))
+            for chunk in prims.chunks(4) {
+                let (mut p0, mut p1) = ([[0.0; 4]; 4], [[0.0; 4]; 4]);
+                for (lane, &p) in chunk.iter().enumerate() {
+                    if !skipped(p) {
+                        p0[lane] = s.points[p as usize];
+                        p1[lane] = s.points[p as usize + 1];
+                    }
+                }
+                let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
+                if let Some(lane) = hits.nearest() {
+                    if let Some(h) = hits.hit(lane) {
+                        tmax = h.t;
+                        best = Some((chunk[lane], h.t, HitKind::Segment { s: h.s, normal: h.normal }));
+                    }
+                }
+            }
         }
     }
+    best
+}
+
+/// One primitive's hit before `tmax`: (distance, where).
+#[cfg(test)]
+fn intersect_primitive(shape: &Shape, prim: u32, origin: Vec3, dir: Vec3, tmax: f32) -> Option<(f32, HitKind)> {
+    intersect_leaf(shape, &[prim], origin, dir, tmax, None).map(|(_, t, k)| (t, k))
 }
 
 #[cfg(test)]

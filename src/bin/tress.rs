@@ -153,7 +153,9 @@ fn run(cli: Cli) -> Result<()> {
             eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
             Ok(())
         }
-        Command::Bench { scene, overrides, thread_counts, reps } => bench(scene.as_deref(), &overrides, &thread_counts, reps),
+        Command::Bench { scene, overrides, thread_counts, reps } => {
+            bench(scene.as_deref(), &overrides, &thread_counts, reps)
+        }
     }
 }
 

@@ -24,6 +24,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use glam::Vec3;
+use wide::{bytemuck, f32x4, u32x4};
 
 /// Where a ray meets a segment.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -54,52 +55,121 @@ pub fn intersect_cylinder(
     p0: [f32; 4],
     p1: [f32; 4],
 ) -> Option<SegmentHit> {
-    let g = Local::new(origin, dir, p0, p1)?;
+    // One implementation serves one segment and four: the others lanes hold no surface.
+    let none = [0.0; 4];
+    let hits = intersect_cylinder4(origin, dir, tmin, tmax, [p0, none, none, none], [p1, none, none, none]);
+    hits.nearest().and_then(|lane| hits.hit(lane))
+}
+
+/// The cylinder test of [`intersect_cylinder`] on four segments at once (lanes of 4-wide
+/// SIMD), for BVH leaves. A lane whose segment is all zeros holds no surface.
+#[inline]
+pub fn intersect_cylinder4(
+    origin: Vec3,
+    dir: Vec3,
+    tmin: f32,
+    tmax: f32,
+    p0: [[f32; 4]; 4],
+    p1: [[f32; 4]; 4],
+) -> Hits4 {
+    let (g, mut valid) = Local4::new(origin, dir, p0, p1);
+    let miss = Hits4 { mask: 0, t: f32x4::ZERO, s: f32x4::ZERO, u: f32x4::ZERO, g };
+    if valid.to_bitmask() == 0 {
+        return miss;
+    }
     // Cychosz & Waggenspack's n = dir x axis vanishes exactly when the ray is parallel to the
     // axis; |dir x axis|^2 = |axis|^2 |d_perp|^2, so d_perp carries the same test.
     let aa = g.dp.length_squared();
-    if !(aa > 0.0) {
-        return None;
-    }
-    let inv_aa = 1.0 / aa;
+    valid &= aa.simd_gt(f32x4::ZERO);
+    let inv_aa = f32x4::ONE / aa;
     let b = g.cp.dot(g.dp);
     // Closest approach of the ray line to the axis line: minimising |cp + u dp|^2 gives
     // u* = -b / aa (Cychosz & Waggenspack's t along the ray); its axis parameter is s*.
     let s_star = g.sc - b * inv_aa * g.sd;
-    let rho = g.r0 + g.dr * s_star.clamp(0.0, 1.0);
-    if !(rho > 0.0) {
-        return None;
-    }
+    let rho = g.r0 + g.dr * s_star.fast_max(f32x4::ZERO).fast_min(f32x4::ONE);
+    valid &= rho.simd_gt(f32x4::ZERO);
     // Quadratic aa u^2 + 2 b u + cc = 0 for |cp + u dp| = rho. Its discriminant b^2 - aa cc is
     // formed as aa rho^2 - |cp x dp|^2 (Lagrange's identity): |cp x dp|^2 / aa is the squared
     // distance between the lines, Cychosz & Waggenspack's d, so the test reads
     // aa (rho^2 - d^2) >= 0 and never subtracts two large nearly equal squares. This is the
     // form Haines et al. recommend for spheres (Ray Tracing Gems 2019, ch. 7).
     let disc = aa * rho * rho - g.cross2;
-    if !(disc >= 0.0) {
-        return None;
+    valid &= disc.simd_ge(f32x4::ZERO);
+    if valid.to_bitmask() == 0 {
+        return miss;
     }
     let cc = g.cp.length_squared() - rho * rho;
     // Stable roots (Press et al., Numerical Recipes, section 5.6; Haines et al. 2019): with the
     // half coefficient b, q = -0.5 (B + sign(B) sqrt(B^2 - 4 A C)) becomes
     // q = -(b + sign(b) sqrt(disc)), a sum of two terms of one sign; then u = q / aa and cc / q.
-    let q = -(b + disc.sqrt().copysign(b));
+    let q = -(b + disc.fast_max(f32x4::ZERO).sqrt().copysign(b));
     let u1 = q * inv_aa;
     // q = 0 only for a tangent ray with b = 0: then the double root is u1 = 0.
-    let u2 = if q != 0.0 { cc / q } else { u1 };
-    let (near, far) = if u1 <= u2 { (u1, u2) } else { (u2, u1) };
+    let u2 = q.simd_ne(f32x4::ZERO).select(cc / q, u1);
+    let (near, far) = (u1.fast_min(u2), u1.fast_max(u2));
     // Open tube: if the front root falls outside the segment or the ray interval, the back
     // wall seen through the open end may still be hit.
-    let accept = |u: f32| -> Option<SegmentHit> {
+    let accept = |u: f32x4| {
         let t = g.t0 + u;
         let s = g.sc + u * g.sd;
-        if !(t > tmin && t < tmax && (0.0..=1.0).contains(&s)) {
+        t.simd_gt(f32x4::splat(tmin))
+            & t.simd_lt(f32x4::splat(tmax))
+            & s.simd_ge(f32x4::ZERO)
+            & s.simd_le(f32x4::ONE)
+            & t.is_finite()
+    };
+    let near_ok = accept(near);
+    let far_ok = accept(far);
+    let u = near_ok.select(near, far);
+    let mask = (valid & (near_ok | far_ok)).to_bitmask();
+    Hits4 { mask, t: g.t0 + u, s: g.sc + u * g.sd, u, g }
+}
+
+/// The result of [`intersect_cylinder4`]: which lanes hit, and where.
+pub struct Hits4 {
+    /// Bit `i` set when lane `i` hits.
+    pub mask: u32,
+    t: f32x4,
+    s: f32x4,
+    u: f32x4,
+    g: Local4,
+}
+
+impl Hits4 {
+    /// Ray distances of the four lanes (meaningful where `mask` is set).
+    #[inline]
+    pub fn t(&self) -> [f32; 4] {
+        self.t.to_array()
+    }
+
+    /// The hitting lane with the smallest distance.
+    #[inline]
+    pub fn nearest(&self) -> Option<usize> {
+        let t = self.t.to_array();
+        let mut best: Option<usize> = None;
+        let mut mask = self.mask;
+        while mask != 0 {
+            let i = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            if best.is_none_or(|b| t[i] < t[b]) {
+                best = Some(i);
+            }
+        }
+        best
+    }
+
+    /// The full hit of lane `lane`, with its unit normal; `None` if the lane missed or the
+    /// normal cannot be formed at extreme scales.
+    #[inline]
+    pub fn hit(&self, lane: usize) -> Option<SegmentHit> {
+        if self.mask & (1 << lane) == 0 {
             return None;
         }
+        let g = self.g.lane(lane);
+        let u = self.u.to_array()[lane];
         // The cylinder's normal is the radial direction of the hit, perpendicular to the axis.
-        finish(t, s, g.cp + g.dp * u)
-    };
-    accept(near).or_else(|| accept(far))
+        finish(self.t.to_array()[lane], self.s.to_array()[lane], g.cp + g.dp * u)
+    }
 }
 
 /// Exact ray / truncated-cone test (the side surface of the cone frustum whose radius goes
@@ -107,7 +177,12 @@ pub fn intersect_cylinder(
 /// and t in (tmin, tmax).
 #[inline]
 pub fn intersect_cone(origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, p0: [f32; 4], p1: [f32; 4]) -> Option<SegmentHit> {
-    let g = Local::new(origin, dir, p0, p1)?;
+    let none = [0.0; 4];
+    let (g4, valid) = Local4::new(origin, dir, [p0, none, none, none], [p1, none, none, none]);
+    if valid.to_bitmask() & 1 == 0 {
+        return None;
+    }
+    let g = g4.lane(0);
     // Along the ray X(u) = c + u dir the axis parameter is s(u) = sc + u sd and the cone's
     // radius rho(u) = rho_c + k u. The side surface is |X_perp| = rho, that is
     // |cp + u dp|^2 = (rho_c + k u)^2, a quadratic aa u^2 + 2 b u + cc = 0 with:
@@ -170,9 +245,9 @@ pub fn bounds(p0: [f32; 4], p1: [f32; 4]) -> (Vec3, Vec3) {
     ((c0 - r0).min(c1 - r1), (c0 + r0).max(c1 + r1))
 }
 
-/// The ray and segment in a frame centred on `p0`, shared by both tests.
+/// The ray and one segment in a frame centred on `p0`: one lane of [`Local4`].
 struct Local {
-    /// Ray parameter of `c`, the point of the ray next to the segment (see `Local::new`).
+    /// Ray parameter of `c`, the point of the ray next to the segment (see `Local4::new`).
     t0: f32,
     /// Axis `p1 - p0`.
     a: Vec3,
@@ -191,8 +266,67 @@ struct Local {
     dr: f32,
 }
 
-impl Local {
-    /// Rejects degenerate segments, then moves the ray origin next to the segment.
+/// Three-vectors of four lanes.
+#[derive(Clone, Copy)]
+struct V4 {
+    x: f32x4,
+    y: f32x4,
+    z: f32x4,
+}
+
+impl V4 {
+    #[inline(always)]
+    fn splat(v: Vec3) -> V4 {
+        V4 { x: f32x4::splat(v.x), y: f32x4::splat(v.y), z: f32x4::splat(v.z) }
+    }
+    #[inline(always)]
+    fn dot(self, o: V4) -> f32x4 {
+        self.x * o.x + self.y * o.y + self.z * o.z
+    }
+    #[inline(always)]
+    fn length_squared(self) -> f32x4 {
+        self.dot(self)
+    }
+    #[inline(always)]
+    fn cross(self, o: V4) -> V4 {
+        V4 { x: self.y * o.z - self.z * o.y, y: self.z * o.x - self.x * o.z, z: self.x * o.y - self.y * o.x }
+    }
+    #[inline(always)]
+    fn add(self, o: V4) -> V4 {
+        V4 { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
+    }
+    #[inline(always)]
+    fn sub(self, o: V4) -> V4 {
+        V4 { x: self.x - o.x, y: self.y - o.y, z: self.z - o.z }
+    }
+    #[inline(always)]
+    fn scale(self, k: f32x4) -> V4 {
+        V4 { x: self.x * k, y: self.y * k, z: self.z * k }
+    }
+    #[inline(always)]
+    fn lane(self, i: usize) -> Vec3 {
+        Vec3::new(self.x.to_array()[i], self.y.to_array()[i], self.z.to_array()[i])
+    }
+}
+
+/// The ray and four segments, each in a frame centred on its `p0`.
+#[derive(Clone, Copy)]
+struct Local4 {
+    t0: f32x4,
+    a: V4,
+    inv_l2: f32x4,
+    sc: f32x4,
+    sd: f32x4,
+    cp: V4,
+    dp: V4,
+    cross2: f32x4,
+    r0: f32x4,
+    dr: f32x4,
+}
+
+impl Local4 {
+    /// The frames of four segments and the mask of lanes that may hit: degenerate segments
+    /// and segments the ray line passes too far from are culled.
     ///
     /// Translating the origin to p0's frame (`origin - p0`) in f32 would already round away
     /// up to half an ulp of |origin|, 3e-5 at 1e3 units, and stepping along the ray would
@@ -206,53 +340,71 @@ impl Local {
     /// Everything after works with lengths of the segment's scale; the only loss left is the
     /// rounding of t = t0 + u itself. Cost: about 35 extra flops, no division.
     #[inline(always)]
-    fn new(origin: Vec3, dir: Vec3, p0: [f32; 4], p1: [f32; 4]) -> Option<Local> {
-        let (r0, r1) = (p0[3], p1[3]);
+    fn new(origin: Vec3, dir: Vec3, p0: [[f32; 4]; 4], p1: [[f32; 4]; 4]) -> (Local4, f32x4) {
+        // Structure of arrays: component k of the four points.
+        let col = |p: &[[f32; 4]; 4], k: usize| f32x4::new([p[0][k], p[1][k], p[2][k], p[3][k]]);
+        let (q0, q1) = (
+            V4 { x: col(&p0, 0), y: col(&p0, 1), z: col(&p0, 2) },
+            V4 { x: col(&p1, 0), y: col(&p1, 1), z: col(&p1, 2) },
+        );
+        let (r0, r1) = (col(&p0, 3), col(&p1, 3));
         // Zero radius at both ends, a negative radius or NaN: no surface. A single zero end
-        // is a tapered tip and stays valid.
-        if !(r0 >= 0.0 && r1 >= 0.0 && r0 + r1 > 0.0) {
-            return None;
-        }
-        let a = Vec3::new(p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]);
+        // is a tapered tip and stays valid. (Comparisons with NaN are false.)
+        let mut valid = r0.simd_ge(f32x4::ZERO) & r1.simd_ge(f32x4::ZERO) & (r0 + r1).simd_gt(f32x4::ZERO);
+        let a = q1.sub(q0);
         let l2 = a.length_squared();
-        if !(l2 > 0.0) {
-            return None; // zero-length segment: no axis, no side surface
-        }
+        valid &= l2.simd_gt(f32x4::ZERO); // zero-length segment: no axis, no side surface
 
-        let (hx, lx) = two_sum(origin.x, -p0[0]);
-        let (hy, ly) = two_sum(origin.y, -p0[1]);
-        let (hz, lz) = two_sum(origin.z, -p0[2]);
-        let (hi, lo) = (Vec3::new(hx, hy, hz), Vec3::new(lx, ly, lz));
-        let t0 = high12(-hi.dot(dir));
-        let dh = Vec3::new(high12(dir.x), high12(dir.y), high12(dir.z));
+        let (hx, lx) = two_sum(f32x4::splat(origin.x), -q0.x);
+        let (hy, ly) = two_sum(f32x4::splat(origin.y), -q0.y);
+        let (hz, lz) = two_sum(f32x4::splat(origin.z), -q0.z);
+        let (hi, lo) = (V4 { x: hx, y: hy, z: hz }, V4 { x: lx, y: ly, z: lz });
+        let d = V4::splat(dir);
+        let t0 = high12(-hi.dot(d));
+        let dh_s = Vec3::new(high12_1(dir.x), high12_1(dir.y), high12_1(dir.z));
         // dl is exact and has at most 12 significant bits too. hi + t0 dh cancels exactly
         // (Sterbenz's lemma) where both are large; what is left, and t0 dl + lo, are small,
         // so their rounding errors are small too.
-        let dl = dir - dh;
-        let c = (hi + dh * t0) + (dl * t0 + lo);
+        let (dh, dl) = (V4::splat(dh_s), V4::splat(dir - dh_s));
+        let c = hi.add(dh.scale(t0)).add(dl.scale(t0).add(lo));
 
         // Cychosz & Waggenspack's early out: with n = dir x a, the distance between the ray
         // line and the axis line is |c.n| / |n|; beyond the larger radius neither surface is
         // met. Compared squared, without a division; the 2^-10 of slack keeps rounding from
         // culling a grazing hit that the full test would find. (A ray parallel to the axis
         // has n = 0 and passes on.)
-        let n = dir.cross(a);
+        let n = d.cross(a);
         let m = c.dot(n);
-        let rmax = r0.max(r1);
-        if m * m > rmax * rmax * n.length_squared() * (1.0 + 1.0 / 1024.0) {
-            return None;
-        }
+        let rmax = r0.fast_max(r1);
+        valid &= !(m * m).simd_gt(rmax * rmax * n.length_squared() * f32x4::splat(1.0 + 1.0 / 1024.0));
 
-        let inv_l2 = 1.0 / l2;
-        if !inv_l2.is_finite() {
-            return None;
-        }
+        let inv_l2 = f32x4::ONE / l2;
+        valid &= inv_l2.is_finite();
         let sc = c.dot(a) * inv_l2;
-        let sd = dir.dot(a) * inv_l2;
-        let (cp, dp) = (c - a * sc, dir - a * sd);
+        let sd = d.dot(a) * inv_l2;
+        let (cp, dp) = (c.sub(a.scale(sc)), d.sub(a.scale(sd)));
         // |cp x dp|^2: the perpendicular parts' cross product is the component of c x dir
         // along the axis, so its squared length is (c.(dir x a))^2 / |a|^2 = m^2 / l2.
-        Some(Local { t0, a, inv_l2, sc, sd, cp, dp, cross2: m * m * inv_l2, r0, dr: r1 - r0 })
+        let g = Local4 { t0, a, inv_l2, sc, sd, cp, dp, cross2: m * m * inv_l2, r0, dr: r1 - r0 };
+        (g, valid)
+    }
+
+    /// Lane `i` as a scalar frame.
+    #[inline]
+    fn lane(&self, i: usize) -> Local {
+        let at = |v: f32x4| v.to_array()[i];
+        Local {
+            t0: at(self.t0),
+            a: self.a.lane(i),
+            inv_l2: at(self.inv_l2),
+            sc: at(self.sc),
+            sd: at(self.sd),
+            cp: self.cp.lane(i),
+            dp: self.dp.lane(i),
+            cross2: at(self.cross2),
+            r0: at(self.r0),
+            dr: at(self.dr),
+        }
     }
 }
 
@@ -277,10 +429,17 @@ fn finish(t: f32, s: f32, n: Vec3) -> Option<SegmentHit> {
 
 /// a + b exactly as (sum, error) (Knuth's TwoSum: no precondition on magnitudes).
 #[inline(always)]
-fn two_sum(a: f32, b: f32) -> (f32, f32) {
+fn two_sum(a: f32x4, b: f32x4) -> (f32x4, f32x4) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))
+}
+
+/// The 12 leading significant bits of each lane (see [`high12_1`]).
+#[inline(always)]
+fn high12(x: f32x4) -> f32x4 {
+    let bits: u32x4 = bytemuck::cast(x);
+    bytemuck::cast(bits & u32x4::splat(0xffff_f000))
 }
 
 /// `x` with its mantissa cut to the leading 12 significant bits (the sign, the exponent and
@@ -288,7 +447,7 @@ fn two_sum(a: f32, b: f32) -> (f32, f32) {
 /// product of two such parts has at most 24 bits and is exact in f32. Dekker (1971) splits by
 /// Veltkamp's rounding trick (three operations); truncating with a mask is one.
 #[inline(always)]
-fn high12(x: f32) -> f32 {
+fn high12_1(x: f32) -> f32 {
     f32::from_bits(x.to_bits() & 0xffff_f000)
 }
 
