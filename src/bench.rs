@@ -14,6 +14,7 @@ use crate::math::rng::hash_u32;
 use crate::math::Color;
 use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings, World};
 use crate::shading::{tube::Tube, Material};
+use crate::stats::process_cpu_time;
 use glam::{Affine3A, Vec3};
 use rayon::prelude::*;
 use serde::Deserialize;
@@ -87,18 +88,6 @@ impl Rate {
     /// reach on an idle machine.
     pub fn mrays_cpu(&self) -> f64 {
         self.rays as f64 / self.cpu.as_secs_f64().max(1e-9) * self.threads as f64 / 1e6
-    }
-}
-
-/// CPU time consumed by this process so far.
-pub fn process_cpu_time() -> Duration {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes a timespec through a valid pointer and has no other effect.
-    let ok = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) } == 0;
-    if ok {
-        Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
-    } else {
-        Duration::ZERO
     }
 }
 

@@ -8,7 +8,8 @@
 //! of a hair segment); callers intersect items through a callback.
 
 use crate::math::Aabb;
-use glam::Vec3;
+use glam::{Vec3, Vec3A};
+use rayon::prelude::*;
 use wide::f32x4;
 
 /// A node of four children: their boxes as structure of arrays, and what each child is.
@@ -178,7 +179,7 @@ pub struct BuildItem {
     pub id: u32,
 }
 
-const BINS: usize = 16;
+const BINS: usize = 32;
 /// Most items in a leaf.
 pub const MAX_LEAF: usize = 8;
 /// Cost of visiting a node relative to intersecting one item (SAH constants). Leaves test
@@ -232,16 +233,16 @@ const MAX_DEPTH: usize = 60;
 
 /// Builds the subtree over `items`, which start at index `offset` of the whole item array.
 fn build_node(items: &mut [BuildItem], offset: usize, depth: usize) -> BuildNode {
-    let bounds = items.iter().fold(Aabb::EMPTY, |b, it| b.union(it.bounds));
+    let (bounds, centroids) = bounds_and_centroids(items);
     let leaf = |items: &[BuildItem]| BuildNode::Leaf { bounds, first: offset, count: items.len() };
     if items.len() <= 2 {
         return leaf(items);
     }
     // Past the depth the traversal stack is sized for, split by count (the tree then
     // deepens by one level per halving, so this cannot recurse without end).
-    let split = if depth >= MAX_DEPTH { None } else { choose_split(items, &bounds) };
+    let split = if depth >= MAX_DEPTH { None } else { choose_split(items, &bounds, &centroids) };
     let mid = match split {
-        Some((axis, position)) => partition(items, |it| it.bounds.center()[axis] < position),
+        Some((axis, lo, scale, bin)) => partition(items, |it| bin_of(it.bounds.center()[axis], lo, scale) < bin),
         None if items.len() > MAX_LEAF => {
             // Centroids coincide: split by count so leaves stay small.
             items.len() / 2
@@ -258,27 +259,83 @@ fn build_node(items: &mut [BuildItem], offset: usize, depth: usize) -> BuildNode
     BuildNode::Inner { bounds, children: Box::new([l, r]) }
 }
 
-/// The binned SAH split (axis, centroid position), or None when no split beats a leaf
-/// (or the items' centroids coincide).
-fn choose_split(items: &[BuildItem], bounds: &Aabb) -> Option<(usize, f32)> {
-    let centroids = items.iter().fold(Aabb::EMPTY, |b, it| b.grow(it.bounds.center()));
-    let mut best: Option<(f32, usize, f32)> = None;
+/// Items per parallel task when scanning the large nodes near the root (which alone hold
+/// most of the build's sequential work).
+const SCAN_CHUNK: usize = 16 * 1024;
+
+/// Bounds of the items' boxes and of their centroids, in parallel for large sets.
+fn bounds_and_centroids(items: &[BuildItem]) -> (Aabb, Aabb) {
+    let scan = |items: &[BuildItem]| {
+        items.iter().fold((Aabb::EMPTY, Aabb::EMPTY), |(b, c), it| (b.union(it.bounds), c.grow(it.bounds.center())))
+    };
+    if items.len() < 2 * SCAN_CHUNK {
+        return scan(items);
+    }
+    items
+        .par_chunks(SCAN_CHUNK)
+        .map(scan)
+        .reduce(|| (Aabb::EMPTY, Aabb::EMPTY), |a, b| (a.0.union(b.0), a.1.union(b.1)))
+}
+
+/// The bin of a centroid coordinate; the split and the partition both use it, so an item
+/// goes to the side its bin was counted on.
+#[inline]
+fn bin_of(c: f32, lo: f32, scale: f32) -> usize {
+    (((c - lo) * scale) as usize).min(BINS - 1)
+}
+
+/// Boxes and counts of the items falling in each bin, along each axis.
+#[derive(Clone, Copy)]
+struct Bins {
+    bounds: [[Aabb; BINS]; 3],
+    counts: [[u32; BINS]; 3],
+}
+
+impl Bins {
+    const EMPTY: Bins = Bins { bounds: [[Aabb::EMPTY; BINS]; 3], counts: [[0; BINS]; 3] };
+
+    fn merge(mut self, o: Bins) -> Bins {
+        for axis in 0..3 {
+            for b in 0..BINS {
+                self.bounds[axis][b] = self.bounds[axis][b].union(o.bounds[axis][b]);
+                self.counts[axis][b] += o.counts[axis][b];
+            }
+        }
+        self
+    }
+}
+
+/// The binned SAH split (axis, bin origin, bin scale, first bin of the right side), or None
+/// when no split beats a leaf (or the items' centroids coincide).
+fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<(usize, f32, f32, usize)> {
+    let extent = centroids.max - centroids.min;
+    let scale = Vec3A::select(extent.cmpgt(Vec3A::ZERO), BINS as f32 / extent, Vec3A::ZERO);
+    let fill = |items: &[BuildItem]| {
+        let mut bins = Bins::EMPTY;
+        for it in items {
+            let c = it.bounds.center();
+            for axis in 0..3 {
+                let b = bin_of(c[axis], centroids.min[axis], scale[axis]);
+                bins.bounds[axis][b] = bins.bounds[axis][b].union(it.bounds);
+                bins.counts[axis][b] += 1;
+            }
+        }
+        bins
+    };
+    let bins = if items.len() < 2 * SCAN_CHUNK {
+        fill(items)
+    } else {
+        items.par_chunks(SCAN_CHUNK).map(fill).reduce(|| Bins::EMPTY, Bins::merge)
+    };
+    let mut best: Option<(f32, usize, usize)> = None;
     for axis in 0..3 {
-        let (lo, hi) = (centroids.min[axis], centroids.max[axis]);
-        if hi <= lo {
+        if scale[axis] <= 0.0 {
             continue;
         }
-        let scale = BINS as f32 / (hi - lo);
-        let mut bin_bounds = [Aabb::EMPTY; BINS];
-        let mut bin_counts = [0usize; BINS];
-        for it in items {
-            let b = (((it.bounds.center()[axis] - lo) * scale) as usize).min(BINS - 1);
-            bin_bounds[b] = bin_bounds[b].union(it.bounds);
-            bin_counts[b] += 1;
-        }
+        let (bin_bounds, bin_counts) = (&bins.bounds[axis], &bins.counts[axis]);
         // Sweep from the right to get the cost of every right side, then from the left.
         let mut right_area = [0.0f32; BINS];
-        let mut right_count = [0usize; BINS];
+        let mut right_count = [0u32; BINS];
         let (mut acc, mut n) = (Aabb::EMPTY, 0);
         for i in (1..BINS).rev() {
             acc = acc.union(bin_bounds[i]);
@@ -292,14 +349,14 @@ fn choose_split(items: &[BuildItem], bounds: &Aabb) -> Option<(usize, f32)> {
             n += bin_counts[i];
             let cost = acc.half_area() * n as f32 + right_area[i + 1] * right_count[i + 1] as f32;
             if n > 0 && right_count[i + 1] > 0 && best.is_none_or(|(c, _, _)| cost < c) {
-                best = Some((cost, axis, lo + (i + 1) as f32 / scale));
+                best = Some((cost, axis, i + 1));
             }
         }
     }
-    let (cost, axis, position) = best?;
+    let (cost, axis, bin) = best?;
     let leaf_cost = items.len() as f32 * bounds.half_area();
     let split_cost = TRAVERSAL_COST * bounds.half_area() + cost;
-    (split_cost < leaf_cost || items.len() > MAX_LEAF).then_some((axis, position))
+    (split_cost < leaf_cost || items.len() > MAX_LEAF).then_some((axis, centroids.min[axis], scale[axis], bin))
 }
 
 /// Moves items for which `left` holds to the front; returns how many there are.

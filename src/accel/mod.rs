@@ -182,7 +182,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
         Shape::Mesh(m) => (0..m.indices.len() as u32)
             .map(|i| {
                 let [a, b, c] = m.corners(i);
-                BuildItem { bounds: Aabb::EMPTY.grow(a).grow(b).grow(c), id: i }
+                BuildItem { bounds: Aabb::new(a.min(b).min(c), a.max(b).max(c)), id: i }
             })
             .collect(),
         Shape::Strands(s) => s
@@ -190,7 +190,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
             .into_iter()
             .map(|i| {
                 let (min, max) = segment::bounds(s.points[i as usize], s.points[i as usize + 1]);
-                BuildItem { bounds: Aabb { min, max }, id: i }
+                BuildItem { bounds: Aabb::new(min, max), id: i }
             })
             .collect(),
     }

@@ -262,18 +262,25 @@ fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usi
         v[v.len() / 2]
     };
     let list = |v: &[f64]| v.iter().map(|x| format!("{x:.3}")).collect::<Vec<_>>().join(", ");
-    let mut builds = Vec::new();
+    let (mut builds, mut build_cpus) = (Vec::new(), Vec::new());
     let mut world = None;
     for _ in 0..reps.max(1) {
         let (w, times) = pool(0)?.install(|| prepare(&desc))?;
         builds.push(times.build.as_secs_f64() * 1e3);
+        build_cpus.push(times.build_cpu.as_secs_f64() * 1e3);
         world = Some(w);
     }
     let world = world.expect("at least one repetition");
     let m = Memory::of(&world.accel);
     let s = &world.settings;
     println!("scene: {} hair segments, {}x{} x {} spp camera rays", m.segments, s.width, s.height, s.spp);
-    println!("RESULT build_ms median {:.1} [{}] ({all} threads)", median(builds.clone()), list(&builds));
+    println!(
+        "RESULT build_ms median {:.1} [{}] | build cpu ms (all threads) median {:.1} [{}] ({all} threads)",
+        median(builds.clone()),
+        list(&builds),
+        median(build_cpus.clone()),
+        list(&build_cpus)
+    );
     let seg = m.segments.max(1) as f64;
     println!(
         "RESULT mem points {} B, bvh {} B, total {} B, bvh/segment {:.1} B, total/segment {:.1} B (meshes {} B, their bvh {} B)",

@@ -4,7 +4,7 @@ mod ray;
 pub mod rng;
 pub mod sampling;
 
-pub use glam::Vec3;
+pub use glam::{Vec3, Vec3A};
 pub use ray::{offset_origin, Ray, RayCone};
 
 /// Linear RGB colour (scene-referred, not clamped).
@@ -19,18 +19,25 @@ pub fn frame(n: Vec3) -> (Vec3, Vec3) {
     (Vec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), Vec3::new(b, sign + n.y * n.y * a, -n.y))
 }
 
-/// Axis-aligned bounding box.
+/// Axis-aligned bounding box. Corners are SIMD vectors (`Vec3A`): BVH builds union millions
+/// of boxes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb {
     /// Minimum corner.
-    pub min: Vec3,
+    pub min: Vec3A,
     /// Maximum corner.
-    pub max: Vec3,
+    pub max: Vec3A,
 }
 
 impl Aabb {
     /// The empty box: the identity of [`Aabb::union`].
-    pub const EMPTY: Aabb = Aabb { min: Vec3::splat(f32::INFINITY), max: Vec3::splat(f32::NEG_INFINITY) };
+    pub const EMPTY: Aabb = Aabb { min: Vec3A::splat(f32::INFINITY), max: Vec3A::splat(f32::NEG_INFINITY) };
+
+    /// The box between two corners.
+    #[inline]
+    pub fn new(min: Vec3, max: Vec3) -> Aabb {
+        Aabb { min: min.into(), max: max.into() }
+    }
 
     /// The smallest box holding both boxes.
     #[inline]
@@ -40,20 +47,20 @@ impl Aabb {
 
     /// The smallest box holding this box and a point.
     #[inline]
-    pub fn grow(self, p: Vec3) -> Aabb {
+    pub fn grow(self, p: Vec3A) -> Aabb {
         Aabb { min: self.min.min(p), max: self.max.max(p) }
     }
 
     /// Centre of the box.
     #[inline]
-    pub fn center(&self) -> Vec3 {
+    pub fn center(&self) -> Vec3A {
         0.5 * (self.min + self.max)
     }
 
     /// Half the surface area (the SAH only needs ratios); 0 for an empty box.
     #[inline]
     pub fn half_area(&self) -> f32 {
-        let d = (self.max - self.min).max(Vec3::ZERO);
+        let d = (self.max - self.min).max(Vec3A::ZERO);
         d.x * d.y + d.y * d.z + d.z * d.x
     }
 

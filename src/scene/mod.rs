@@ -146,6 +146,8 @@ pub struct PrepareTimes {
     pub load: Duration,
     /// Building the BVHs.
     pub build: Duration,
+    /// CPU time of building the BVHs, all threads together.
+    pub build_cpu: Duration,
 }
 
 impl Description {
@@ -223,11 +225,12 @@ pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError
     let start = Instant::now();
     let LoadedGeometry { shapes, materials } = load_geometry(desc)?;
     let load = start.elapsed();
-    let start = Instant::now();
+    let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     let accel = Accel::build(shapes);
     let build = start.elapsed();
+    let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = desc.lights.iter().map(Light::background).sum();
     let world =
         World { camera, settings: desc.settings.clone(), lights: desc.lights.clone(), materials, accel, background };
-    Ok((world, PrepareTimes { load, build }))
+    Ok((world, PrepareTimes { load, build, build_cpu }))
 }
