@@ -2,8 +2,12 @@
 //! [`Description`]. Unknown keys and wrong types are errors naming the file, line and key.
 
 use crate::geometry::TriangleMesh;
+use crate::hair::ramp::RampValue;
+use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings};
+use crate::scene::{
+    CameraDesc, Description, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, RenderSettings,
+};
 use crate::shading::{tube::Tube, Material};
 use glam::{Affine3A, Quat, Vec3};
 use serde::Deserialize;
@@ -52,6 +56,8 @@ struct SceneToml {
     mesh: Vec<MeshToml>,
     #[serde(default)]
     hair: Vec<HairToml>,
+    #[serde(default)]
+    hair_system: Vec<HairSystemToml>,
 }
 
 #[derive(Deserialize)]
@@ -269,6 +275,222 @@ fn default_true() -> bool {
     true
 }
 
+/// A `[[hair_system]]` entry: guides, material, seed and Maya's hair-system attributes
+/// (every attribute optional, defaulting to [`HairSystem::default`]).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct HairSystemToml {
+    file: Option<PathBuf>,
+    follicles: Option<FolliclesToml>,
+    material: Option<MaterialToml>,
+    colors: Option<String>,
+    #[serde(default)]
+    seed: u32,
+    transform: Option<TransformToml>,
+    hairs_per_clump: Option<u32>,
+    sub_segments: Option<u32>,
+    thinning: Option<f32>,
+    clump_width: Option<f32>,
+    clump_width_scale: Option<RampToml<f32>>,
+    clump_twist: Option<f32>,
+    clump_curl: Option<RampToml<f32>>,
+    clump_flatness: Option<RampToml<f32>>,
+    bend_follow: Option<f32>,
+    hair_width: Option<f32>,
+    hair_width_scale: Option<RampToml<f32>>,
+    displacement_scale: Option<RampToml<f32>>,
+    curl: Option<f32>,
+    curl_frequency: Option<f32>,
+    noise_method: Option<String>,
+    noise: Option<f32>,
+    noise_frequency: Option<f32>,
+    noise_frequency_u: Option<f32>,
+    noise_frequency_v: Option<f32>,
+    noise_frequency_w: Option<f32>,
+    hair_color: Option<V3>,
+    hair_color_scale: Option<RampToml<V3>>,
+    opacity: Option<f32>,
+    translucence: Option<f32>,
+    specular_color: Option<V3>,
+    specular_power: Option<f32>,
+    diffuse_rand: Option<f32>,
+    specular_rand: Option<f32>,
+    hue_rand: Option<f32>,
+    sat_rand: Option<f32>,
+    val_rand: Option<f32>,
+}
+
+/// `follicles = { mesh = 1, placement = "grid", u = 10, v = 10, ... }`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FolliclesToml {
+    /// 1-based index of a `[[mesh]]` entry.
+    mesh: usize,
+    #[serde(default = "default_placement")]
+    placement: String,
+    u: Option<u32>,
+    v: Option<u32>,
+    count: Option<u32>,
+    randomization: Option<f32>,
+    uv_range: Option<[[f32; 2]; 2]>,
+    points_per_hair: Option<u32>,
+    length: Option<f32>,
+    droop: Option<f32>,
+}
+fn default_placement() -> String {
+    "grid".into()
+}
+
+/// A ramp: one value everywhere, or keys.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum RampToml<T> {
+    Constant(T),
+    Keys(Vec<RampKeyToml<T>>),
+}
+
+/// A ramp key: `[position, value]` (linear), `[position, value, "interp"]` or
+/// `{ position, value, interp }`.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum RampKeyToml<T> {
+    Pair(f32, T),
+    Triple(f32, T, String),
+    Table { position: f32, value: T, interp: Option<String> },
+}
+
+/// Converts a ramp with `convert` for its values, naming the attribute in errors.
+fn ramp<U: Copy, T: RampValue>(name: &str, r: &RampToml<U>, convert: impl Fn(U) -> T) -> Result<Ramp<T>, String> {
+    let keys = match r {
+        RampToml::Constant(v) => return Ok(Ramp::constant(convert(*v))),
+        RampToml::Keys(keys) => keys,
+    };
+    let mut out = Vec::with_capacity(keys.len());
+    for (i, k) in keys.iter().enumerate() {
+        let (position, value, interp) = match k {
+            RampKeyToml::Pair(p, v) => (*p, *v, None),
+            RampKeyToml::Triple(p, v, s) => (*p, *v, Some(s)),
+            RampKeyToml::Table { position, value, interp } => (*position, *value, interp.as_ref()),
+        };
+        let interp = match interp {
+            None => Interp::Linear,
+            Some(how) => Interp::from_name(how).ok_or_else(|| {
+                format!("`{name}` key {}: unknown interpolation `{how}` (none, linear, smooth or spline)", i + 1)
+            })?,
+        };
+        out.push(RampKey { position, value: convert(value), interp });
+    }
+    Ramp::new(out).map_err(|e| format!("`{name}` {e}"))
+}
+
+fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Result<HairSystemEntry, String> {
+    let mut s = HairSystem::default();
+    macro_rules! set {
+        ($($field:ident),*) => { $( if let Some(v) = h.$field { s.$field = v; } )* };
+    }
+    set!(
+        hairs_per_clump,
+        sub_segments,
+        thinning,
+        clump_width,
+        clump_twist,
+        bend_follow,
+        hair_width,
+        curl,
+        curl_frequency,
+        noise,
+        noise_frequency,
+        noise_frequency_u,
+        noise_frequency_v,
+        noise_frequency_w,
+        opacity,
+        translucence,
+        specular_power,
+        diffuse_rand,
+        specular_rand,
+        hue_rand,
+        sat_rand,
+        val_rand
+    );
+    macro_rules! set_ramp {
+        ($($field:ident),*) => { $( if let Some(r) = &h.$field { s.$field = ramp(stringify!($field), r, |x| x)?; } )* };
+    }
+    set_ramp!(clump_width_scale, clump_curl, clump_flatness, hair_width_scale, displacement_scale);
+    if let Some(r) = &h.hair_color_scale {
+        s.hair_color_scale = ramp("hair_color_scale", r, Vec3::from)?;
+    }
+    if let Some(c) = h.hair_color {
+        s.hair_color = c.into();
+    }
+    if let Some(c) = h.specular_color {
+        s.specular_color = c.into();
+    }
+    if let Some(m) = &h.noise_method {
+        s.noise_method = match m.as_str() {
+            "random" => NoiseMethod::Random,
+            "surface_uv" => NoiseMethod::SurfaceUv,
+            "clump_uv" => NoiseMethod::ClumpUv,
+            _ => return Err(format!("unknown `noise_method` `{m}` (random, surface_uv or clump_uv)")),
+        };
+    }
+    s.validate()?;
+    let colors = match h.colors.as_deref() {
+        None | Some("system") => HairColors::System,
+        Some("guides") => HairColors::Guides,
+        Some("material") => HairColors::Material,
+        Some(c) => return Err(format!("unknown `colors` `{c}` (system, guides or material)")),
+    };
+    let guides = match (&h.file, &h.follicles) {
+        (Some(file), None) => GuideSource::File(base.join(file)),
+        (None, Some(f)) => {
+            if h.transform.is_some() {
+                return Err("`transform` applies to guides from a `file`; follicles follow their mesh".into());
+            }
+            GuideSource::Follicles { mesh: follicle_mesh(f, meshes)?, params: follicles(f)? }
+        }
+        _ => return Err("give exactly one of `file` and `follicles`".into()),
+    };
+    let material = match &h.material {
+        Some(m) => material(m)?,
+        None => Material::Tube(s.tube()),
+    };
+    let transform = match &h.transform {
+        Some(t) => transform(t)?,
+        None => Affine3A::IDENTITY,
+    };
+    Ok(HairSystemEntry { guides, system: s, material, colors, transform, seed: h.seed })
+}
+
+fn follicle_mesh(f: &FolliclesToml, meshes: usize) -> Result<usize, String> {
+    match f.mesh {
+        m if m >= 1 && m <= meshes => Ok(m - 1),
+        m => Err(format!("follicles `mesh = {m}` names no [[mesh]] entry (the scene has {meshes}, numbered from 1)")),
+    }
+}
+
+fn follicles(f: &FolliclesToml) -> Result<FollicleParams, String> {
+    let d = FollicleParams::default();
+    let placement = match (f.placement.as_str(), f.count) {
+        ("grid", None) => Placement::Grid { u: f.u.unwrap_or(10), v: f.v.unwrap_or(10) },
+        ("random", Some(count)) if f.u.is_none() && f.v.is_none() => Placement::Random { count },
+        ("grid", Some(_)) => return Err("follicles: `count` goes with `placement = \"random\"`".into()),
+        ("random", _) => return Err("follicles: `placement = \"random\"` takes `count` (not `u`, `v`)".into()),
+        (p, _) => return Err(format!("follicles: unknown `placement` `{p}` (grid or random)")),
+    };
+    let [uv_min, uv_max] = f.uv_range.unwrap_or([d.uv_min, d.uv_max]);
+    let params = FollicleParams {
+        placement,
+        randomization: f.randomization.unwrap_or(d.randomization),
+        uv_min,
+        uv_max,
+        points_per_hair: f.points_per_hair.unwrap_or(d.points_per_hair),
+        length: f.length.unwrap_or(d.length),
+        droop: f.droop.unwrap_or(d.droop),
+    };
+    params.validate().map_err(|e| format!("follicles: {e}"))?;
+    Ok(params)
+}
+
 /// Reads a scene file. Relative paths inside it are relative to its directory.
 pub fn read_scene(path: &Path) -> Result<Description, SceneFileError> {
     let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
@@ -327,12 +549,18 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
             file_colors: h.file_colors,
         });
     }
+    let mut hair_systems = Vec::new();
+    for (i, h) in scene.hair_system.iter().enumerate() {
+        let entry = hair_system(h, base, meshes.len()).map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
+        hair_systems.push(entry);
+    }
     let desc = Description {
         camera: CameraDesc { eye: c.eye.into(), target: c.target.into(), up: c.up.into(), vfov: c.vfov },
         settings,
         lights,
         meshes,
         hair,
+        hair_systems,
     };
     desc.validate().map_err(|e| invalid(e.to_string()))?;
     Ok(desc)
