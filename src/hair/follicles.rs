@@ -3,8 +3,8 @@
 //! surface's UV square, or at random points, with a number of points per hair and a length.
 //!
 //! Guides leave along the surface normal. Maya then gives them their rest shape by
-//! simulation; tress has no dynamics, so `droop` bends them towards gravity (world −y)
-//! instead, and a guide never passes through the mesh it grows on: a step that would
+//! simulation; tress has no dynamics, so `droop` bends them towards a `gravity` direction
+//! (world −y by default; tilting it combs the hair) instead, and a guide never passes through the mesh it grows on: a step that would
 //! enter it slides along the surface (projected onto the tangent plane at the hit), which
 //! lays long hair over a scalp. Every random number comes from (seed, follicle index), so
 //! the guides do not depend on the thread count.
@@ -53,9 +53,11 @@ pub struct FollicleParams {
     pub points_per_hair: u32,
     /// Length of each guide.
     pub length: f32,
-    /// Bend towards gravity: each step turns the guide towards −y by `droop × π` radians
-    /// per guide length (0 = straight along the normal).
+    /// Bend towards gravity: each step turns the guide towards `gravity` by `droop × π`
+    /// radians per guide length (0 = straight along the normal).
     pub droop: f32,
+    /// Unit direction `droop` bends towards (world −y unless combed another way).
+    pub gravity: Vec3,
 }
 
 impl Default for FollicleParams {
@@ -68,6 +70,7 @@ impl Default for FollicleParams {
             points_per_hair: 10,
             length: 1.0,
             droop: 0.0,
+            gravity: Vec3::NEG_Y,
         }
     }
 }
@@ -100,6 +103,9 @@ impl FollicleParams {
         }
         if !(self.droop.is_finite() && (0.0..=100.0).contains(&self.droop)) {
             return Err(format!("`droop` = {} must be between 0 and 100", self.droop));
+        }
+        if !(self.gravity.is_finite() && (self.gravity.length() - 1.0).abs() < 1e-3) {
+            return Err(format!("`gravity` {} must be a finite non-zero direction", self.gravity));
         }
         let (a, b) = (self.uv_min, self.uv_max);
         if !(a.iter().chain(&b).all(|x| x.is_finite()) && a[0] < b[0] && a[1] < b[1]) {
@@ -216,7 +222,7 @@ fn grow(accel: &Accel, mesh: &TriangleMesh, f: &Follicle, params: &FollicleParam
     let n = params.points_per_hair as usize;
     let step = params.length / (n - 1) as f32;
     let turn = params.droop * PI * step / params.length;
-    let down = Vec3::NEG_Y;
+    let down = params.gravity;
     let mut points = Vec::with_capacity(n);
     let (mut p, mut d) = (f.position, f.normal);
     points.push(p);

@@ -336,6 +336,7 @@ struct FolliclesToml {
     points_per_hair: Option<u32>,
     length: Option<f32>,
     droop: Option<f32>,
+    gravity: Option<V3>,
 }
 fn default_placement() -> String {
     "grid".into()
@@ -486,6 +487,11 @@ fn follicles(f: &FolliclesToml) -> Result<FollicleParams, String> {
         points_per_hair: f.points_per_hair.unwrap_or(d.points_per_hair),
         length: f.length.unwrap_or(d.length),
         droop: f.droop.unwrap_or(d.droop),
+        gravity: match f.gravity {
+            // Normalised here; a zero or non-finite direction fails validation below.
+            Some(g) => Vec3::from(g).try_normalize().unwrap_or(Vec3::NAN),
+            None => d.gravity,
+        },
     };
     params.validate().map_err(|e| format!("follicles: {e}"))?;
     Ok(params)
@@ -795,6 +801,90 @@ material = { type = "tube", diffuse = [0.35, 0.2, 0.1], specular = [0.3, 0.3, 0.
         assert!(e.contains("radius"), "{e}");
         let e = parse_scene("[camera]\neye = [inf, 0, 0]\ntarget = [0, 0, 0]\n", Path::new("s.toml")).unwrap_err();
         assert!(e.to_string().contains("camera"), "{e}");
+    }
+
+    const HAIR_SYSTEM: &str = r#"
+[[mesh]]
+shape = { type = "sphere" }
+material = { type = "diffuse", color = [0.5, 0.5, 0.5] }
+[[hair_system]]
+follicles = { mesh = 1, placement = "grid", u = 12, v = 6, points_per_hair = 8, length = 1.5 }
+hairs_per_clump = 20
+clump_width_scale = [[0.0, 1.0, "linear"], [1.0, 0.2]]
+hair_width_scale = [{ position = 0.8, value = 1.0, interp = "smooth" }, { position = 1.0, value = 0.2 }]
+clump_curl = 0.6
+hair_color = [0.5, 0.3, 0.1]
+hair_color_scale = [[0.0, [0.5, 0.5, 0.5], "spline"], [1.0, [1.0, 1.0, 1.0], "spline"]]
+noise_method = "clump_uv"
+seed = 7
+"#;
+
+    #[test]
+    fn reads_a_hair_system_with_follicles_and_ramps() {
+        let d = parse(HAIR_SYSTEM).unwrap();
+        let h = &d.hair_systems[0];
+        let GuideSource::Follicles { mesh, params } = &h.guides else { panic!("{:?}", h.guides) };
+        assert_eq!((*mesh, params.placement, params.points_per_hair), (0, Placement::Grid { u: 12, v: 6 }, 8));
+        assert_eq!((params.length, h.seed, h.system.hairs_per_clump), (1.5, 7, 20));
+        assert_eq!(h.system.clump_width, HairSystem::default().clump_width);
+        assert!((h.system.clump_width_scale.eval(0.5) - 0.6).abs() < 1e-6);
+        assert_eq!(h.system.hair_width_scale.keys()[0].interp, Interp::Smooth);
+        assert_eq!(h.system.hair_width_scale.keys()[1].interp, Interp::Linear);
+        assert_eq!(h.system.clump_curl.eval(0.3), 0.6);
+        assert_eq!(h.system.hair_color_scale.eval(1.0), Vec3::ONE);
+        assert_eq!(h.system.noise_method, NoiseMethod::ClumpUv);
+        // No material given: tube shading from the hair-system attributes.
+        assert_eq!(h.material, Material::Tube(h.system.tube()));
+        let d = parse(&format!("{HAIR_SYSTEM}[[hair_system]]\nfile = \"g.hair\"\nfollicles = {{ mesh = 1 }}\n"));
+        assert!(d.unwrap_err().to_string().contains("hair_system 2: give exactly one"));
+        let d =
+            parse("[[hair_system]]\nfile = \"g.hair\"\ncolors = \"guides\"\ntransform = { scale = 2.0 }\n").unwrap();
+        assert_eq!(d.hair_systems[0].guides, GuideSource::File(PathBuf::from("dir/g.hair")));
+        assert_eq!(d.hair_systems[0].colors, HairColors::Guides);
+    }
+
+    #[test]
+    fn bad_hair_system_values_name_the_entry_and_attribute() {
+        for (bad, words) in [
+            ("thinning = nan", &["hair_system 1", "thinning"][..]),
+            ("clump_width = -1.0", &["hair_system 1", "clump_width"]),
+            ("hairs_per_clump = 0", &["hair_system 1", "hairs_per_clump"]),
+            ("clump_flatness = [[0.0, 0.0], [1.5, 1.0]]", &["clump_flatness", "key 2", "position"]),
+            ("clump_curl = [[0.0, 2.0]]", &["clump_curl", "key 1"]),
+            ("hair_width_scale = [[0.0, 1.0, \"cubic\"]]", &["hair_width_scale", "cubic"]),
+            ("hair_color = [0.1, inf, 0.1]", &["hair_color"]),
+            ("noise_method = \"perlin\"", &["noise_method", "perlin"]),
+            ("colors = \"rainbow\"", &["colors", "rainbow"]),
+            ("transform = { scale = 2.0 }", &["transform"]),
+            ("hairz = 1", &["hairz"]),
+        ] {
+            let minimal = &HAIR_SYSTEM[..HAIR_SYSTEM.find("hairs_per_clump").unwrap()];
+            let e = parse(&format!("{minimal}{bad}\n")).unwrap_err().to_string();
+            assert!(e.contains("dir/test.toml"), "{e}");
+            for w in words {
+                assert!(e.contains(w), "`{bad}`: {e}");
+            }
+        }
+        for (follicles, words) in [
+            ("{ mesh = 2 }", &["mesh = 2", "names no"][..]),
+            ("{ mesh = 1, placement = \"random\" }", &["count"]),
+            ("{ mesh = 1, placement = \"grid\", count = 4 }", &["count"]),
+            ("{ mesh = 1, placement = \"spiral\" }", &["spiral"]),
+            ("{ mesh = 1, length = nan }", &["follicles", "length"]),
+            ("{ mesh = 1, u = 0 }", &["follicles", "count"]),
+            ("{ mesh = 1, uv_range = [[0.5, 0.0], [0.2, 1.0]] }", &["uv_range"]),
+            ("{ mesh = 1, gravity = [0.0, 0.0, 0.0] }", &["follicles", "gravity"]),
+        ] {
+            let text = HAIR_SYSTEM.replace(
+                "{ mesh = 1, placement = \"grid\", u = 12, v = 6, points_per_hair = 8, length = 1.5 }",
+                follicles,
+            );
+            let e = parse(&text).unwrap_err().to_string();
+            assert!(e.contains("hair_system 1"), "{e}");
+            for w in words {
+                assert!(e.contains(w), "`{follicles}`: {e}");
+            }
+        }
     }
 
     #[test]
