@@ -70,3 +70,47 @@ fn hair_pixels_carry_per_strand_aovs() {
         assert_eq!((p.strand_along, p.clump_id, p.strand_random, p.root_uv), (-1.0, -1.0, -1.0, [-1.0, -1.0]));
     }
 }
+
+#[test]
+fn guides_from_a_hair_file_with_their_colours_and_a_transform() {
+    use glam::Vec3;
+    use tress::accel::Shape;
+    use tress::geometry::StrandSet;
+    let dir = tempfile::tempdir().unwrap();
+    let mut guides = StrandSet::new();
+    guides.push_strand((0..5).map(|k| (Vec3::new(0.0, k as f32 * 0.25, 0.0), 0.01)));
+    guides.push_strand((0..5).map(|k| (Vec3::new(1.0, k as f32 * 0.25, 0.0), 0.01)));
+    guides.colors = Some((0..10).map(|k| if k < 5 { [1.0, 0.0, 0.0] } else { [0.0, 0.0, 1.0] }).collect());
+    tress::io::hair::write_hair(&dir.path().join("guides.hair"), &guides).unwrap();
+    let text = r#"
+[camera]
+eye = [0.0, 0.0, 5.0]
+target = [0.0, 0.0, 0.0]
+[[hair_system]]
+file = "guides.hair"
+colors = "guides"
+transform = { scale = 2.0, translate = [0.0, 1.0, 0.0] }
+hairs_per_clump = 7
+clump_width = 0.0
+hair_width = 0.02
+diffuse_rand = 0.0
+"#;
+    let desc = parse_scene(text, &dir.path().join("scene.toml")).unwrap();
+    let geometry = tress::scene::load_geometry(&desc).unwrap();
+    let Shape::Strands(hair) = &geometry.shapes[0].0 else { panic!("not strands") };
+    assert_eq!(hair.strand_count(), 14);
+    // Transformed guides (scale 2, then up by 1); widths stay the system's, in world units.
+    let tip = hair.position(hair.offsets[8] - 1);
+    assert!((tip - Vec3::new(2.0, 3.0, 0.0)).length() < 1e-5, "{tip}");
+    assert!(hair.points.iter().all(|p| (p[3] - 0.01).abs() < 1e-7));
+    let colors = hair.colors.as_ref().unwrap();
+    assert_eq!(colors[0], [1.0, 0.0, 0.0]);
+    assert_eq!(*colors.last().unwrap(), [0.0, 0.0, 1.0]);
+    // The root UV of guides without a surface is unknown.
+    assert_eq!(hair.strand_info.as_ref().unwrap().root_uv[0], [-1.0, -1.0]);
+
+    // A missing guide file: an error naming it.
+    let desc = parse_scene(&text.replace("guides.hair", "missing.hair"), &dir.path().join("scene.toml")).unwrap();
+    let e = tress::scene::load_geometry(&desc).err().unwrap().to_string();
+    assert!(e.contains("missing.hair"), "{e}");
+}

@@ -64,8 +64,8 @@ pub struct HairSystem {
     pub noise_method: NoiseMethod,
     /// `noise` (`.noi`, 0): amplitude of the Perlin noise displacement, in hair widths.
     pub noise: f32,
-    /// `noiseFrequency` (`.nof`, 0.4): noise features along a hair, in tens per hair length
-    /// (0.4: four), and across the surface's UV square or a clump's width.
+    /// `noiseFrequency` (`.nof`, 0.4): 10 × this noise features along a hair (0.4: four),
+    /// and as many across the surface's UV square or a clump's width.
     pub noise_frequency: f32,
     /// `noiseFrequencyU` (`.nfu`, 1): factor on the frequency along U (smooth methods).
     pub noise_frequency_u: f32,
