@@ -256,5 +256,6 @@ pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
         lights,
         meshes,
         hair,
+        hair_systems: Vec::new(),
     })
 }

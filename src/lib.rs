@@ -13,6 +13,7 @@ pub mod camera;
 pub mod demo;
 pub mod film;
 pub mod geometry;
+pub mod hair;
 pub mod io;
 pub mod light;
 pub mod math;

@@ -22,6 +22,14 @@ pub struct Pixel {
     pub object_id: f32,
     /// Strand index at that hit when it is hair, -1 otherwise.
     pub strand_id: f32,
+    /// Position along that strand, 0 at the root and 1 at the tip; -1 when not hair.
+    pub strand_along: f32,
+    /// Root UV of that strand on the surface it grows from; -1 when unknown or not hair.
+    pub root_uv: [f32; 2],
+    /// Clump (guide) index of that strand; -1 when unknown or not hair.
+    pub clump_id: f32,
+    /// The strand's stable random value in [0, 1); -1 when not hair.
+    pub strand_random: f32,
 }
 
 /// An image being rendered: `width * height` pixels, row by row from the top.
@@ -38,7 +46,16 @@ pub struct Film {
 impl Film {
     /// A black film.
     pub fn new(width: u32, height: u32) -> Film {
-        let empty = Pixel { depth: f32::INFINITY, object_id: -1.0, strand_id: -1.0, ..Default::default() };
+        let empty = Pixel {
+            depth: f32::INFINITY,
+            object_id: -1.0,
+            strand_id: -1.0,
+            strand_along: -1.0,
+            root_uv: [-1.0, -1.0],
+            clump_id: -1.0,
+            strand_random: -1.0,
+            ..Default::default()
+        };
         Film { width, height, pixels: vec![empty; width as usize * height as usize] }
     }
 }

@@ -10,6 +10,9 @@
 //!   * `Z`: depth along the camera ray, `+inf` where no sample hit anything,
 //!   * `N.X`, `N.Y`, `N.Z`: shading normal (surfaces) or tangent (hair), zero where nothing was hit,
 //!   * `objectId`, `strandId`: object and strand indices, `-1` where not applicable,
+//!   * `strandAlong`, `rootUV.U`, `rootUV.V`, `clumpId`, `strandRandom`: on hair, the position
+//!     along the strand (0 root, 1 tip), its root's surface UV, its clump (guide) index and its
+//!     stable random value in [0, 1); `-1` where not applicable or unknown,
 //!   * `coverage`: coverage again, as a single channel for tools that do not treat `A` as data.
 //!
 //! Infinite depth is written as `+inf`: EXR stores IEEE 754 floats bit for bit, so it round-trips
@@ -316,6 +319,11 @@ fn exr_image(
         channel("N.Z", |p| p.normal.z),
         channel("objectId", |p| p.object_id),
         channel("strandId", |p| p.strand_id),
+        channel("strandAlong", |p| p.strand_along),
+        channel("rootUV.U", |p| p.root_uv[0]),
+        channel("rootUV.V", |p| p.root_uv[1]),
+        channel("clumpId", |p| p.clump_id),
+        channel("strandRandom", |p| p.strand_random),
         channel("coverage", |p| p.coverage),
     ]);
     let size = (film.width as usize, film.height as usize);
@@ -344,6 +352,10 @@ mod tests {
                     normal: Vec3::new(0.6, -0.8, i as f32 * 1e-3),
                     object_id: (i % 4) as f32,
                     strand_id: if i % 2 == 0 { 1000.0 + i as f32 } else { -1.0 },
+                    strand_along: i as f32 / 16.0,
+                    root_uv: [i as f32 * 0.05, 1.0 - i as f32 * 0.05],
+                    clump_id: (i / 2) as f32,
+                    strand_random: 0.125 * (i % 8) as f32,
                 };
             }
         }
@@ -444,8 +456,13 @@ mod tests {
         expect("N.Z", |p| p.normal.z);
         expect("objectId", |p| p.object_id);
         expect("strandId", |p| p.strand_id);
+        expect("strandAlong", |p| p.strand_along);
+        expect("rootUV.U", |p| p.root_uv[0]);
+        expect("rootUV.V", |p| p.root_uv[1]);
+        expect("clumpId", |p| p.clump_id);
+        expect("strandRandom", |p| p.strand_random);
         expect("coverage", |p| p.coverage);
-        assert_eq!(layer.channel_data.list.len(), 11);
+        assert_eq!(layer.channel_data.list.len(), 16);
         assert_eq!(channel("Z")[0], f32::INFINITY);
 
         let attribute = |name: &str| match layer.attributes.other.get(&Text::from(name)) {

@@ -6,4 +6,4 @@ pub mod strands;
 pub mod triangle;
 
 pub use mesh::TriangleMesh;
-pub use strands::{StrandInfo, StrandSet};
+pub use strands::{StrandInfo, StrandPoint, StrandSet};

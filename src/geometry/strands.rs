@@ -33,6 +33,22 @@ pub struct StrandInfo {
     pub clump: Vec<u32>,
 }
 
+/// What is known about a point on a strand, for shading and the AOVs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StrandPoint {
+    /// Strand index in its set.
+    pub strand: u32,
+    /// Position along the strand: 0 at the root, 1 at the tip, by point index (arc length
+    /// for evenly spaced points).
+    pub along: f32,
+    /// Root UV on the surface the strand grows from, when its generator knows it.
+    pub root_uv: Option<[f32; 2]>,
+    /// Clump (guide) index, when its generator knows it.
+    pub clump: Option<u32>,
+    /// A stable random value in [0, 1) per strand: `unit_float(hash_u32(strand))`.
+    pub random: f32,
+}
+
 impl StrandSet {
     /// An empty set.
     pub fn new() -> StrandSet {
@@ -97,6 +113,21 @@ impl StrandSet {
         let t0 = self.point_tangent(i);
         let t1 = self.point_tangent(i + 1);
         t0.lerp(t1, s).try_normalize().unwrap_or(t0)
+    }
+
+    /// What is known at parameter `s` along the segment starting at point `i`.
+    pub fn strand_point(&self, i: u32, s: f32) -> StrandPoint {
+        let strand = self.strand_of(i);
+        let (first, end) = (self.offsets[strand as usize], self.offsets[strand as usize + 1]);
+        let segments = end.saturating_sub(first + 1).max(1) as f32;
+        let info = self.strand_info.as_ref();
+        StrandPoint {
+            strand,
+            along: ((i - first) as f32 + s) / segments,
+            root_uv: info.and_then(|n| n.root_uv.get(strand as usize).copied()),
+            clump: info.and_then(|n| n.clump.get(strand as usize).copied()),
+            random: crate::math::rng::unit_float(crate::math::rng::hash_u32(strand)),
+        }
     }
 
     /// Colour at parameter `s` along segment `i`, if the set has colours.
@@ -198,6 +229,18 @@ mod tests {
         // Interpolated along a segment, normalised.
         let mid = s.tangent(0, 0.5);
         assert!((mid.length() - 1.0).abs() < 1e-6 && mid.x > mid.y && mid.y > 0.0);
+    }
+
+    #[test]
+    fn strand_points_know_position_along_and_generator_data() {
+        let mut s = set(3, None);
+        let p = s.strand_point(4, 0.5);
+        assert_eq!((p.strand, p.along, p.root_uv, p.clump), (1, 0.75, None, None));
+        assert_eq!(p.random, crate::math::rng::unit_float(crate::math::rng::hash_u32(1)));
+        assert!((0.0..1.0).contains(&p.random) && p.random != s.strand_point(0, 0.0).random);
+        s.strand_info = Some(StrandInfo { root_uv: vec![[0.1, 0.2], [0.3, 0.4], [0.5, 0.6]], clump: vec![0, 0, 1] });
+        let p = s.strand_point(6, 0.0);
+        assert_eq!((p.strand, p.along, p.root_uv, p.clump), (2, 0.0, Some([0.5, 0.6]), Some(1)));
     }
 
     #[test]

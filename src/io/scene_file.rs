@@ -2,8 +2,12 @@
 //! [`Description`]. Unknown keys and wrong types are errors naming the file, line and key.
 
 use crate::geometry::TriangleMesh;
+use crate::hair::ramp::RampValue;
+use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings};
+use crate::scene::{
+    CameraDesc, Description, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, RenderSettings,
+};
 use crate::shading::{tube::Tube, Material};
 use glam::{Affine3A, Quat, Vec3};
 use serde::Deserialize;
@@ -52,6 +56,8 @@ struct SceneToml {
     mesh: Vec<MeshToml>,
     #[serde(default)]
     hair: Vec<HairToml>,
+    #[serde(default)]
+    hair_system: Vec<HairSystemToml>,
 }
 
 #[derive(Deserialize)]
@@ -269,6 +275,228 @@ fn default_true() -> bool {
     true
 }
 
+/// A `[[hair_system]]` entry: guides, material, seed and Maya's hair-system attributes
+/// (every attribute optional, defaulting to [`HairSystem::default`]).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct HairSystemToml {
+    file: Option<PathBuf>,
+    follicles: Option<FolliclesToml>,
+    material: Option<MaterialToml>,
+    colors: Option<String>,
+    #[serde(default)]
+    seed: u32,
+    transform: Option<TransformToml>,
+    hairs_per_clump: Option<u32>,
+    sub_segments: Option<u32>,
+    thinning: Option<f32>,
+    clump_width: Option<f32>,
+    clump_width_scale: Option<RampToml<f32>>,
+    clump_twist: Option<f32>,
+    clump_curl: Option<RampToml<f32>>,
+    clump_flatness: Option<RampToml<f32>>,
+    bend_follow: Option<f32>,
+    hair_width: Option<f32>,
+    hair_width_scale: Option<RampToml<f32>>,
+    displacement_scale: Option<RampToml<f32>>,
+    curl: Option<f32>,
+    curl_frequency: Option<f32>,
+    noise_method: Option<String>,
+    noise: Option<f32>,
+    noise_frequency: Option<f32>,
+    noise_frequency_u: Option<f32>,
+    noise_frequency_v: Option<f32>,
+    noise_frequency_w: Option<f32>,
+    hair_color: Option<V3>,
+    hair_color_scale: Option<RampToml<V3>>,
+    opacity: Option<f32>,
+    translucence: Option<f32>,
+    specular_color: Option<V3>,
+    specular_power: Option<f32>,
+    diffuse_rand: Option<f32>,
+    specular_rand: Option<f32>,
+    hue_rand: Option<f32>,
+    sat_rand: Option<f32>,
+    val_rand: Option<f32>,
+}
+
+/// `follicles = { mesh = 1, placement = "grid", u = 10, v = 10, ... }`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FolliclesToml {
+    /// 1-based index of a `[[mesh]]` entry.
+    mesh: usize,
+    #[serde(default = "default_placement")]
+    placement: String,
+    u: Option<u32>,
+    v: Option<u32>,
+    count: Option<u32>,
+    randomization: Option<f32>,
+    uv_range: Option<[[f32; 2]; 2]>,
+    points_per_hair: Option<u32>,
+    length: Option<f32>,
+    droop: Option<f32>,
+    gravity: Option<V3>,
+}
+fn default_placement() -> String {
+    "grid".into()
+}
+
+/// A ramp: one value everywhere, or keys.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum RampToml<T> {
+    Constant(T),
+    Keys(Vec<RampKeyToml<T>>),
+}
+
+/// A ramp key: `[position, value]` (linear), `[position, value, "interp"]` or
+/// `{ position, value, interp }`.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum RampKeyToml<T> {
+    Pair(f32, T),
+    Triple(f32, T, String),
+    Table { position: f32, value: T, interp: Option<String> },
+}
+
+/// Converts a ramp with `convert` for its values, naming the attribute in errors.
+fn ramp<U: Copy, T: RampValue>(name: &str, r: &RampToml<U>, convert: impl Fn(U) -> T) -> Result<Ramp<T>, String> {
+    let keys = match r {
+        RampToml::Constant(v) => return Ok(Ramp::constant(convert(*v))),
+        RampToml::Keys(keys) => keys,
+    };
+    let mut out = Vec::with_capacity(keys.len());
+    for (i, k) in keys.iter().enumerate() {
+        let (position, value, interp) = match k {
+            RampKeyToml::Pair(p, v) => (*p, *v, None),
+            RampKeyToml::Triple(p, v, s) => (*p, *v, Some(s)),
+            RampKeyToml::Table { position, value, interp } => (*position, *value, interp.as_ref()),
+        };
+        let interp = match interp {
+            None => Interp::Linear,
+            Some(how) => Interp::from_name(how).ok_or_else(|| {
+                format!("`{name}` key {}: unknown interpolation `{how}` (none, linear, smooth or spline)", i + 1)
+            })?,
+        };
+        out.push(RampKey { position, value: convert(value), interp });
+    }
+    Ramp::new(out).map_err(|e| format!("`{name}` {e}"))
+}
+
+fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Result<HairSystemEntry, String> {
+    let mut s = HairSystem::default();
+    macro_rules! set {
+        ($($field:ident),*) => { $( if let Some(v) = h.$field { s.$field = v; } )* };
+    }
+    set!(
+        hairs_per_clump,
+        sub_segments,
+        thinning,
+        clump_width,
+        clump_twist,
+        bend_follow,
+        hair_width,
+        curl,
+        curl_frequency,
+        noise,
+        noise_frequency,
+        noise_frequency_u,
+        noise_frequency_v,
+        noise_frequency_w,
+        opacity,
+        translucence,
+        specular_power,
+        diffuse_rand,
+        specular_rand,
+        hue_rand,
+        sat_rand,
+        val_rand
+    );
+    macro_rules! set_ramp {
+        ($($field:ident),*) => { $( if let Some(r) = &h.$field { s.$field = ramp(stringify!($field), r, |x| x)?; } )* };
+    }
+    set_ramp!(clump_width_scale, clump_curl, clump_flatness, hair_width_scale, displacement_scale);
+    if let Some(r) = &h.hair_color_scale {
+        s.hair_color_scale = ramp("hair_color_scale", r, Vec3::from)?;
+    }
+    if let Some(c) = h.hair_color {
+        s.hair_color = c.into();
+    }
+    if let Some(c) = h.specular_color {
+        s.specular_color = c.into();
+    }
+    if let Some(m) = &h.noise_method {
+        s.noise_method = match m.as_str() {
+            "random" => NoiseMethod::Random,
+            "surface_uv" => NoiseMethod::SurfaceUv,
+            "clump_uv" => NoiseMethod::ClumpUv,
+            _ => return Err(format!("unknown `noise_method` `{m}` (random, surface_uv or clump_uv)")),
+        };
+    }
+    s.validate()?;
+    let colors = match h.colors.as_deref() {
+        None | Some("system") => HairColors::System,
+        Some("guides") => HairColors::Guides,
+        Some("material") => HairColors::Material,
+        Some(c) => return Err(format!("unknown `colors` `{c}` (system, guides or material)")),
+    };
+    let guides = match (&h.file, &h.follicles) {
+        (Some(file), None) => GuideSource::File(base.join(file)),
+        (None, Some(f)) => {
+            if h.transform.is_some() {
+                return Err("`transform` applies to guides from a `file`; follicles follow their mesh".into());
+            }
+            GuideSource::Follicles { mesh: follicle_mesh(f, meshes)?, params: follicles(f)? }
+        }
+        _ => return Err("give exactly one of `file` and `follicles`".into()),
+    };
+    let material = match &h.material {
+        Some(m) => material(m)?,
+        None => Material::Tube(s.tube()),
+    };
+    let transform = match &h.transform {
+        Some(t) => transform(t)?,
+        None => Affine3A::IDENTITY,
+    };
+    Ok(HairSystemEntry { guides, system: s, material, colors, transform, seed: h.seed })
+}
+
+fn follicle_mesh(f: &FolliclesToml, meshes: usize) -> Result<usize, String> {
+    match f.mesh {
+        m if m >= 1 && m <= meshes => Ok(m - 1),
+        m => Err(format!("follicles `mesh = {m}` names no [[mesh]] entry (the scene has {meshes}, numbered from 1)")),
+    }
+}
+
+fn follicles(f: &FolliclesToml) -> Result<FollicleParams, String> {
+    let d = FollicleParams::default();
+    let placement = match (f.placement.as_str(), f.count) {
+        ("grid", None) => Placement::Grid { u: f.u.unwrap_or(10), v: f.v.unwrap_or(10) },
+        ("random", Some(count)) if f.u.is_none() && f.v.is_none() => Placement::Random { count },
+        ("grid", Some(_)) => return Err("follicles: `count` goes with `placement = \"random\"`".into()),
+        ("random", _) => return Err("follicles: `placement = \"random\"` takes `count` (not `u`, `v`)".into()),
+        (p, _) => return Err(format!("follicles: unknown `placement` `{p}` (grid or random)")),
+    };
+    let [uv_min, uv_max] = f.uv_range.unwrap_or([d.uv_min, d.uv_max]);
+    let params = FollicleParams {
+        placement,
+        randomization: f.randomization.unwrap_or(d.randomization),
+        uv_min,
+        uv_max,
+        points_per_hair: f.points_per_hair.unwrap_or(d.points_per_hair),
+        length: f.length.unwrap_or(d.length),
+        droop: f.droop.unwrap_or(d.droop),
+        gravity: match f.gravity {
+            // Normalised here; a zero or non-finite direction fails validation below.
+            Some(g) => Vec3::from(g).try_normalize().unwrap_or(Vec3::NAN),
+            None => d.gravity,
+        },
+    };
+    params.validate().map_err(|e| format!("follicles: {e}"))?;
+    Ok(params)
+}
+
 /// Reads a scene file. Relative paths inside it are relative to its directory.
 pub fn read_scene(path: &Path) -> Result<Description, SceneFileError> {
     let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
@@ -327,12 +555,18 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
             file_colors: h.file_colors,
         });
     }
+    let mut hair_systems = Vec::new();
+    for (i, h) in scene.hair_system.iter().enumerate() {
+        let entry = hair_system(h, base, meshes.len()).map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
+        hair_systems.push(entry);
+    }
     let desc = Description {
         camera: CameraDesc { eye: c.eye.into(), target: c.target.into(), up: c.up.into(), vfov: c.vfov },
         settings,
         lights,
         meshes,
         hair,
+        hair_systems,
     };
     desc.validate().map_err(|e| invalid(e.to_string()))?;
     Ok(desc)
@@ -567,6 +801,90 @@ material = { type = "tube", diffuse = [0.35, 0.2, 0.1], specular = [0.3, 0.3, 0.
         assert!(e.contains("radius"), "{e}");
         let e = parse_scene("[camera]\neye = [inf, 0, 0]\ntarget = [0, 0, 0]\n", Path::new("s.toml")).unwrap_err();
         assert!(e.to_string().contains("camera"), "{e}");
+    }
+
+    const HAIR_SYSTEM: &str = r#"
+[[mesh]]
+shape = { type = "sphere" }
+material = { type = "diffuse", color = [0.5, 0.5, 0.5] }
+[[hair_system]]
+follicles = { mesh = 1, placement = "grid", u = 12, v = 6, points_per_hair = 8, length = 1.5 }
+hairs_per_clump = 20
+clump_width_scale = [[0.0, 1.0, "linear"], [1.0, 0.2]]
+hair_width_scale = [{ position = 0.8, value = 1.0, interp = "smooth" }, { position = 1.0, value = 0.2 }]
+clump_curl = 0.6
+hair_color = [0.5, 0.3, 0.1]
+hair_color_scale = [[0.0, [0.5, 0.5, 0.5], "spline"], [1.0, [1.0, 1.0, 1.0], "spline"]]
+noise_method = "clump_uv"
+seed = 7
+"#;
+
+    #[test]
+    fn reads_a_hair_system_with_follicles_and_ramps() {
+        let d = parse(HAIR_SYSTEM).unwrap();
+        let h = &d.hair_systems[0];
+        let GuideSource::Follicles { mesh, params } = &h.guides else { panic!("{:?}", h.guides) };
+        assert_eq!((*mesh, params.placement, params.points_per_hair), (0, Placement::Grid { u: 12, v: 6 }, 8));
+        assert_eq!((params.length, h.seed, h.system.hairs_per_clump), (1.5, 7, 20));
+        assert_eq!(h.system.clump_width, HairSystem::default().clump_width);
+        assert!((h.system.clump_width_scale.eval(0.5) - 0.6).abs() < 1e-6);
+        assert_eq!(h.system.hair_width_scale.keys()[0].interp, Interp::Smooth);
+        assert_eq!(h.system.hair_width_scale.keys()[1].interp, Interp::Linear);
+        assert_eq!(h.system.clump_curl.eval(0.3), 0.6);
+        assert_eq!(h.system.hair_color_scale.eval(1.0), Vec3::ONE);
+        assert_eq!(h.system.noise_method, NoiseMethod::ClumpUv);
+        // No material given: tube shading from the hair-system attributes.
+        assert_eq!(h.material, Material::Tube(h.system.tube()));
+        let d = parse(&format!("{HAIR_SYSTEM}[[hair_system]]\nfile = \"g.hair\"\nfollicles = {{ mesh = 1 }}\n"));
+        assert!(d.unwrap_err().to_string().contains("hair_system 2: give exactly one"));
+        let d =
+            parse("[[hair_system]]\nfile = \"g.hair\"\ncolors = \"guides\"\ntransform = { scale = 2.0 }\n").unwrap();
+        assert_eq!(d.hair_systems[0].guides, GuideSource::File(PathBuf::from("dir/g.hair")));
+        assert_eq!(d.hair_systems[0].colors, HairColors::Guides);
+    }
+
+    #[test]
+    fn bad_hair_system_values_name_the_entry_and_attribute() {
+        for (bad, words) in [
+            ("thinning = nan", &["hair_system 1", "thinning"][..]),
+            ("clump_width = -1.0", &["hair_system 1", "clump_width"]),
+            ("hairs_per_clump = 0", &["hair_system 1", "hairs_per_clump"]),
+            ("clump_flatness = [[0.0, 0.0], [1.5, 1.0]]", &["clump_flatness", "key 2", "position"]),
+            ("clump_curl = [[0.0, 2.0]]", &["clump_curl", "key 1"]),
+            ("hair_width_scale = [[0.0, 1.0, \"cubic\"]]", &["hair_width_scale", "cubic"]),
+            ("hair_color = [0.1, inf, 0.1]", &["hair_color"]),
+            ("noise_method = \"perlin\"", &["noise_method", "perlin"]),
+            ("colors = \"rainbow\"", &["colors", "rainbow"]),
+            ("transform = { scale = 2.0 }", &["transform"]),
+            ("hairz = 1", &["hairz"]),
+        ] {
+            let minimal = &HAIR_SYSTEM[..HAIR_SYSTEM.find("hairs_per_clump").unwrap()];
+            let e = parse(&format!("{minimal}{bad}\n")).unwrap_err().to_string();
+            assert!(e.contains("dir/test.toml"), "{e}");
+            for w in words {
+                assert!(e.contains(w), "`{bad}`: {e}");
+            }
+        }
+        for (follicles, words) in [
+            ("{ mesh = 2 }", &["mesh = 2", "names no"][..]),
+            ("{ mesh = 1, placement = \"random\" }", &["count"]),
+            ("{ mesh = 1, placement = \"grid\", count = 4 }", &["count"]),
+            ("{ mesh = 1, placement = \"spiral\" }", &["spiral"]),
+            ("{ mesh = 1, length = nan }", &["follicles", "length"]),
+            ("{ mesh = 1, u = 0 }", &["follicles", "count"]),
+            ("{ mesh = 1, uv_range = [[0.5, 0.0], [0.2, 1.0]] }", &["uv_range"]),
+            ("{ mesh = 1, gravity = [0.0, 0.0, 0.0] }", &["follicles", "gravity"]),
+        ] {
+            let text = HAIR_SYSTEM.replace(
+                "{ mesh = 1, placement = \"grid\", u = 12, v = 6, points_per_hair = 8, length = 1.5 }",
+                follicles,
+            );
+            let e = parse(&text).unwrap_err().to_string();
+            assert!(e.contains("hair_system 1"), "{e}");
+            for w in words {
+                assert!(e.contains(w), "`{follicles}`: {e}");
+            }
+        }
     }
 
     #[test]

@@ -18,6 +18,12 @@ pub fn hash_u32(mut x: u32) -> u32 {
     x
 }
 
+/// A hash mapped to [0, 1) (its top 24 bits, exact in an f32).
+#[inline]
+pub fn unit_float(hash: u32) -> f32 {
+    (hash >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
 /// Combines several values into one seed.
 #[inline]
 pub fn hash_combine(values: &[u32]) -> u32 {

@@ -2,6 +2,7 @@
 //! an ambient term, and mirror reflection and refraction up to the maximum depth.
 
 use crate::accel::{Hit, HitKind, Shape, Skip};
+use crate::geometry::StrandPoint;
 use crate::math::rng::PixelSampler;
 use crate::math::{offset_origin, Color, Ray};
 use crate::scene::World;
@@ -26,6 +27,8 @@ pub struct FirstHit {
     pub object: u32,
     /// Strand index when the object is hair.
     pub strand: Option<u32>,
+    /// Per-strand data at the hit when the object is hair.
+    pub strand_point: Option<StrandPoint>,
 }
 
 /// Where a shadow or secondary ray starts and which primitives it must ignore.
@@ -75,6 +78,10 @@ pub fn trace(
         strand: match &object.shape {
             Shape::Strands(s) => Some(s.strand_of(hit.prim)),
             Shape::Mesh(_) => None,
+        },
+        strand_point: match (&object.shape, hit.kind) {
+            (Shape::Strands(s), HitKind::Segment { s: along, .. }) => Some(s.strand_point(hit.prim, along)),
+            _ => None,
         },
     };
 

@@ -99,6 +99,12 @@ fn render_pixel(world: &World, x: u32, y: u32, counters: &mut Counters) -> Pixel
                 pixel.normal = f.normal;
                 pixel.object_id = f.object as f32;
                 pixel.strand_id = f.strand.map_or(-1.0, |s| s as f32);
+                if let Some(sp) = f.strand_point {
+                    pixel.strand_along = sp.along;
+                    pixel.root_uv = sp.root_uv.unwrap_or([-1.0, -1.0]);
+                    pixel.clump_id = sp.clump.map_or(-1.0, |c| c as f32);
+                    pixel.strand_random = sp.random;
+                }
             }
             hits += 1;
         }

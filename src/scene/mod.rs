@@ -5,6 +5,7 @@
 use crate::accel::{Accel, Shape};
 use crate::camera::{Camera, CameraError};
 use crate::geometry::{StrandSet, TriangleMesh};
+use crate::hair::{self, FollicleParams, Guides, HairColors, HairSystem};
 use crate::io::{self, LoadError};
 use crate::light::Light;
 use crate::math::Color;
@@ -93,6 +94,40 @@ pub struct HairEntry {
     pub file_colors: bool,
 }
 
+/// Where a hair system's guide curves come from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum GuideSource {
+    /// A Cem Yuksel `.hair` file: one guide per strand.
+    File(PathBuf),
+    /// Follicles grown on the description's mesh number `mesh` (0-based), in world space.
+    Follicles {
+        /// Index into [`Description::meshes`].
+        mesh: usize,
+        /// Placement, points per hair, length.
+        params: FollicleParams,
+    },
+    /// Guides already in memory.
+    Inline(Guides),
+}
+
+/// A Maya-style hair system in the scene: guides expanded into clumps of render hairs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HairSystemEntry {
+    /// The guides.
+    pub guides: GuideSource,
+    /// The hair-system attributes.
+    pub system: HairSystem,
+    /// The render hairs' material.
+    pub material: Material,
+    /// Where per-point colours come from.
+    pub colors: HairColors,
+    /// Object-to-world transform of file or inline guides (follicles are already in
+    /// world space), applied before expansion so widths are in world units.
+    pub transform: Affine3A,
+    /// Seed of follicle placement and of every per-hair random choice.
+    pub seed: u32,
+}
+
 /// Everything a scene says, before any file is read.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Description {
@@ -106,6 +141,8 @@ pub struct Description {
     pub meshes: Vec<MeshEntry>,
     /// Strand sets.
     pub hair: Vec<HairEntry>,
+    /// Hair systems.
+    pub hair_systems: Vec<HairSystemEntry>,
 }
 
 /// The prepared scene: geometry with its BVHs, materials, lights and camera.
@@ -174,6 +211,20 @@ impl Description {
                 )));
             }
         }
+        for (i, h) in self.hair_systems.iter().enumerate() {
+            let what = |e: String| PrepareError::Invalid(format!("hair_system {}: {e}", i + 1));
+            h.system.validate().map_err(what)?;
+            if let GuideSource::Follicles { mesh, params } = &h.guides {
+                params.validate().map_err(what)?;
+                if *mesh >= self.meshes.len() {
+                    return Err(what(format!(
+                        "follicles `mesh = {}` names no mesh (the scene has {})",
+                        mesh + 1,
+                        self.meshes.len()
+                    )));
+                }
+            }
+        }
         Ok(())
     }
 }
@@ -211,6 +262,29 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         if !h.file_colors {
             strands.colors = None;
         }
+        shapes.push((Shape::Strands(strands), materials.len() as u32));
+        materials.push(h.material.clone());
+    }
+    for (i, h) in desc.hair_systems.iter().enumerate() {
+        let what = |e: String| PrepareError::Invalid(format!("hair_system {}: {e}", i + 1));
+        let guides = match &h.guides {
+            GuideSource::File(path) => {
+                let mut curves = io::hair::read_hair(path)?;
+                curves.transform(&h.transform);
+                Guides::from_curves(curves)
+            }
+            GuideSource::Inline(guides) => {
+                let mut guides = guides.clone();
+                guides.curves.transform(&h.transform);
+                guides
+            }
+            GuideSource::Follicles { mesh, params } => match shapes.get(*mesh) {
+                // Meshes come first in `shapes`, in description order, already in world space.
+                Some((Shape::Mesh(m), _)) => hair::grow_guides(m, params, h.seed).map_err(what)?,
+                _ => return Err(what(format!("follicles `mesh = {}` names no mesh", mesh + 1))),
+            },
+        };
+        let strands = hair::expand(&h.system, &guides, h.colors, h.seed).map_err(what)?;
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
