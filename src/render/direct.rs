@@ -84,7 +84,7 @@ pub fn trace(
         if tube_hair && light.background() != Color::ZERO {
             continue; // the tube model's ambient term already stands for the environment
         }
-        let normal = if tube_hair { None } else { Some(sp.normal) };
+        let normal = if material.scatters_around_strand(sp) { None } else { Some(sp.normal) };
         let Some(ls) = light.sample(sp.p, normal, sampler.next_2d()) else { continue };
         let f = material.response(sp, wo, ls.dir);
         if f.max_element() <= 0.0 {

@@ -2,9 +2,11 @@
 //!
 //! Every material answers one question for direct lighting, [`Material::response`]: the
 //! radiance leaving towards `wo` per unit of light arriving from `wi` (a BRDF times the
-//! cosine for surfaces; the tube model for hair). Mirror and glass answer through
-//! [`Material::specular`] instead, which the integrator follows recursively.
+//! cosine for surfaces; the tube model or the physical hair BSDF times its cosine for
+//! hair). Mirror and glass answer through [`Material::specular`] instead, which the
+//! integrator follows recursively.
 
+pub mod hair_bsdf;
 pub mod surface;
 pub mod tube;
 
@@ -42,6 +44,8 @@ pub enum Material {
     },
     /// The thesis' tube shading for hair (section 2.1.8, eq. 2.1 to 2.3).
     Tube(tube::Tube),
+    /// The physically based hair BSDF of Chiang et al. 2016 ([`hair_bsdf`]).
+    Physical(hair_bsdf::PhysicalHair),
 }
 
 /// Where and how a ray met a surface or a strand, as the materials need it.
@@ -87,7 +91,19 @@ impl Material {
                 // Tube shading on a surface: fall back to Lambert with the diffuse colour.
                 None => surface::lambert(sp.color.unwrap_or(t.diffuse), sp.normal, wi),
             },
+            Material::Physical(h) => match sp.tangent {
+                Some(tangent) => h.response(sp.color, tangent, sp.normal, wo, wi),
+                // On a surface: Lambert with the colour the absorption stands for.
+                None => surface::lambert(h.surface_color(sp.color), sp.normal, wi),
+            },
         }
+    }
+
+    /// True when the material scatters light from the whole sphere around a strand (tube
+    /// shading and the hair BSDF), so lights must be sampled over the sphere, not over the
+    /// hemisphere of the hit normal.
+    pub fn scatters_around_strand(&self, sp: &ShadingPoint) -> bool {
+        matches!(self, Material::Tube(_) | Material::Physical(_)) && sp.tangent.is_some()
     }
 
     /// Constant light the material reflects from the environment without sampling it:
