@@ -1,6 +1,7 @@
 //! The physical hair material through the whole renderer: a white fibre in a white
-//! furnace disappears (the integrator samples the environment over the whole sphere for
-//! it and the BSDF conserves energy), and colours from the strands need strands with colours.
+//! furnace disappears (the integrator lights it from the whole sphere, by sampling the
+//! BSDF, and the BSDF conserves energy), and colours from the strands need strands with
+//! colours.
 
 use glam::{Affine3A, Vec3};
 use tress::geometry::StrandSet;
@@ -51,8 +52,8 @@ fn hair_mean(desc: &Description) -> (Color, usize) {
 #[test]
 fn white_fibre_vanishes_in_a_white_furnace() {
     // No absorption: each hit reflects and transmits exactly what arrives, 1 from every
-    // direction. Sampling only the hemisphere of the hit normal would lose the light
-    // transmitted from behind (TT) and give about half.
+    // direction. Lighting only the hemisphere of the hit normal would lose the light
+    // transmitted from behind (TT) and give about half; a cosine too many, less.
     let white =
         HairParams { absorption: Absorption::Melanin { eumelanin: 0.0, pheomelanin: 0.0 }, ..Default::default() };
     let (mean, n) = hair_mean(&furnace(strand(), white, false));

@@ -10,6 +10,7 @@ pub mod hair_bsdf;
 pub mod surface;
 pub mod tube;
 
+use crate::math::rng::PixelSampler;
 use crate::math::Color;
 use glam::Vec3;
 
@@ -99,11 +100,17 @@ impl Material {
         }
     }
 
-    /// True when the material scatters light from the whole sphere around a strand (tube
-    /// shading and the hair BSDF), so lights must be sampled over the sphere, not over the
-    /// hemisphere of the hit normal.
-    pub fn scatters_around_strand(&self, sp: &ShadingPoint) -> bool {
-        matches!(self, Material::Tube(_) | Material::Physical(_)) && sp.tangent.is_some()
+    /// A direction `wi` drawn in proportion to the material's response, and its
+    /// solid-angle density, for materials that can importance-sample themselves: the hair
+    /// BSDF on hair. `None` for the others, which then draw nothing from `sampler`.
+    pub fn sample_direction(&self, sp: &ShadingPoint, wo: Vec3, sampler: &mut PixelSampler) -> Option<(Vec3, f32)> {
+        match (self, sp.tangent) {
+            (Material::Physical(h), Some(tangent)) => {
+                let u = [sampler.next_1d(), sampler.next_1d(), sampler.next_1d(), sampler.next_1d()];
+                h.sample(sp.color, tangent, sp.normal, wo, u)
+            }
+            _ => None,
+        }
     }
 
     /// Constant light the material reflects from the environment without sampling it:

@@ -76,7 +76,7 @@ fn scaled_log_i0_matches_series_and_asymptotics() {
 
 #[test]
 fn longitudinal_lobe_is_normalised_for_every_variance() {
-    // ∫ M(θ_i, θ_o) cos θ_i dθ_i = 1 (d'Eon §4), from variances far below the log-space
+    // ∫ M(θ_i, θ_o) cos θ_i dθ_i = 1 (d'Eon et al. 2011), from variances far below the log-space
     // switch of other implementations (1e-5: β_m ≈ 0.004) to the widest (β_m = 1).
     for &v in &[1e-5f32, 1e-3, 0.0065, 0.1, 1.0, 27.4] {
         for &theta_o in &[0.0f32, 0.5, -1.2, 1.5] {
@@ -143,7 +143,7 @@ fn trace_cylinder(wo: Vec3, n: Vec3, eta: f32, p: usize) -> Vec3 {
 
 #[test]
 fn lobe_centres_follow_rays_traced_through_a_cylinder() {
-    // Chiang eq. 5 with Bravais' index, against Snell's law in 3D through a cylinder: the
+    // Chiang's exit azimuths Φ(p, h) with Bravais' index, against Snell's law in 3D through a cylinder: the
     // azimuth where R, TT and TRT leave, for hits across the fibre and tilted views. This
     // pins the sign of h (FibreFrame) and of every term of Φ(p, h).
     let hair = hair(0.3, 0.3, 0.0);
@@ -428,7 +428,7 @@ fn importance_weights_match_evaluation() {
 
 #[test]
 fn colour_inversion_follows_chiang_and_melanin_browns() {
-    // Chiang eq. 9: a colour of exp(-poly(β_n)) has σ_a = 1, and white has none.
+    // Chiang §4.2: a colour of exp(-poly(β_n)) has σ_a = 1, and white has none.
     let beta_n = 0.3;
     let c = (-color_polynomial(beta_n)).exp();
     let s = sigma_a_from_color(Color::new(c, 1.0, 0.0), beta_n);
