@@ -79,3 +79,22 @@ fn colours_from_strands_need_strands_with_colours() {
     let (mean, _) = hair_mean(&furnace(coloured, from, true));
     assert!(mean.x > mean.y && mean.y > mean.z && mean.x < 1.03, "{mean}");
 }
+
+#[test]
+fn example_scene_uses_the_physical_material_and_renders_the_same_on_any_thread_count() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/hairy_torus_closeup.toml");
+    let mut desc = tress::io::scene_file::read_scene(&path).unwrap();
+    assert!(matches!(desc.hair[0].material, Material::Physical(_)));
+    desc.settings.width = 48;
+    desc.settings.height = 36;
+    desc.settings.spp = 2;
+    let render = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        pool.install(|| tress::render::render(&prepare(&desc).unwrap().0, None).0)
+    };
+    let bits =
+        |f: &tress::film::Film| f.pixels.iter().flat_map(|p| p.color.to_array().map(f32::to_bits)).collect::<Vec<_>>();
+    let (a, b) = (render(1), render(2));
+    assert!(a.pixels.iter().any(|p| p.strand_id >= 0.0), "no hair in view");
+    assert_eq!(bits(&a), bits(&b));
+}

@@ -23,8 +23,8 @@
 //! cuticle tilt, where the reversed path has the offset `-h`. Elsewhere it is not exactly:
 //! Chiang evaluates the attenuation and the refraction with θ_o only, and the tilt shifts
 //! θ_o only: for untilted blonde hair 4 % (β_m 0.1) to 14 % (β_m 0.3) of the scattered
-//! energy differs between the two directions (see the tests). pbrt-v4 disables its hair
-//! reciprocity test for this reason, and Mitsuba 3 flags its hair BSDF non-symmetric.
+//! energy differs between the two directions (see the tests). pbrt-v4's hair reciprocity
+//! test is disabled, and Mitsuba 3 flags its hair BSDF non-symmetric.
 
 use super::surface::fresnel_dielectric;
 use crate::math::{frame, Color};

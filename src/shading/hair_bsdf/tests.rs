@@ -182,6 +182,7 @@ fn white_furnace_conserves_energy_within_one_percent() {
         let n = grid_for(&hair);
         for &(theta_o, h) in &wos[..count] {
             let e = albedo(&hair.at(Color::ZERO, h), dir(theta_o, 0.7), n);
+            println!("furnace β ({bm}, {bn}) θ_o {theta_o} h {h} grid {n}²: E = {:.5}", e.x);
             worst = worst.max((e - Color::ONE).abs().max_element());
             assert!((e - Color::ONE).abs().max_element() < 0.01, "β = ({bm}, {bn}), θ_o = {theta_o}, h = {h}: {e}");
         }
