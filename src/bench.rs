@@ -48,7 +48,7 @@ impl Memory {
                 Shape::Strands(s) => {
                     m.segments += s.segment_count() as u64;
                     m.strand_points += s.memory_bytes() as u64;
-                    m.strand_bvh += o.bvh().memory_bytes() as u64;
+                    m.strand_bvh += o.bvh_bytes() as u64;
                 }
                 Shape::Mesh(mesh) => {
                     m.mesh += mesh.memory_bytes() as u64;
@@ -243,6 +243,7 @@ pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
             transform: Affine3A::IDENTITY,
             radius_scale: 1.0,
             file_colors: false,
+            lod: None,
         })
         .collect();
     Ok(Description {

@@ -54,6 +54,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
             transform: Affine3A::IDENTITY,
             radius_scale: 1.0,
             file_colors: true,
+            lod: None,
         }],
         hair_systems: Vec::new(),
     }

@@ -25,6 +25,7 @@ fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Descrip
             transform: Affine3A::IDENTITY,
             radius_scale: 1.0,
             file_colors,
+            lod: None,
         }],
     }
 }

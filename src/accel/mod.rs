@@ -1,12 +1,15 @@
 //! Acceleration: one BVH per object over its primitives, and a top-level BVH over objects.
-//! Answers closest-hit and any-hit (shadow) queries for the integrators.
+//! Answers closest-hit and any-hit (shadow) queries for the integrators. A strand set with
+//! level of detail has a BVH per pruning group instead of one ([`lod`]).
 
 pub mod bvh;
+pub mod lod;
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
-use crate::math::{Aabb, Ray};
+use crate::math::{Aabb, Ray, RayCone};
 use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
+use lod::{LodParams, StrandLod};
 use rayon::prelude::*;
 
 /// The geometry of one object.
@@ -43,13 +46,46 @@ pub struct Object {
     pub shape: Shape,
     /// Index into the world's materials.
     pub material: u32,
+    /// The BVH over all primitives; empty when the object has level of detail.
     bvh: Bvh,
+    /// Pruning levels with a BVH per group, for strand sets with level of detail.
+    lod: Option<StrandLod>,
 }
 
 impl Object {
-    /// The object's BVH.
+    /// The object's BVH (empty when the object has level of detail: see [`Object::lod`]).
     pub fn bvh(&self) -> &Bvh {
         &self.bvh
+    }
+
+    /// The object's pruning levels, when it is a strand set with level of detail.
+    pub fn lod(&self) -> Option<&StrandLod> {
+        self.lod.as_ref()
+    }
+
+    /// Bytes of the object's BVHs (the single one, or one per pruning group).
+    pub fn bvh_bytes(&self) -> usize {
+        self.bvh.memory_bytes() + self.lod.as_ref().map_or(0, StrandLod::bvh_bytes)
+    }
+
+    /// Bounds of the object as its BVHs see them (strands at their widest level).
+    pub fn bounds(&self) -> Aabb {
+        self.lod.as_ref().map_or(self.bvh.bounds(), StrandLod::bounds)
+    }
+
+    /// Bytes the object's single BVH would take without level of detail (built to measure
+    /// what the LOD adds; the object's own BVH when it has none).
+    pub fn plain_bvh_bytes(&self) -> usize {
+        match self.lod {
+            Some(_) => Bvh::build(build_items(&self.shape)).memory_bytes(),
+            None => self.bvh.memory_bytes(),
+        }
+    }
+
+    /// The colour of a strand hit at `level`, its contrast reduced when the object's level
+    /// of detail asks for it ([`StrandLod::color`]); unchanged without level of detail.
+    pub fn lod_color(&self, level: u32, color: Option<Vec3>) -> Option<Vec3> {
+        self.lod.as_ref().map_or(color, |l| l.color(level, color))
     }
 }
 
@@ -83,6 +119,10 @@ pub struct Hit {
     pub prim: u32,
     /// Where on the primitive.
     pub kind: HitKind,
+    /// Pruning level of a strand hit (0 without level of detail).
+    pub level: u32,
+    /// Factor the hit segment's radius was widened by for its level (1 at level 0).
+    pub radius_scale: f32,
 }
 
 /// Primitives a shadow ray must ignore: the segments `first..=last` of one object (the
@@ -109,15 +149,27 @@ impl Accel {
     /// Builds a BVH per object (objects in parallel, and each build in parallel) and the
     /// top level over them.
     pub fn build(shapes: Vec<(Shape, u32)>) -> Accel {
+        Accel::build_with_lod(shapes.into_iter().map(|(shape, material)| (shape, material, None)).collect())
+    }
+
+    /// Like [`Accel::build`], with level of detail for the strand sets given [`LodParams`]:
+    /// their strands are pruned (ranks seeded by the object index) into groups with a BVH
+    /// each. Meshes ignore the parameters.
+    pub fn build_with_lod(shapes: Vec<(Shape, u32, Option<LodParams>)>) -> Accel {
         let objects: Vec<Object> = shapes
             .into_par_iter()
-            .map(|(shape, material)| {
-                let bvh = Bvh::build(build_items(&shape));
-                Object { shape, material, bvh }
+            .enumerate()
+            .map(|(i, (shape, material, params))| {
+                let lod = match (&shape, params) {
+                    (Shape::Strands(s), Some(p)) => StrandLod::build(s, p, lod_seed(i)),
+                    _ => None,
+                };
+                let bvh = if lod.is_some() { Bvh::default() } else { Bvh::build(build_items(&shape)) };
+                Object { shape, material, bvh, lod }
             })
             .collect();
         let top = Bvh::build(
-            objects.iter().enumerate().map(|(i, o)| BuildItem { bounds: o.bvh.bounds(), id: i as u32 }).collect(),
+            objects.iter().enumerate().map(|(i, o)| BuildItem { bounds: o.bounds(), id: i as u32 }).collect(),
         );
         Accel { objects, top }
     }
@@ -129,21 +181,32 @@ impl Accel {
 
     /// Bytes held by all BVHs (top level included).
     pub fn bvh_bytes(&self) -> usize {
-        self.top.memory_bytes() + self.objects.iter().map(|o| o.bvh.memory_bytes()).sum::<usize>()
+        self.top.memory_bytes() + self.objects.iter().map(Object::bvh_bytes).sum::<usize>()
     }
 
     /// The closest hit along the ray before `ray.tmax`.
+    /// Strand sets with level of detail use the level of `ray.cone` at each distance.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let test = RayBoxTest::new(ray.origin, ray.dir);
+        let jitter = lod::ray_jitter(ray.origin, ray.dir);
         let mut tmax = ray.tmax;
         let mut best = None;
         self.top.traverse(&test, &mut tmax, |objects, tmax| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                if let (Some(lod), Shape::Strands(s)) = (&o.lod, &o.shape) {
+                    let levels = lod.ray_levels(ray.cone, jitter);
+                    if let Some((prim, t, kind, level)) =
+                        lod.intersect(s, &test, ray.origin, ray.dir, &levels, tmax, None, false)
+                    {
+                        best = Some(Hit { t, object, prim, kind, level, radius_scale: lod.radius_scale(level) });
+                    }
+                    continue;
+                }
                 o.bvh.traverse(&test, tmax, |prims, tmax| {
                     if let Some((prim, t, kind)) = intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None) {
                         *tmax = t;
-                        best = Some(Hit { t, object, prim, kind });
+                        best = Some(Hit { t, object, prim, kind, level: 0, radius_scale: 1.0 });
                     }
                     false
                 });
@@ -154,15 +217,32 @@ impl Accel {
     }
 
     /// True when anything (but the skipped primitives) lies on the segment from `origin`
-    /// along unit `dir` up to distance `tmax`.
+    /// along unit `dir` up to distance `tmax`, with strands at full detail.
     pub fn occluded(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> bool {
+        self.occluded_cone(origin, dir, tmax, skip, RayCone::default())
+    }
+
+    /// Like [`Accel::occluded`], for a ray with footprint `cone`: strand sets with level of
+    /// detail are pruned as a ray with that cone sees them (thesis section 2.2.2: shadow
+    /// rays need a level too).
+    pub fn occluded_cone(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>, cone: RayCone) -> bool {
         let test = RayBoxTest::new(origin, dir);
+        let jitter = lod::ray_jitter(origin, dir);
         let mut t = tmax;
         let mut blocked = false;
         self.top.traverse(&test, &mut t, |objects, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
                 let skip = skip.filter(|s| s.object == object);
+                if let (Some(lod), Shape::Strands(s)) = (&o.lod, &o.shape) {
+                    let levels = lod.ray_levels(cone, jitter);
+                    let mut limit = *t;
+                    if lod.intersect(s, &test, origin, dir, &levels, &mut limit, skip, true).is_some() {
+                        blocked = true;
+                        return true;
+                    }
+                    continue;
+                }
                 o.bvh.traverse(&test, t, |prims, t| {
                     blocked = intersect_leaf(&o.shape, prims, origin, dir, *t, skip).is_some();
                     blocked
@@ -207,7 +287,6 @@ fn intersect_leaf(
     tmax: f32,
     skip: Option<Skip>,
 ) -> Option<(u32, f32, HitKind)> {
-    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
     let mut best = None;
     let mut tmax = tmax;
     match shape {
@@ -220,21 +299,50 @@ fn intersect_leaf(
             }
         }
         Shape::Strands(s) => {
-            for chunk in prims.chunks(4) {
-                let (mut p0, mut p1) = ([[0.0; 4]; 4], [[0.0; 4]; 4]);
-                for (lane, &p) in chunk.iter().enumerate() {
-                    if !skipped(p) {
-                        p0[lane] = s.points[p as usize];
-                        p1[lane] = s.points[p as usize + 1];
-                    }
-                }
-                let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
-                if let Some(lane) = hits.nearest() {
-                    if let Some(h) = hits.hit(lane) {
-                        tmax = h.t;
-                        best = Some((chunk[lane], h.t, HitKind::Segment { s: h.s, normal: h.normal }));
-                    }
-                }
+            best = intersect_strands(s, prims, origin, dir, tmax, skip, |_, _| (1.0, 0))
+                .map(|(p, t, kind, _)| (p, t, kind));
+        }
+    }
+    best
+}
+
+/// The seed of the pruning ranks of object `object`.
+fn lod_seed(object: usize) -> u32 {
+    crate::math::rng::hash_combine(&[0x10d, object as u32])
+}
+
+/// The nearest hit among the segments `prims` of `s` before `tmax`, ignoring `skip`,
+/// four at a time: (segment, distance, where, level). `widen(p0, p1)` gives a segment's
+/// radius factor and level from its end points (level of detail; `(1.0, 0)` without).
+#[inline(always)]
+fn intersect_strands(
+    s: &StrandSet,
+    prims: &[u32],
+    origin: Vec3,
+    dir: Vec3,
+    mut tmax: f32,
+    skip: Option<Skip>,
+    widen: impl Fn(Vec3, Vec3) -> (f32, u32),
+) -> Option<(u32, f32, HitKind, u32)> {
+    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
+    let mut best = None;
+    for chunk in prims.chunks(4) {
+        let (mut p0, mut p1) = ([[0.0; 4]; 4], [[0.0; 4]; 4]);
+        let mut levels = [0u32; 4];
+        for (lane, &p) in chunk.iter().enumerate() {
+            if !skipped(p) {
+                let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
+                let (scale, level) = widen(Vec3::new(a[0], a[1], a[2]), Vec3::new(b[0], b[1], b[2]));
+                p0[lane] = [a[0], a[1], a[2], a[3] * scale];
+                p1[lane] = [b[0], b[1], b[2], b[3] * scale];
+                levels[lane] = level;
+            }
+        }
+        let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
+        if let Some(lane) = hits.nearest() {
+            if let Some(h) = hits.hit(lane) {
+                tmax = h.t;
+                best = Some((chunk[lane], h.t, HitKind::Segment { s: h.s, normal: h.normal }, levels[lane]));
             }
         }
     }

@@ -85,6 +85,9 @@ struct Overrides {
     /// Strands in the demo scene (ignored for scene files).
     #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
     demo_strands: u32,
+    /// Render every strand: turn level of detail off (`[render] lod = false`).
+    #[arg(long)]
+    no_lod: bool,
 }
 
 fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
@@ -111,6 +114,9 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     if let Some(seed) = o.seed {
         s.seed = seed;
     }
+    if o.no_lod {
+        s.lod = false;
+    }
     Ok(desc)
 }
 
@@ -129,7 +135,7 @@ fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Render { scene, overrides, output, quiet } => render(scene.as_deref(), &overrides, &output, quiet),
         Command::Info { scene, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands, no_lod: false };
             let desc = load(scene.as_deref(), &o)?;
             let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
             info(&world);
@@ -137,7 +143,7 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Export { scene, output, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands, no_lod: false };
             let desc = load(scene.as_deref(), &o)?;
             let geometry = tress::scene::load_geometry(&desc)?;
             let mut all = tress::geometry::StrandSet::new();
@@ -222,7 +228,7 @@ fn info(world: &World) {
                 strands += s.strand_count();
                 segments += s.segment_count();
                 strand_bytes += s.memory_bytes();
-                strand_bvh += o.bvh().memory_bytes();
+                strand_bvh += o.bvh_bytes();
             }
         }
     }
@@ -240,6 +246,36 @@ fn info(world: &World) {
         println!(
             "  per segment {:.1} bytes (strand data + strand bvh)",
             (strand_bytes + strand_bvh) as f64 / segments as f64
+        );
+    }
+    lod_info(world);
+}
+
+/// The level of detail of each strand set that has it, and the memory it adds: group BVHs
+/// against the single BVH the set would have without it, plus the LOD's bookkeeping.
+fn lod_info(world: &World) {
+    for (i, o) in world.accel.objects.iter().enumerate() {
+        let (Some(lod), Shape::Strands(s)) = (o.lod(), &o.shape) else { continue };
+        let p = lod.params();
+        let plain = o.plain_bvh_bytes();
+        let added = o.bvh_bytes() as i64 - plain as i64 + lod.bookkeeping_bytes() as i64;
+        let data = s.memory_bytes() as f64;
+        println!(
+            "lod object {i}: {} levels, decimation {}, compensation {}, width {:.3e}, strands per group {:?}",
+            p.levels,
+            p.decimation,
+            p.compensation,
+            lod.width(),
+            lod.group_strands()
+        );
+        println!(
+            "  group bvhs {} (one bvh: {}), bookkeeping {} B: added {}{} ({:+.2} % of the strand data)",
+            human_bytes(o.bvh_bytes() as u64),
+            human_bytes(plain as u64),
+            lod.bookkeeping_bytes(),
+            if added < 0 { "-" } else { "" },
+            human_bytes(added.unsigned_abs()),
+            100.0 * added as f64 / data
         );
     }
 }

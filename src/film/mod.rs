@@ -30,6 +30,9 @@ pub struct Pixel {
     pub clump_id: f32,
     /// The strand's stable random value in [0, 1); -1 when not hair.
     pub strand_random: f32,
+    /// Level of detail the hit used (0 for hair without it); -1 when not hair (thesis
+    /// fig. 2.5).
+    pub lod_level: f32,
 }
 
 /// An image being rendered: `width * height` pixels, row by row from the top.
@@ -54,6 +57,7 @@ impl Film {
             root_uv: [-1.0, -1.0],
             clump_id: -1.0,
             strand_random: -1.0,
+            lod_level: -1.0,
             ..Default::default()
         };
         Film { width, height, pixels: vec![empty; width as usize * height as usize] }

@@ -13,6 +13,7 @@
 //!   * `strandAlong`, `rootUV.U`, `rootUV.V`, `clumpId`, `strandRandom`: on hair, the position
 //!     along the strand (0 root, 1 tip), its root's surface UV, its clump (guide) index and its
 //!     stable random value in [0, 1); `-1` where not applicable or unknown,
+//!   * `lodLevel`: on hair, the level of detail the hit used (0 at full detail); `-1` elsewhere,
 //!   * `coverage`: coverage again, as a single channel for tools that do not treat `A` as data.
 //!
 //! Infinite depth is written as `+inf`: EXR stores IEEE 754 floats bit for bit, so it round-trips
@@ -324,6 +325,7 @@ fn exr_image(
         channel("rootUV.V", |p| p.root_uv[1]),
         channel("clumpId", |p| p.clump_id),
         channel("strandRandom", |p| p.strand_random),
+        channel("lodLevel", |p| p.lod_level),
         channel("coverage", |p| p.coverage),
     ]);
     let size = (film.width as usize, film.height as usize);
@@ -356,6 +358,7 @@ mod tests {
                     root_uv: [i as f32 * 0.05, 1.0 - i as f32 * 0.05],
                     clump_id: (i / 2) as f32,
                     strand_random: 0.125 * (i % 8) as f32,
+                    lod_level: (i % 5) as f32,
                 };
             }
         }
@@ -461,8 +464,9 @@ mod tests {
         expect("rootUV.V", |p| p.root_uv[1]);
         expect("clumpId", |p| p.clump_id);
         expect("strandRandom", |p| p.strand_random);
+        expect("lodLevel", |p| p.lod_level);
         expect("coverage", |p| p.coverage);
-        assert_eq!(layer.channel_data.list.len(), 16);
+        assert_eq!(layer.channel_data.list.len(), 17);
         assert_eq!(channel("Z")[0], f32::INFINITY);
 
         let attribute = |name: &str| match layer.attributes.other.get(&Text::from(name)) {

@@ -1,6 +1,7 @@
 //! Scene files in TOML (documented in `docs/scene-format.md`), read into a
 //! [`Description`]. Unknown keys and wrong types are errors naming the file, line and key.
 
+use crate::accel::lod::LodParams;
 use crate::geometry::TriangleMesh;
 use crate::hair::ramp::RampValue;
 use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
@@ -92,12 +93,21 @@ struct RenderToml {
     max_depth: u32,
     #[serde(default)]
     threads: usize,
+    #[serde(default = "default_true")]
+    lod: bool,
 }
 
 impl Default for RenderToml {
     fn default() -> Self {
         let d = RenderSettings::default();
-        RenderToml { resolution: [d.width, d.height], spp: d.spp, seed: d.seed, max_depth: d.max_depth, threads: 0 }
+        RenderToml {
+            resolution: [d.width, d.height],
+            spp: d.spp,
+            seed: d.seed,
+            max_depth: d.max_depth,
+            threads: 0,
+            lod: d.lod,
+        }
     }
 }
 fn default_resolution() -> [u32; 2] {
@@ -297,6 +307,32 @@ struct HairToml {
     radius_scale: f32,
     #[serde(default = "default_true")]
     file_colors: bool,
+    lod: Option<LodToml>,
+}
+
+/// `lod = { decimation = 1.5, levels = 8, compensation = 0.8, contrast = false }`, every
+/// key optional ([`LodParams::default`]).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LodToml {
+    decimation: Option<f32>,
+    levels: Option<u32>,
+    compensation: Option<f32>,
+    contrast: Option<bool>,
+}
+
+impl LodToml {
+    fn params(&self) -> Result<LodParams, String> {
+        let d = LodParams::default();
+        let p = LodParams {
+            decimation: self.decimation.unwrap_or(d.decimation),
+            levels: self.levels.unwrap_or(d.levels),
+            compensation: self.compensation.unwrap_or(d.compensation),
+            contrast: self.contrast.unwrap_or(d.contrast),
+        };
+        p.validate()?;
+        Ok(p)
+    }
 }
 fn default_radius_scale() -> f32 {
     1.0
@@ -317,6 +353,7 @@ struct HairSystemToml {
     #[serde(default)]
     seed: u32,
     transform: Option<TransformToml>,
+    lod: Option<LodToml>,
     hairs_per_clump: Option<u32>,
     sub_segments: Option<u32>,
     thinning: Option<f32>,
@@ -489,7 +526,8 @@ fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Result<HairSys
         Some(t) => transform(t)?,
         None => Affine3A::IDENTITY,
     };
-    Ok(HairSystemEntry { guides, system: s, material, colors, transform, seed: h.seed })
+    let lod = h.lod.as_ref().map(LodToml::params).transpose()?;
+    Ok(HairSystemEntry { guides, system: s, material, colors, transform, seed: h.seed, lod })
 }
 
 fn follicle_mesh(f: &FolliclesToml, meshes: usize) -> Result<usize, String> {
@@ -555,6 +593,7 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
         seed: r.seed,
         max_depth: r.max_depth,
         threads: r.threads,
+        lod: r.lod,
     };
     let mut lights = Vec::new();
     for (i, l) in scene.light.iter().enumerate() {
@@ -583,6 +622,7 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
             transform: transform(&h.transform).map_err(what)?,
             radius_scale: h.radius_scale,
             file_colors: h.file_colors,
+            lod: h.lod.as_ref().map(LodToml::params).transpose().map_err(what)?,
         });
     }
     let mut hair_systems = Vec::new();

@@ -30,6 +30,8 @@ pub struct FirstHit {
     pub strand: Option<u32>,
     /// Per-strand data at the hit when the object is hair.
     pub strand_point: Option<StrandPoint>,
+    /// Level of detail of the hit when the object is hair (0 without level of detail).
+    pub lod_level: Option<u32>,
 }
 
 /// Where a shadow or secondary ray starts and which primitives it must ignore.
@@ -69,7 +71,8 @@ pub fn trace(
     };
     let object = &world.accel.objects[hit.object as usize];
     let material = &world.materials[object.material as usize];
-    let surface = surface_at(&object.shape, &hit, ray);
+    let mut surface = surface_at(&object.shape, &hit, ray);
+    surface.sp.color = object.lod_color(hit.level, surface.sp.color);
     let sp = &surface.sp;
     let wo = -ray.dir;
     let first = FirstHit {
@@ -84,6 +87,7 @@ pub fn trace(
             (Shape::Strands(s), HitKind::Segment { s: along, .. }) => Some(s.strand_point(hit.prim, along)),
             _ => None,
         },
+        lod_level: matches!(object.shape, Shape::Strands(_)).then_some(hit.level),
     };
 
     let mut color = material.ambient(sp, world.background);
@@ -111,7 +115,8 @@ pub fn trace(
         counters.rays += 1;
         // Stop short of the light by a relative margin so its own surface does not block.
         let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
-        if !world.accel.occluded(d.origin, ls.dir, tmax, d.skip) {
+        // The shadow ray starts with the camera ray's footprint at the hit (level of detail).
+        if !world.accel.occluded_cone(d.origin, ls.dir, tmax, d.skip, ray.cone.propagate(hit.t, 0.0)) {
             color += f * ls.value;
         }
     }
@@ -155,7 +160,8 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
             let (p0, p1) = (strands.points[i], strands.points[i + 1]);
             let (a0, a1) = (Vec3::new(p0[0], p0[1], p0[2]), Vec3::new(p1[0], p1[1], p1[2]));
             let axis_point = a0.lerp(a1, s);
-            let radius = p0[3] + (p1[3] - p0[3]) * s;
+            // Widened for the level of detail the hit used.
+            let radius = (p0[3] + (p1[3] - p0[3]) * s) * hit.radius_scale;
             let axis = (a1 - a0).normalize_or(Vec3::Y);
             // Reconstruct the hit on the surface from the segment itself: its error is
             // relative to the segment's coordinates, not to the ray's length.

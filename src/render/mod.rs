@@ -105,6 +105,7 @@ fn render_pixel(world: &World, x: u32, y: u32, counters: &mut Counters) -> Pixel
                     pixel.clump_id = sp.clump.map_or(-1.0, |c| c as f32);
                     pixel.strand_random = sp.random;
                 }
+                pixel.lod_level = f.lod_level.map_or(-1.0, |l| l as f32);
             }
             hits += 1;
         }

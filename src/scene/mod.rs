@@ -2,6 +2,7 @@
 //! (plain data the renderer reads). [`prepare`] turns one into the other: it loads the
 //! files a description names, applies transforms and builds the acceleration structures.
 
+use crate::accel::lod::LodParams;
 use crate::accel::{Accel, Shape};
 use crate::camera::{Camera, CameraError};
 use crate::geometry::{StrandSet, TriangleMesh};
@@ -42,11 +43,13 @@ pub struct RenderSettings {
     pub max_depth: u32,
     /// Worker threads; 0 uses every core.
     pub threads: usize,
+    /// Level of detail for the strand sets that ask for it; `false` renders every strand.
+    pub lod: bool,
 }
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, spp: 16, seed: 0, max_depth: 5, threads: 0 }
+        RenderSettings { width: 640, height: 480, spp: 16, seed: 0, max_depth: 5, threads: 0, lod: true }
     }
 }
 
@@ -92,6 +95,8 @@ pub struct HairEntry {
     pub radius_scale: f32,
     /// Use per-point colours from the file, when it has them, instead of the material colour.
     pub file_colors: bool,
+    /// Level of detail (stochastic pruning), when wanted.
+    pub lod: Option<LodParams>,
 }
 
 /// Where a hair system's guide curves come from.
@@ -126,6 +131,8 @@ pub struct HairSystemEntry {
     pub transform: Affine3A,
     /// Seed of follicle placement and of every per-hair random choice.
     pub seed: u32,
+    /// Level of detail (stochastic pruning), when wanted.
+    pub lod: Option<LodParams>,
 }
 
 /// Everything a scene says, before any file is read.
@@ -203,6 +210,13 @@ impl Description {
         if s.max_depth > 64 {
             return Err(PrepareError::Invalid(format!("max_depth {} is out of range (0 to 64)", s.max_depth)));
         }
+        for (i, p) in self.hair.iter().map(|h| h.lod).chain(self.hair_systems.iter().map(|h| h.lod)).enumerate() {
+            if let Some(p) = p {
+                let n = self.hair.len();
+                let name = if i < n { format!("hair {}", i + 1) } else { format!("hair_system {}", i - n + 1) };
+                p.validate().map_err(|e| PrepareError::Invalid(format!("{name}: {e}")))?;
+            }
+        }
         for h in &self.hair {
             if !(h.radius_scale.is_finite() && h.radius_scale >= 0.0) {
                 return Err(PrepareError::Invalid(format!(
@@ -235,18 +249,22 @@ pub struct LoadedGeometry {
     pub shapes: Vec<(Shape, u32)>,
     /// Materials, indexed by the shapes.
     pub materials: Vec<Material>,
+    /// Level of detail per shape (meshes and strand sets without it: `None`).
+    pub lods: Vec<Option<LodParams>>,
 }
 
 /// Loads every mesh and strand set a description names and applies its transform.
 pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError> {
     let mut materials = Vec::new();
     let mut shapes = Vec::new();
+    let mut lods = Vec::new();
     for m in &desc.meshes {
         let mut mesh = match &m.source {
             MeshSource::File(path) => io::read_mesh(path)?,
             MeshSource::Inline(mesh) => mesh.clone(),
         };
         mesh.transform(&m.transform);
+        lods.push(None);
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
         materials.push(m.material.clone());
     }
@@ -275,6 +293,7 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
                 )));
             }
         }
+        lods.push(h.lod);
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
@@ -298,10 +317,11 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
             },
         };
         let strands = hair::expand(&h.system, &guides, h.colors, h.seed).map_err(what)?;
+        lods.push(h.lod);
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
-    Ok(LoadedGeometry { shapes, materials })
+    Ok(LoadedGeometry { shapes, materials, lods })
 }
 
 /// Loads geometry, applies transforms and builds the BVHs.
@@ -310,10 +330,12 @@ pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError
     let c = &desc.camera;
     let camera = Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height)?;
     let start = Instant::now();
-    let LoadedGeometry { shapes, materials } = load_geometry(desc)?;
+    let LoadedGeometry { shapes, materials, lods } = load_geometry(desc)?;
     let load = start.elapsed();
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
-    let accel = Accel::build(shapes);
+    // The global switch drops every strand set's level of detail.
+    let lod = |p: Option<LodParams>| p.filter(|_| desc.settings.lod);
+    let accel = Accel::build_with_lod(shapes.into_iter().zip(lods).map(|((s, m), l)| (s, m, lod(l))).collect());
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = desc.lights.iter().map(Light::background).sum();

@@ -1,0 +1,558 @@
+//! Level of detail for strand sets: stochastic pruning (Cook, Halstead, Planck and Ryu 2007,
+//! "Stochastic Simplification of Aggregate Detail"; thesis section 2.2) with the level chosen
+//! per ray from its cone at the distance where it meets the hair.
+//!
+//! The thesis built eight grids, one per level, and re-shot each ray level by level; it
+//! could handle one hair thickness per scene (section 2.2.2). Here (shared/DESIGN.md, "LOD
+//! without eight grids"):
+//! - each strand gets a random pruning rank; level `l` keeps the `ceil(N / d^l)` strands of
+//!   lowest rank, so the levels are nested;
+//! - the nested sets split into disjoint groups: group `k` holds the strands whose last
+//!   level is exactly `k`, and gets its own BVH, bounded with the radius its strands take
+//!   at level `k`. Every segment is in exactly one group: there is no copy of the geometry;
+//! - a ray's level at distance `t` is `floor(log_d(footprint(t) / width) + jitter)`
+//!   ([`StrandLod::level_at`]), so group `k` is visible only before the distance `t_k` where
+//!   that level passes `k`. Each group is traversed once with `tmax = min(tmax, t_k)`: no ray
+//!   is re-shot, and a distant ray skips the large fine groups;
+//! - a segment met at distance `t` is intersected with its radius widened for the level at
+//!   `t` ([`LodParams::radius_scale`]).
+//!
+//! Each strand set measures its own width, so several hair thicknesses in one scene each
+//! pick their own level. The jitter comes from the ray itself ([`ray_jitter`]): transitions
+//! dither per ray instead of showing a seam, and stay deterministic.
+
+use super::bvh::{BuildItem, Bvh, RayBoxTest};
+use super::{intersect_strands, HitKind, Skip};
+use crate::geometry::{segment, StrandSet};
+use crate::math::rng::{hash_combine, unit_float, GenRng};
+use crate::math::{Aabb, RayCone};
+use glam::Vec3;
+use rand::seq::SliceRandom;
+use rand::SeedableRng;
+use rayon::prelude::*;
+
+/// Most pruning levels a strand set may have.
+pub const MAX_LEVELS: usize = 16;
+
+/// How a strand set is pruned (thesis section 2.2.3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LodParams {
+    /// Decimation coefficient `d`: each level keeps `1 / d` of the strands of the previous
+    /// one (thesis default 1.5).
+    pub decimation: f32,
+    /// Number of levels, the full set (level 0) included.
+    pub levels: u32,
+    /// Thickness compensation `c` in (0, 1]: kept strands overlap less than the ones they
+    /// stand for, so they widen by less than `d^l` (thesis: about 80 %).
+    pub compensation: f32,
+    /// Reduce the contrast of strand colours toward their mean at coarser levels (Cook et
+    /// al. 2007): fewer strands per pixel would otherwise make the colour noisier.
+    pub contrast: bool,
+}
+
+impl Default for LodParams {
+    fn default() -> Self {
+        LodParams { decimation: 1.5, levels: 8, compensation: 0.8, contrast: false }
+    }
+}
+
+impl LodParams {
+    /// Checks the values, naming the wrong one.
+    pub fn validate(&self) -> Result<(), String> {
+        if !(self.decimation.is_finite() && self.decimation > 1.0 && self.decimation <= 16.0) {
+            return Err(format!("lod `decimation` {} must be above 1 and at most 16", self.decimation));
+        }
+        if !(1..=MAX_LEVELS as u32).contains(&self.levels) {
+            return Err(format!("lod `levels` {} must be between 1 and {MAX_LEVELS}", self.levels));
+        }
+        if !(self.compensation.is_finite() && self.compensation > 0.0 && self.compensation <= 1.0) {
+            return Err(format!("lod `compensation` {} must be above 0 and at most 1", self.compensation));
+        }
+        Ok(())
+    }
+
+    /// Strands level `level` keeps out of `n`: `ceil(n / d^level)`, at least one.
+    pub fn kept(&self, n: usize, level: u32) -> usize {
+        let kept = (n as f64 / (self.decimation as f64).powi(level as i32)).ceil() as usize;
+        kept.clamp(n.min(1), n)
+    }
+
+    /// Factor on the radius of the strands at `level`: `1 + c (d^l - 1)`. It is 1 at level
+    /// 0, and tends to the thesis' `c d^l` (its example: 80 % gives a 4 times wider hair
+    /// for 5 removed) as the level grows; `c = 1` preserves the projected area exactly.
+    pub fn radius_scale(&self, level: u32) -> f32 {
+        1.0 + self.compensation * (self.decimation.powi(level as i32) - 1.0)
+    }
+
+    /// The last level of each of `n` strands (its group): strands are ranked by a random
+    /// permutation drawn from `seed`, and the strand of rank `r` lives up to the coarsest
+    /// level that still keeps more than `r` strands.
+    pub fn strand_groups(&self, n: usize, seed: u32) -> Vec<u8> {
+        let mut order: Vec<u32> = (0..n as u32).collect();
+        order.shuffle(&mut GenRng::seed_from_u64(seed as u64));
+        let kept: Vec<usize> = (0..self.levels).map(|l| self.kept(n, l)).collect();
+        let mut groups = vec![0u8; n];
+        for (rank, &strand) in order.iter().enumerate() {
+            groups[strand as usize] = (kept.iter().rposition(|&k| rank < k).unwrap_or(0)) as u8;
+        }
+        groups
+    }
+}
+
+/// A strand set's pruning levels: one BVH per group of strands sharing their last level.
+#[derive(Clone, Debug)]
+pub struct StrandLod {
+    params: LodParams,
+    /// Mean strand diameter: the width the footprint is compared with.
+    width: f32,
+    /// Group `k`'s BVH, over the segments of the strands whose last level is `k`.
+    groups: Vec<Bvh>,
+    /// Strands in each group.
+    group_strands: Vec<u32>,
+    /// `width * d^(k + 1)`: the footprint at which the level passes `k` (without jitter).
+    thresholds: [f32; MAX_LEVELS],
+    /// Radius factor per level.
+    scales: [f32; MAX_LEVELS],
+    /// Mean strand colour, when contrast reduction is on and the strands have colours.
+    mean_color: Option<Vec3>,
+}
+
+/// The part of a ray that picks levels: the distance before which each group is visible.
+#[derive(Clone, Copy, Debug)]
+pub struct RayLevels {
+    /// `cutoffs[k]`: the ray's level is at most `k` before this distance.
+    cutoffs: [f32; MAX_LEVELS],
+    levels: usize,
+}
+
+impl RayLevels {
+    /// The level at distance `t`, at most `max` (the group being traversed).
+    #[inline]
+    fn level(&self, t: f32, max: usize) -> usize {
+        self.cutoffs[..max].iter().take_while(|&&c| t >= c).count()
+    }
+}
+
+/// A jitter value in [0, 1) for the level choice, derived from the ray's bits so it is the
+/// same whatever thread traces it, and differs from ray to ray (sub-pixel offsets, shadow
+/// ray origins) so level transitions dither instead of drawing a seam.
+#[inline]
+pub fn ray_jitter(origin: Vec3, dir: Vec3) -> f32 {
+    unit_float(hash_combine(&[
+        origin.x.to_bits(),
+        origin.y.to_bits(),
+        origin.z.to_bits(),
+        dir.x.to_bits(),
+        dir.y.to_bits(),
+        dir.z.to_bits(),
+    ]))
+}
+
+impl StrandLod {
+    /// Prunes `strands` with `params` (ranks drawn from `seed`) and builds a BVH per group.
+    /// `None` when there is nothing to prune (no strands, or strands without width).
+    pub fn build(strands: &StrandSet, params: LodParams, seed: u32) -> Option<StrandLod> {
+        let n = strands.strand_count();
+        let (sum, count) = strands.points.iter().fold((0.0f64, 0usize), |(s, c), p| (s + 2.0 * p[3] as f64, c + 1));
+        let width = (sum / count.max(1) as f64) as f32;
+        if n == 0 || !(width.is_finite() && width > 0.0) {
+            return None;
+        }
+        let levels = params.levels as usize;
+        let groups_of = params.strand_groups(n, seed);
+        let mut group_strands = vec![0u32; levels];
+        groups_of.iter().for_each(|&g| group_strands[g as usize] += 1);
+        let mut thresholds = [f32::INFINITY; MAX_LEVELS];
+        let mut scales = [1.0; MAX_LEVELS];
+        for l in 0..levels {
+            thresholds[l] = width * params.decimation.powi(l as i32 + 1);
+            scales[l] = params.radius_scale(l as u32);
+        }
+        let groups = (0..levels)
+            .into_par_iter()
+            .map(|k| Bvh::build(group_items(strands, &groups_of, k as u8, scales[k])))
+            .collect();
+        let mean_color = strands.colors.as_ref().filter(|c| params.contrast && !c.is_empty()).map(|c| {
+            let sum = c.iter().fold([0.0f64; 3], |a, x| [a[0] + x[0] as f64, a[1] + x[1] as f64, a[2] + x[2] as f64]);
+            Vec3::new(sum[0] as f32, sum[1] as f32, sum[2] as f32) / c.len() as f32
+        });
+        Some(StrandLod { params, width, groups, group_strands, thresholds, scales, mean_color })
+    }
+
+    /// The pruning parameters.
+    pub fn params(&self) -> &LodParams {
+        &self.params
+    }
+
+    /// Mean strand diameter, the width footprints are compared with.
+    pub fn width(&self) -> f32 {
+        self.width
+    }
+
+    /// Strands in each group (group `k`: strands whose last level is `k`).
+    pub fn group_strands(&self) -> &[u32] {
+        &self.group_strands
+    }
+
+    /// Bounds of every group, at its widest radius.
+    pub fn bounds(&self) -> Aabb {
+        self.groups.iter().fold(Aabb::EMPTY, |b, g| b.union(g.bounds()))
+    }
+
+    /// Bytes of the group BVHs.
+    pub fn bvh_bytes(&self) -> usize {
+        self.groups.iter().map(Bvh::memory_bytes).sum()
+    }
+
+    /// Bytes of the LOD's own bookkeeping (parameters, thresholds, group sizes), beyond
+    /// the group BVHs that replace the strand set's single BVH.
+    pub fn bookkeeping_bytes(&self) -> usize {
+        std::mem::size_of::<StrandLod>() + self.groups.len() * std::mem::size_of::<Bvh>() + self.group_strands.len() * 4
+    }
+
+    /// The level a ray with `cone` uses at distance `t`:
+    /// `floor(log_d(footprint(t) / width) + jitter)`, clamped to the levels there are.
+    /// A footprint thinner than the hair gives level 0 whatever the jitter.
+    pub fn level_at(&self, cone: RayCone, t: f32, jitter: f32) -> u32 {
+        let ratio = cone.width_at(t) / self.width;
+        if !(ratio > 0.0) {
+            return 0;
+        }
+        let level = (ratio.ln() / self.params.decimation.ln() + jitter).floor();
+        level.clamp(0.0, (self.params.levels - 1) as f32) as u32
+    }
+
+    /// The distances at which a ray with `cone` and `jitter` leaves each level: the level
+    /// is at most `k` while `footprint(t) < width * d^(k + 1 - jitter)`, the same boundary
+    /// as [`StrandLod::level_at`]. A cone that does not widen keeps its width everywhere.
+    pub fn ray_levels(&self, cone: RayCone, jitter: f32) -> RayLevels {
+        let levels = self.params.levels as usize;
+        let shrink = self.params.decimation.powf(-jitter);
+        let mut cutoffs = [f32::INFINITY; MAX_LEVELS];
+        for (k, cutoff) in cutoffs.iter_mut().enumerate().take(levels - 1) {
+            let footprint = self.thresholds[k] * shrink;
+            *cutoff = if cone.spread > 0.0 {
+                (footprint - cone.width) / cone.spread
+            } else if cone.width.abs() < footprint {
+                f32::INFINITY
+            } else {
+                f32::NEG_INFINITY
+            };
+        }
+        RayLevels { cutoffs, levels }
+    }
+
+    /// The nearest hit of the ray on the pruned strands before `*tmax` (which it shortens),
+    /// ignoring `skip`: (segment, distance, where, level). With `any`, stops at the first
+    /// hit found (shadow rays).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn intersect(
+        &self,
+        strands: &StrandSet,
+        test: &RayBoxTest,
+        origin: Vec3,
+        dir: Vec3,
+        ray: &RayLevels,
+        tmax: &mut f32,
+        skip: Option<Skip>,
+        any: bool,
+    ) -> Option<(u32, f32, HitKind, u32)> {
+        let mut best = None;
+        // Coarse groups first: they are small and reach farthest, so they shorten tmax cheaply.
+        for k in (0..ray.levels).rev() {
+            let limit = ray.cutoffs[k].min(*tmax);
+            if !(limit > 0.0) {
+                continue;
+            }
+            let mut t = limit;
+            self.groups[k].traverse(test, &mut t, |prims, t| {
+                // The level of a segment is read at the distance of its midpoint along the
+                // ray: segments are short next to the distances where levels change.
+                let widen = |a: Vec3, b: Vec3| {
+                    let level = ray.level(((a + b) * 0.5 - origin).dot(dir), k);
+                    (self.scales[level], level as u32)
+                };
+                match intersect_strands(strands, prims, origin, dir, *t, skip, widen) {
+                    Some(hit) => {
+                        *t = hit.1;
+                        best = Some(hit);
+                        any
+                    }
+                    None => false,
+                }
+            });
+            if best.is_some() {
+                *tmax = best.map_or(*tmax, |b| b.1);
+                if any {
+                    break;
+                }
+            }
+        }
+        best
+    }
+
+    /// A strand colour seen at `level`, its contrast to the set's mean reduced by
+    /// `d^(-level / 2)` when contrast reduction is on. After Cook et al. 2007: a pixel that
+    /// averages `n` strands has a colour deviation of `sigma / sqrt(n)`; pruning to `n / d^l`
+    /// strands raises it by `d^(l / 2)`, which this scaling takes back.
+    pub fn color(&self, level: u32, color: Option<Vec3>) -> Option<Vec3> {
+        match (self.mean_color, color) {
+            (Some(mean), Some(c)) if level > 0 => {
+                Some(mean + (c - mean) * self.params.decimation.powf(-0.5 * level as f32))
+            }
+            _ => color,
+        }
+    }
+
+    /// Radius factor of the strands at `level`.
+    pub fn radius_scale(&self, level: u32) -> f32 {
+        self.scales[(level as usize).min(MAX_LEVELS - 1)]
+    }
+}
+
+/// BVH items of group `group`: the segments of its strands, bounded at radius times `scale`.
+fn group_items(strands: &StrandSet, groups_of: &[u8], group: u8, scale: f32) -> Vec<BuildItem> {
+    let mut items = Vec::new();
+    for (strand, w) in strands.offsets.windows(2).enumerate() {
+        if groups_of[strand] != group {
+            continue;
+        }
+        for i in w[0]..w[1].saturating_sub(1) {
+            let widen = |p: [f32; 4]| [p[0], p[1], p[2], p[3] * scale];
+            let (min, max) = segment::bounds(widen(strands.points[i as usize]), widen(strands.points[i as usize + 1]));
+            items.push(BuildItem { bounds: Aabb::new(min, max), id: i });
+        }
+    }
+    items
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::accel::{Accel, Shape};
+    use crate::math::Ray;
+    use rand::Rng;
+
+    /// `n` straight vertical strands of radius `r` at random x in [0, 1], in the plane z = 0,
+    /// with 2 to 5 segments each.
+    fn curtain(n: usize, r: f32, seed: u64) -> StrandSet {
+        let mut rng = GenRng::seed_from_u64(seed);
+        let mut s = StrandSet::new();
+        for _ in 0..n {
+            let x = rng.random::<f32>();
+            let k = rng.random_range(3..7);
+            s.push_strand((0..k).map(|i| (Vec3::new(x, i as f32 / (k - 1) as f32, 0.0), r)));
+        }
+        s
+    }
+
+    #[test]
+    fn levels_are_nested_and_keep_one_in_d_per_level() {
+        for d in [1.5f32, 2.0] {
+            let p = LodParams { decimation: d, levels: 8, ..Default::default() };
+            let n = 10_000;
+            let groups = p.strand_groups(n, 3);
+            for l in 0..8 {
+                // Level l keeps the strands whose last level is at least l.
+                let kept = groups.iter().filter(|&&g| g as u32 >= l).count();
+                assert_eq!(kept, (n as f64 / (d as f64).powi(l as i32)).ceil() as usize, "d {d} level {l}");
+            }
+            // A different seed keeps other strands, in the same numbers.
+            let other = p.strand_groups(n, 4);
+            assert_ne!(groups, other);
+            assert_eq!(other.iter().filter(|&&g| g >= 3).count(), groups.iter().filter(|&&g| g >= 3).count());
+        }
+        assert_eq!(LodParams::default().kept(1, 7), 1);
+        assert_eq!(LodParams::default().kept(0, 7), 0);
+    }
+
+    #[test]
+    fn groups_partition_the_segments() {
+        let s = curtain(3000, 0.001, 1);
+        let p = LodParams::default();
+        let groups = p.strand_groups(s.strand_count(), 9);
+        let mut ids: Vec<u32> =
+            (0..p.levels as u8).flat_map(|g| group_items(&s, &groups, g, 1.0)).map(|i| i.id).collect();
+        ids.sort_unstable();
+        assert_eq!(ids, s.segment_starts(), "every segment in exactly one group");
+        let lod = StrandLod::build(&s, p, 9).unwrap();
+        assert_eq!(lod.group_strands().iter().sum::<u32>() as usize, s.strand_count());
+        // The coarsest group is the smallest; group 0 holds about 1 - 1/d of the strands.
+        assert_eq!(lod.group_strands()[7] as usize, p.kept(3000, 7));
+        assert_eq!(lod.group_strands()[0] as usize, 3000 - p.kept(3000, 1));
+    }
+
+    #[test]
+    fn level_follows_the_footprint() {
+        let s = curtain(100, 0.005, 2); // width 0.01
+        let lod = StrandLod::build(&s, LodParams::default(), 0).unwrap();
+        assert!((lod.width() - 0.01).abs() < 1e-7);
+        let cone = RayCone { width: 0.0, spread: 0.001 };
+        for j in [0.0, 0.3, 0.999] {
+            // Footprint thinner than the hair: level 0 whatever the jitter.
+            assert_eq!(lod.level_at(cone, 9.99, j), 0);
+            assert_eq!(lod.level_at(RayCone::default(), 1e6, j), 0);
+            // Footprint d^2.5 hair widths: floor(2.5 + jitter).
+            let t = 0.01 * 1.5f32.powf(2.5) / 0.001;
+            assert_eq!(lod.level_at(cone, t, j), (2.5 + j).floor() as u32);
+            // Clamped to the coarsest level.
+            assert_eq!(lod.level_at(cone, 1e9, j), 7);
+        }
+        // The cut-off distances agree with the level formula.
+        let mut rng = GenRng::seed_from_u64(5);
+        for _ in 0..2000 {
+            let cone = RayCone { width: rng.random::<f32>() * 0.02, spread: rng.random::<f32>() * 0.01 };
+            let (j, t) = (rng.random::<f32>(), rng.random::<f32>() * 300.0);
+            let levels = lod.ray_levels(cone, j);
+            let level = lod.level_at(cone, t, j) as usize;
+            // Away from the boundaries (rounding may differ there).
+            if levels.cutoffs[..7].iter().all(|c| (c - t).abs() > 1e-3 * t.max(1.0)) {
+                assert_eq!(levels.level(t, 7), level, "cone {cone:?} jitter {j} t {t}");
+            }
+        }
+    }
+
+    #[test]
+    fn strand_sets_of_different_widths_pick_different_levels() {
+        let thin = StrandLod::build(&curtain(50, 0.001, 3), LodParams::default(), 0).unwrap();
+        let thick = StrandLod::build(&curtain(50, 0.01, 3), LodParams::default(), 0).unwrap();
+        let cone = RayCone { width: 0.0, spread: 0.001 };
+        let t = 40.0; // footprint 0.04: 20 thin widths, 2 thick ones
+        assert_eq!(thin.level_at(cone, t, 0.5), 7); // floor(log_1.5 20 + 0.5) = 7
+        assert_eq!(thick.level_at(cone, t, 0.5), 2); // floor(log_1.5 2 + 0.5) = 2
+    }
+
+    /// Fraction of rays along -z through the unit square that hit the curtain with the
+    /// level forced by a cone of constant width `footprint`.
+    fn coverage(accel: &Accel, footprint: f32) -> f64 {
+        let mut rng = GenRng::seed_from_u64(11);
+        let n = 40_000;
+        let hits = (0..n)
+            .filter(|_| {
+                let mut ray = Ray::new(Vec3::new(rng.random(), 0.1 + 0.8 * rng.random::<f32>(), 1.0), -Vec3::Z);
+                ray.cone = RayCone { width: footprint, spread: 0.0 };
+                accel.intersect(&ray).is_some()
+            })
+            .count();
+        hits as f64 / n as f64
+    }
+
+    #[test]
+    fn width_compensation_keeps_projected_area() {
+        // Hair widths summing to 0.4 of the square's width, before overlap.
+        let s = curtain(8000, 0.000025, 4);
+        for c in [1.0f32, 0.8] {
+            let p = LodParams { compensation: c, ..Default::default() };
+            let accel = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
+            let lod = accel.objects[0].lod().unwrap();
+            let full = coverage(&accel, 0.0);
+            for l in 1..5u32 {
+                // A constant footprint of d^l widths is level l for every jitter.
+                let footprint = lod.width() * p.decimation.powi(l as i32);
+                // Summed widths relative to level 0: c = 1 preserves them, c < 1 thins.
+                let projected = p.kept(8000, l) as f64 * p.radius_scale(l) as f64 / 8000.0;
+                if c == 1.0 {
+                    assert!((projected - 1.0).abs() < 0.01, "level {l}: projected width {projected}");
+                }
+                // Strands at random places: coverage is 1 - exp(-summed width), so the
+                // pruned coverage follows from the full one and the projected ratio
+                // (standard deviation of a level-4 coverage here: about 0.01).
+                let expect = 1.0 - (1.0 - full).powf(projected);
+                let got = coverage(&accel, footprint);
+                assert!(
+                    (got - expect).abs() < 0.03,
+                    "c {c} level {l}: coverage {got}, expected {expect} (full {full})"
+                );
+            }
+        }
+    }
+
+    /// Brute force over every segment: the level of each from `level_at` at its midpoint,
+    /// kept when its strand lives that long and the hit is where that group is visible.
+    fn brute_force(s: &StrandSet, lod: &StrandLod, groups: &[u8], ray: &Ray, jitter: f32) -> Option<(f32, u32, u32)> {
+        let mut best: Option<(f32, u32, u32)> = None;
+        for (strand, w) in s.offsets.windows(2).enumerate() {
+            let group = groups[strand] as u32;
+            for i in w[0]..w[1] - 1 {
+                let (a, b) = (s.position(i), s.position(i + 1));
+                let mid = ((a + b) * 0.5 - ray.origin).dot(ray.dir);
+                let level = lod.level_at(ray.cone, mid, jitter).min(group);
+                let scale = lod.radius_scale(level);
+                let widen = |p: [f32; 4]| [p[0], p[1], p[2], p[3] * scale];
+                let tmax = best.map_or(ray.tmax, |h| h.0);
+                let (p0, p1) = (widen(s.points[i as usize]), widen(s.points[i as usize + 1]));
+                if let Some(h) = segment::intersect_cylinder(ray.origin, ray.dir, 0.0, tmax, p0, p1) {
+                    if lod.level_at(ray.cone, h.t, jitter) <= group {
+                        best = Some((h.t, i, level));
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn closest_hit_equals_brute_force_at_every_level() {
+        let mut rng = GenRng::seed_from_u64(8);
+        let mut s = StrandSet::new();
+        for _ in 0..600 {
+            let mut p = Vec3::new(rng.random(), rng.random(), rng.random()) * 4.0 - 2.0;
+            let pts: Vec<(Vec3, f32)> = (0..rng.random_range(2..6))
+                .map(|_| {
+                    p += (Vec3::new(rng.random(), rng.random(), rng.random()) - 0.5) * 0.4;
+                    (p, rng.random_range(0.002..0.01))
+                })
+                .collect();
+            s.push_strand(pts);
+        }
+        let p = LodParams::default();
+        let accel = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
+        let lod = accel.objects[0].lod().unwrap();
+        let groups = p.strand_groups(s.strand_count(), super::super::lod_seed(0));
+        let (mut hits, mut coarse) = (0, 0);
+        for i in 0..3000 {
+            let origin = Vec3::new(rng.random(), rng.random(), rng.random()) * 20.0 - 10.0;
+            let target = Vec3::new(rng.random(), rng.random(), rng.random()) * 3.0 - 1.5;
+            let mut ray = Ray::new(origin, (target - origin).normalize());
+            // A third of the rays without a cone (level 0 everywhere), the others widening.
+            if i % 3 > 0 {
+                ray.cone = RayCone { width: 0.0, spread: rng.random::<f32>() * 0.01 };
+            }
+            let expected = brute_force(&s, lod, &groups, &ray, ray_jitter(ray.origin, ray.dir));
+            let got = accel.intersect(&ray);
+            match (got, expected) {
+                (Some(h), Some(e)) => {
+                    assert!((h.t - e.0).abs() <= 1e-5 * e.0, "ray {i}: {h:?} vs {e:?}");
+                    assert_eq!((h.prim, h.level), (e.1, e.2), "ray {i}");
+                    assert_eq!(h.radius_scale, lod.radius_scale(h.level));
+                    if i % 3 == 0 {
+                        assert_eq!(h.level, 0);
+                    }
+                    hits += 1;
+                    coarse += (h.level > 1) as u32;
+                }
+                (None, None) => {}
+                (g, e) => panic!("ray {i}: {g:?} vs {e:?}"),
+            }
+            let blocked = accel.occluded_cone(ray.origin, ray.dir, 12.0, None, ray.cone);
+            assert_eq!(blocked, expected.is_some_and(|e| e.0 < 12.0), "ray {i}");
+        }
+        assert!(hits > 300 && coarse > 50, "the test needs hits at coarse levels: {hits} {coarse}");
+    }
+
+    #[test]
+    fn contrast_moves_colours_toward_the_mean() {
+        let mut s = curtain(2, 0.01, 1);
+        let n = s.points.len();
+        s.colors = Some((0..n).map(|i| if i < n / 2 { [1.0, 0.0, 0.0] } else { [0.0, 0.0, 1.0] }).collect());
+        let off = StrandLod::build(&s, LodParams::default(), 0).unwrap();
+        let on = StrandLod::build(&s, LodParams { contrast: true, ..Default::default() }, 0).unwrap();
+        let red = Some(Vec3::X);
+        assert_eq!(off.color(4, red), red);
+        assert_eq!(on.color(0, red), red);
+        let mean = on.mean_color.unwrap();
+        let c = on.color(2, red).unwrap();
+        // Level 2 with d = 1.5: deviation scaled by 1/1.5.
+        assert!((c - (mean + (Vec3::X - mean) / 1.5)).length() < 1e-6, "{c} {mean}");
+    }
+}
