@@ -22,6 +22,7 @@ fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> 
             transform: Affine3A::IDENTITY,
             radius_scale: 1.0,
             file_colors: false,
+            lod: None,
         }],
         hair_systems: Vec::new(),
     };
