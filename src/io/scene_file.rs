@@ -977,6 +977,27 @@ seed = 7
     }
 
     #[test]
+    fn lod_tables_take_defaults_and_reject_bad_values() {
+        let minimal = &HAIR_SYSTEM[..HAIR_SYSTEM.find("hairs_per_clump").unwrap()];
+        let d = parse(&format!("{minimal}lod = {{ levels = 4 }}\n[render]\nlod = false\n")).unwrap();
+        assert_eq!(d.hair_systems[0].lod, Some(LodParams { levels: 4, ..Default::default() }));
+        assert!(!d.settings.lod);
+        assert!(parse(minimal).unwrap().settings.lod && parse(minimal).unwrap().hair_systems[0].lod.is_none());
+        for (bad, key) in [
+            ("decimation = 1.0", "decimation"),
+            ("levels = 0", "levels"),
+            ("levels = 17", "levels"),
+            ("compensation = nan", "compensation"),
+            ("decimate = 2.0", "decimate"),
+        ] {
+            let e = parse(&format!("{minimal}lod = {{ {bad} }}\n")).unwrap_err().to_string();
+            assert!(e.contains("dir/test.toml") && e.contains(key), "{bad}: {e}");
+        }
+        let e = parse("[[hair]]\nfile = \"h.hair\"\nmaterial = { type = \"mirror\" }\nlod = { levels = 99 }\n");
+        assert!(e.unwrap_err().to_string().contains("hair 1: lod `levels`"));
+    }
+
+    #[test]
     fn physical_hair_material_takes_one_colour_source() {
         let hair =
             |m: &str| parse(&format!("[[hair]]\nfile = \"h.hair\"\nmaterial = {{ type = \"physical\", {m} }}\n"));
