@@ -141,7 +141,8 @@ impl Accel {
             for &object in objects {
                 let o = &self.objects[object as usize];
                 o.bvh.traverse(&test, tmax, |prims, tmax| {
-                    if let Some((prim, t, kind)) = intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false)
+                    if let Some((prim, t, kind)) =
+                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false)
                     {
                         *tmax = t;
                         best = Some(Hit { t, object, prim, kind });

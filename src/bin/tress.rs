@@ -20,7 +20,8 @@ struct Cli {
 enum Command {
     /// Render a scene file (or the built-in demo scene) to an image.
     Render {
-        /// Scene file (TOML); the built-in demo scene when omitted.
+        /// Scene file (TOML), or a reference scene directory of shared/scenes/gen_scenes.py;
+        /// the built-in demo scene when omitted.
         scene: Option<PathBuf>,
         #[command(flatten)]
         overrides: Overrides,
@@ -95,6 +96,8 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
 
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     let mut desc = match scene {
+        // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
+        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
         Some(path) => tress::io::scene_file::read_scene(path)?,
         None => tress::demo::description(o.demo_strands, 1),
     };
@@ -245,17 +248,7 @@ fn info(world: &World) {
 }
 
 fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usize) -> Result<()> {
-    // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
-    let mut desc = match scene {
-        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
-        _ => load(scene, o)?,
-    };
-    if let Some((w, h)) = o.resolution {
-        (desc.settings.width, desc.settings.height) = (w, h);
-    }
-    if let Some(spp) = o.spp {
-        desc.settings.spp = spp;
-    }
+    let desc = load(scene, o)?;
     let all = pool(0)?.current_num_threads();
     let median = |mut v: Vec<f64>| {
         v.sort_by(f64::total_cmp);
