@@ -55,6 +55,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
             radius_scale: 1.0,
             file_colors: true,
         }],
+        fur: vec![],
     }
 }
 

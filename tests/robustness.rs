@@ -23,6 +23,7 @@ fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> 
             radius_scale: 1.0,
             file_colors: false,
         }],
+        fur: vec![],
     };
     prepare(&desc).unwrap().0
 }

@@ -99,6 +99,15 @@ impl StrandSet {
         t0.lerp(t1, s).try_normalize().unwrap_or(t0)
     }
 
+    /// The strand owning segment `i` and the fraction of that strand's length (counted in
+    /// segments, 0 at the root, 1 at the tip) at parameter `s` along the segment.
+    pub fn fraction_along(&self, i: u32, s: f32) -> (u32, f32) {
+        let strand = self.strand_of(i);
+        let (first, last) = (self.offsets[strand as usize], self.offsets[strand as usize + 1] - 1);
+        let segments = (last - first).max(1) as f32;
+        (strand, ((i - first) as f32 + s) / segments)
+    }
+
     /// Colour at parameter `s` along segment `i`, if the set has colours.
     pub fn color(&self, i: u32, s: f32) -> Option<Vec3> {
         self.colors.as_ref().map(|c| Vec3::from(c[i as usize]).lerp(Vec3::from(c[i as usize + 1]), s))
@@ -186,6 +195,15 @@ mod tests {
         assert_eq!((s.strand_count(), s.segment_count()), (3, 4));
         assert_eq!(s.segment_starts(), vec![0, 1, 3, 4]);
         assert_eq!((s.strand_of(2), s.strand_of(3), s.strand_of(6)), (0, 1, 2));
+    }
+
+    #[test]
+    fn fraction_along_counts_segments_from_root_to_tip() {
+        let mut s = set(1, None); // 3 points: 2 segments
+        s.push_strand((0..5).map(|i| (Vec3::new(0.0, i as f32, 0.0), 0.1)));
+        assert_eq!(s.fraction_along(0, 0.0), (0, 0.0));
+        assert_eq!(s.fraction_along(1, 1.0), (0, 1.0));
+        assert_eq!(s.fraction_along(4, 0.5), (1, 0.375));
     }
 
     #[test]

@@ -1,9 +1,10 @@
 //! Scene files in TOML (documented in `docs/scene-format.md`), read into a
 //! [`Description`]. Unknown keys and wrong types are errors naming the file, line and key.
 
+use crate::fur::{AttractorModel, Attractors, FurDescription, Placement};
 use crate::geometry::TriangleMesh;
 use crate::light::Light;
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings};
+use crate::scene::{CameraDesc, Description, FurEntry, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings};
 use crate::shading::{tube::Tube, Material};
 use glam::{Affine3A, Quat, Vec3};
 use serde::Deserialize;
@@ -52,6 +53,8 @@ struct SceneToml {
     mesh: Vec<MeshToml>,
     #[serde(default)]
     hair: Vec<HairToml>,
+    #[serde(default)]
+    fur: Vec<FurToml>,
 }
 
 #[derive(Deserialize)]
@@ -269,6 +272,93 @@ fn default_true() -> bool {
     true
 }
 
+/// A `[[fur]]` entry: its own keys, and every other key a fur attribute.
+#[derive(Deserialize)]
+struct FurToml {
+    /// 1-based, as messages count meshes.
+    mesh: i64,
+    preset: Option<String>,
+    #[serde(default)]
+    seed: u32,
+    #[serde(default)]
+    placement: PlacementToml,
+    guides: Option<PathBuf>,
+    attractors: Option<AttractorsToml>,
+    #[serde(flatten)]
+    attributes: toml::Table,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+enum PlacementToml {
+    #[default]
+    Area,
+    Uv,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AttractorsToml {
+    model: Option<AttractorModelToml>,
+    curves_per_fur: Option<u32>,
+    global_scale: Option<f32>,
+    radius: Option<f32>,
+    power: Option<f32>,
+    influence: Option<f32>,
+    threshold_length: Option<f32>,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum AttractorModelToml {
+    Local,
+    Global,
+}
+
+fn fur(f: &FurToml, meshes: usize, base: &Path) -> Result<FurEntry, String> {
+    if f.mesh < 1 || f.mesh as usize > meshes {
+        return Err(format!("`mesh` = {} names no mesh (give 1 to {meshes}, the [[mesh]] entries in order)", f.mesh));
+    }
+    let mut description = match &f.preset {
+        Some(name) => crate::fur::presets::preset(name)?,
+        None => FurDescription::default(),
+    };
+    description.apply_table(&f.attributes, base)?;
+    let guides = match (&f.guides, &f.attractors) {
+        (Some(file), a) => {
+            let d = Attractors::default();
+            let a = a.as_ref();
+            let attractors = Attractors {
+                model: match a.and_then(|a| a.model.as_ref()) {
+                    Some(AttractorModelToml::Global) => AttractorModel::Global,
+                    Some(AttractorModelToml::Local) => AttractorModel::Local,
+                    None => d.model,
+                },
+                curves_per_fur: a.and_then(|a| a.curves_per_fur).unwrap_or(d.curves_per_fur),
+                global_scale: a.and_then(|a| a.global_scale).unwrap_or(d.global_scale),
+                radius: a.and_then(|a| a.radius).unwrap_or(d.radius),
+                power: a.and_then(|a| a.power).unwrap_or(d.power),
+                influence: a.and_then(|a| a.influence).unwrap_or(d.influence),
+                threshold_length: a.and_then(|a| a.threshold_length).unwrap_or(d.threshold_length),
+            };
+            attractors.validate()?;
+            Some((HairSource::File(base.join(file)), attractors))
+        }
+        (None, Some(_)) => return Err("`attractors` needs `guides`".into()),
+        (None, None) => None,
+    };
+    Ok(FurEntry {
+        mesh: f.mesh as usize - 1,
+        description,
+        placement: match f.placement {
+            PlacementToml::Area => Placement::Area,
+            PlacementToml::Uv => Placement::Uv,
+        },
+        seed: f.seed,
+        guides,
+    })
+}
+
 /// Reads a scene file. Relative paths inside it are relative to its directory.
 pub fn read_scene(path: &Path) -> Result<Description, SceneFileError> {
     let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
@@ -327,12 +417,17 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
             file_colors: h.file_colors,
         });
     }
+    let mut furs = Vec::new();
+    for (i, f) in scene.fur.iter().enumerate() {
+        furs.push(fur(f, meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?);
+    }
     let desc = Description {
         camera: CameraDesc { eye: c.eye.into(), target: c.target.into(), up: c.up.into(), vfov: c.vfov },
         settings,
         lights,
         meshes,
         hair,
+        fur: furs,
     };
     desc.validate().map_err(|e| invalid(e.to_string()))?;
     Ok(desc)

@@ -90,7 +90,7 @@ pub fn trace(
         if f.max_element() <= 0.0 {
             continue;
         }
-        let d = departure(&surface, &hit, ls.dir, matches!(material, Material::Tube(_)));
+        let d = departure(&surface, &hit, ls.dir, matches!(material, Material::Tube(_) | Material::Fur(_)));
         counters.rays += 1;
         // Stop short of the light by a relative margin so its own surface does not block.
         let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
@@ -130,7 +130,7 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
                 // An interpolated normal may face away at grazing angles; keep it usable.
                 normal = geometric;
             }
-            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface };
+            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface, strand: None };
             Surface { sp, hair: None, geometric }
         }
         (Shape::Strands(strands), HitKind::Segment { s, normal }) => {
@@ -144,8 +144,14 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
             // relative to the segment's coordinates, not to the ray's length.
             let p = axis_point + normal * radius;
             let tangent = strands.tangent(hit.prim, s);
-            let sp =
-                ShadingPoint { p, normal, tangent: Some(tangent), color: strands.color(hit.prim, s), backface: false };
+            let sp = ShadingPoint {
+                p,
+                normal,
+                tangent: Some(tangent),
+                color: strands.color(hit.prim, s),
+                backface: false,
+                strand: Some(strands.fraction_along(hit.prim, s)),
+            };
             Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal }
         }
         _ => unreachable!("hit kinds match their shapes"),
