@@ -19,9 +19,9 @@
 //! above 0.5 bend toward `B` (with the lean), below 0.5 away from it. Each of the
 //! `Segments` segments is `Length / Segments` long, in the direction at its midpoint, so
 //! the hair keeps its length whatever the curl. Scraggle turns the direction toward a
-//! smooth random vector (Perlin noise along the hair at `s * ScraggleFrequency`, blended
-//! between a per-hair and a shared field by Scraggle Correlation, expressed in the root
-//! frame) by up to `Scraggle * pi` per hair length.
+//! smooth random direction (Perlin noise along the hair at `s * ScraggleFrequency`, two
+//! components across the root frame's `A, B` plane, blended between a per-hair and a
+//! shared field by Scraggle Correlation) by up to `Scraggle * pi` per hair length.
 //!
 //! **Clumping** (section 3.5): clump centres are scattered like roots, about
 //! `ClumpingFrequency^2` over the surface; each grows a centre hair by the same rules, and
@@ -35,14 +35,13 @@
 
 use super::description::{ColorAttr, FurDescription, Scalar, MAX_DENSITY};
 use super::guides::{Attractors, GuideField};
-use super::maps::{Attributes, SurfacePoint};
+use super::maps::{perlin, Attributes, Perlin, SurfacePoint};
 use super::FurError;
 use crate::geometry::{StrandInfo, StrandSet, TriangleMesh};
 use crate::math::rng::{hash_combine, GenRng};
 use crate::math::{frame, sampling, Color};
 use crate::shading::fur::Fur;
 use glam::{Quat, Vec3};
-use noise::{NoiseFn, Perlin};
 use rand::Rng;
 use rayon::prelude::*;
 use rstar::primitives::GeomWithData;
@@ -157,7 +156,7 @@ struct Grower<'a> {
     seed: u32,
     scraggle: Perlin,
     /// Fixed noise-domain offsets of the scraggle field all hairs share.
-    shared_offset: [f64; 2],
+    shared_offset: [f32; 2],
 }
 
 impl Grower<'_> {
@@ -207,11 +206,11 @@ impl Grower<'_> {
         }
     }
 
-    /// Scraggle direction in the root frame at `x` along the noise: three Perlin values
-    /// from rows `offset[1]`, `offset[1] + 1/3`, `offset[1] + 2/3` of the field.
-    fn scraggle_vector(&self, x: f64, offset: [f64; 2]) -> Vec3 {
-        let at = |row: f64| self.scraggle.get([x + offset[0], offset[1] + row]) as f32;
-        Vec3::new(at(0.0), at(17.31), at(34.77))
+    /// Scraggle direction in the root's A, B plane at `x` along the noise: two Perlin
+    /// values from rows `offset[1]` and `offset[1] + 17.31` of the field.
+    fn scraggle_vector(&self, x: f32, offset: [f32; 2]) -> (f32, f32) {
+        let at = |row: f32| self.scraggle.get_noise_2d(x + offset[0], offset[1] + row);
+        (at(0.0), at(17.31))
     }
 
     /// Writes the `segments + 1` points of a hair growing from `f` into `out`.
@@ -231,7 +230,7 @@ impl Grower<'_> {
         // 2 pi (c(s) - 0.5) with c linear from base to tip (spec section 3.3).
         let curl = |s: f32| TAU * ((h.base_curl - 0.5) * s + 0.5 * (h.tip_curl - h.base_curl) * s * s);
         let scraggle = h.scraggle > 0.0;
-        let own_offset = if scraggle { [rng.random::<f64>() * 4096.0, rng.random::<f64>() * 4096.0] } else { [0.0; 2] };
+        let own_offset = if scraggle { [rng.random::<f32>() * 1024.0, rng.random::<f32>() * 1024.0] } else { [0.0; 2] };
         let mut x = f.p + f.n * h.offset;
         out[0] = x;
         let mut turned = 0.0;
@@ -241,11 +240,12 @@ impl Grower<'_> {
             t = Quat::from_axis_angle(axis, angle - turned) * t;
             turned = angle;
             if scraggle {
-                let xs = (s_mid * h.scraggle_frequency) as f64;
-                let own = self.scraggle_vector(xs, own_offset);
-                let shared = self.scraggle_vector(xs, self.shared_offset);
-                let r = own.lerp(shared, h.scraggle_correlation);
-                let r = a * r.x + b * r.y + h0 * r.z;
+                let xs = s_mid * h.scraggle_frequency;
+                let c = h.scraggle_correlation;
+                // Only the fields that contribute are evaluated: noise is most of the cost.
+                let own = if c < 1.0 { self.scraggle_vector(xs, own_offset) } else { (0.0, 0.0) };
+                let shared = if c > 0.0 { self.scraggle_vector(xs, self.shared_offset) } else { (0.0, 0.0) };
+                let r = a * (own.0 + (shared.0 - own.0) * c) + b * (own.1 + (shared.1 - own.1) * c);
                 if let Some(toward) = (r - t * t.dot(r)).try_normalize() {
                     let q = Quat::from_axis_angle(t.cross(toward).normalize(), h.scraggle * SCRAGGLE_TURN * ds);
                     t = q * t;
@@ -364,7 +364,7 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
         return Err(FurError::Invalid("the mesh's UVs cover no area, so placement = \"uv\" cannot place roots".into()));
     }
     let scraggle_seed = hash_combine(&[seed, SCRAGGLE]);
-    let shared_offset = [(scraggle_seed & 0xffff) as f64 / 16.0, (scraggle_seed >> 16) as f64 / 16.0];
+    let shared_offset = [(scraggle_seed & 0xffff) as f32 / 64.0, (scraggle_seed >> 16) as f32 / 64.0];
     let g = Grower {
         mesh,
         attrs,
@@ -372,7 +372,7 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
         segments,
         global_scale: desc.global_scale,
         seed,
-        scraggle: Perlin::new(scraggle_seed),
+        scraggle: perlin(scraggle_seed),
         shared_offset,
     };
     let density = desc.density as f64;

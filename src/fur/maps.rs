@@ -6,8 +6,8 @@
 //! value(u, v) = clamp(base(u, v) + Noise * n(u * NoiseFreq, v * NoiseFreq), min, max)
 //! ```
 //!
-//! `n` is signed 2-D Perlin noise over the surface UV (noise-rs), one independent field per
-//! attribute derived from the fur seed. A map replaces the global value where present. The
+//! `n` is signed 2-D Perlin noise over the surface UV (FastNoise Lite), one independent
+//! field per attribute derived from the fur seed. A map replaces the global value where present. The
 //! evaluated value is clamped to the attribute's legal range (noise and maps can overshoot
 //! it; the global value itself is checked when read). Scalar image maps use the mean of R,
 //! G and B; colour maps are decoded from sRGB to linear. Image maps wrap (repeat) in UV,
@@ -20,7 +20,6 @@ use crate::io::LoadError;
 use crate::math::rng::hash_combine;
 use crate::math::Color;
 use glam::Vec3;
-use noise::{NoiseFn, Perlin};
 use std::path::Path;
 
 /// Largest accepted map image side, in pixels.
@@ -75,12 +74,11 @@ impl Map {
 }
 
 /// One attribute, ready to evaluate.
-#[derive(Clone, Debug)]
 struct Field {
     value: Vec3,
     map: Option<(Map, f32, f32)>,
     /// Noise field, amplitude, frequency and a domain offset.
-    noise: Option<(Perlin, f32, f64, [f64; 2])>,
+    noise: Option<(Perlin, f32, f32, [f32; 2])>,
     min: f32,
     max: f32,
 }
@@ -96,7 +94,7 @@ impl Field {
             None => self.value,
         };
         if let Some((perlin, amplitude, freq, [ox, oy])) = &self.noise {
-            let n = perlin.get([at.uv[0] as f64 * freq + ox, at.uv[1] as f64 * freq + oy]) as f32;
+            let n = perlin.get_noise_2d(at.uv[0] * freq + ox, at.uv[1] * freq + oy);
             v += Vec3::splat(amplitude * n);
         }
         v.clamp(Vec3::splat(self.min), Vec3::splat(self.max))
@@ -109,7 +107,6 @@ impl Field {
 
 /// A description's attributes resolved on one mesh: maps loaded and checked, noise
 /// fields seeded. Evaluation is read-only and can run on many threads.
-#[derive(Clone, Debug)]
 pub struct Attributes<'a> {
     mesh: &'a TriangleMesh,
     scalars: Vec<Field>,
@@ -176,6 +173,17 @@ fn load_map(source: &MapSource, key: &str, mesh: &TriangleMesh, color: bool) -> 
     }
 }
 
+/// FastNoise Lite's Perlin noise at unit frequency: signed, about [-1, 1].
+pub type Perlin = fastnoise_lite::FastNoiseLite;
+
+/// A Perlin noise field seeded by `seed`, one lattice cell per unit.
+pub fn perlin(seed: u32) -> Perlin {
+    let mut n = Perlin::with_seed(seed as i32);
+    n.set_noise_type(Some(fastnoise_lite::NoiseType::Perlin));
+    n.set_frequency(Some(1.0));
+    n
+}
+
 /// Salt of the noise fields' seeds.
 const NOISE_SALT: u32 = 0x4e4f_4953;
 
@@ -186,7 +194,7 @@ fn noise_field(
     freq: f32,
     key: &str,
     mesh: &TriangleMesh,
-) -> Result<Option<(Perlin, f32, f64, [f64; 2])>, FurError> {
+) -> Result<Option<(Perlin, f32, f32, [f32; 2])>, FurError> {
     if amplitude == 0.0 {
         return Ok(None);
     }
@@ -195,8 +203,8 @@ fn noise_field(
     }
     let h = hash_combine(&[seed, NOISE_SALT, index]);
     // Shift each field's lattice (where Perlin noise is zero) away from the others'.
-    let offset = [(h & 0xffff) as f64 / 256.0, (h >> 16) as f64 / 256.0];
-    Ok(Some((Perlin::new(h), amplitude, freq as f64, offset)))
+    let offset = [(h & 0xffff) as f32 / 256.0, (h >> 16) as f32 / 256.0];
+    Ok(Some((perlin(h), amplitude, freq, offset)))
 }
 
 impl<'a> Attributes<'a> {
