@@ -359,7 +359,7 @@ mod tests {
     fn bad_maps_are_errors_naming_the_problem() {
         let dir = tempfile::tempdir().unwrap();
         let mesh = TriangleMesh::plane(1.0);
-        let err = |d: &FurDescription, mesh: &TriangleMesh| Attributes::resolve(d, mesh, 0).unwrap_err().to_string();
+        let err = |d: &FurDescription, mesh: &TriangleMesh| Attributes::resolve(d, mesh, 0).err().unwrap().to_string();
         let mut d = FurDescription::default();
         d[Scalar::Length].map = Some(MapSource::Image(dir.path().join("absent.png")));
         let e = err(&d, &mesh);

@@ -664,6 +664,54 @@ material = { type = "tube", diffuse = [0.35, 0.2, 0.1], specular = [0.3, 0.3, 0.
         assert!(e.to_string().contains("camera"), "{e}");
     }
 
+    const MESH: &str = "[[mesh]]\nshape = { type = \"torus\" }\nmaterial = { type = \"diffuse\", color = [1, 1, 1] }\n";
+
+    #[test]
+    fn fur_entries_take_a_preset_overrides_maps_and_guides() {
+        use crate::fur::{presets::preset, MapSource, Scalar};
+        let d = parse(&format!(
+            "{MESH}{MESH}[[fur]]\nmesh = 2\npreset = \"Squirrel\"\nseed = 9\nplacement = \"uv\"\nlength = 0.5\n\
+             dbw = 0.02\nlength_map = \"len.png\"\nguides = \"g.hair\"\nattractors = {{ model = \"global\", radius = 2.0 }}\n"
+        ))
+        .unwrap();
+        let f = &d.fur[0];
+        assert_eq!((f.mesh, f.seed, f.placement), (1, 9, Placement::Uv));
+        let mut expected = preset("Squirrel").unwrap();
+        expected[Scalar::Length].value = 0.5;
+        expected[Scalar::BaseWidth].value = 0.02;
+        expected[Scalar::Length].map = Some(MapSource::Image(PathBuf::from("dir/len.png")));
+        assert_eq!(f.description, expected);
+        let (source, a) = f.guides.as_ref().unwrap();
+        assert_eq!(source, &HairSource::File(PathBuf::from("dir/g.hair")));
+        assert_eq!((a.model, a.radius, a.power), (AttractorModel::Global, 2.0, 1.0));
+        // Without a preset: Maya's node defaults.
+        let d = parse(&format!("{MESH}[[fur]]\nmesh = 1\n")).unwrap();
+        assert_eq!(d.fur[0].description, FurDescription::default());
+    }
+
+    #[test]
+    fn bad_fur_entries_are_errors_naming_the_entry_and_key() {
+        for (entry, needles) in [
+            ("mesh = 2", &["fur 1", "mesh"][..]),
+            ("mesh = 0", &["fur 1", "mesh"]),
+            ("mesh = 1\ndensity = -5", &["fur 1", "density", "-5"]),
+            ("mesh = 1\nlength = nan", &["fur 1", "length", "finite"]),
+            ("mesh = 1\nbaldness = 2", &["fur 1", "baldness", "0 to 1"]),
+            ("mesh = 1\nfluffiness = 2", &["fur 1", "fluffiness"]),
+            ("mesh = 1\npreset = \"Chinchilla\"", &["fur 1", "Chinchilla", "Duckling"]),
+            ("mesh = 1\nattractors = { radius = 1.0 }", &["fur 1", "guides"]),
+            ("mesh = 1\nguides = \"g.hair\"\nattractors = { radius = -1.0 }", &["fur 1", "radius"]),
+            ("mesh = 1\nguides = \"g.hair\"\nattractors = { pull = 1.0 }", &["pull"]),
+            ("mesh = 1\nplacement = \"random\"", &["random"]),
+        ] {
+            let e = parse(&format!("{MESH}[[fur]]\n{entry}\n")).unwrap_err().to_string();
+            assert!(e.contains("dir/test.toml"), "{e}");
+            for n in needles {
+                assert!(e.contains(n), "{entry}: `{e}` lacks `{n}`");
+            }
+        }
+    }
+
     #[test]
     fn transforms_compose_scale_rotate_translate() {
         let t = transform(&TransformToml {
