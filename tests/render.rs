@@ -53,3 +53,54 @@ fn demo_matches_the_golden_image() {
     assert!(avg > 20.0 && avg < 200.0, "mean value {avg}");
     assert!(film.pixels.iter().any(|p| p.strand_id >= 0.0), "no hair visible");
 }
+
+/// Strands of opacity `a` in front of a uniform background let through `1 - a` of it on
+/// average (stochastic transparency), and stacked strands multiply their transmittance.
+#[test]
+fn semi_transparent_strands_let_the_background_through() {
+    use glam::{Affine3A, Vec3};
+    use tress::geometry::StrandSet;
+    use tress::light::Light;
+    use tress::math::{rng::PixelSampler, Color, Ray};
+    use tress::render::{trace, Counters};
+    use tress::scene::{CameraDesc, Description, HairEntry, HairSource, RenderSettings};
+    use tress::shading::{tube::Tube, Material};
+    let seen = |opacities: &[f32]| {
+        let mut strands = StrandSet::new();
+        for (i, _) in opacities.iter().enumerate() {
+            // Thick black strands across the view axis, one behind the other.
+            let z = -(i as f32);
+            strands.push_strand([(Vec3::new(-1.0, 0.0, z), 0.2), (Vec3::new(1.0, 0.0, z), 0.2)]);
+        }
+        strands.opacity = Some(opacities.iter().flat_map(|&a| [a, a]).collect());
+        let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
+        let desc = Description {
+            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 10.0 },
+            settings: RenderSettings { width: 8, height: 8, spp: 1, ..Default::default() },
+            lights: vec![Light::Environment { radiance: Color::ONE }],
+            meshes: vec![],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(strands),
+                material: Material::Tube(black),
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: false,
+            }],
+            fur: vec![],
+        };
+        let world = prepare(&desc).unwrap().0;
+        let n = 4096;
+        let mut sum = 0.0;
+        for i in 0..n {
+            let mut sampler = PixelSampler::new(0, 3, 4, i);
+            let ray = Ray::new(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z);
+            sum += trace(&world, &ray, 0, &mut sampler, &mut Counters::default()).0.x;
+        }
+        sum / n as f32
+    };
+    assert_eq!(seen(&[1.0]), 0.0);
+    for (opacities, expected) in [(&[0.25][..], 0.75), (&[0.5, 0.5], 0.25), (&[0.0, 0.9], 0.1)] {
+        let got = seen(opacities);
+        assert!((got - expected).abs() < 0.03, "{opacities:?}: {got} vs {expected}");
+    }
+}

@@ -134,12 +134,21 @@ impl Accel {
 
     /// The closest hit along the ray before `ray.tmax`.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        self.intersect_skipping(ray, None)
+    }
+
+    /// The closest hit along the ray before `ray.tmax`, ignoring the skipped primitives
+    /// (a ray continuing through a semi-transparent strand it has just passed).
+    pub fn intersect_skipping(&self, ray: &Ray, skip: Option<Skip>) -> Option<Hit> {
         let test = RayBoxTest::new(ray.origin, ray.dir);
         let mut tmax = ray.tmax;
         let mut best = None;
         self.top.traverse(&test, &mut tmax, |object, tmax| {
             let o = &self.objects[object as usize];
             o.bvh.traverse(&test, tmax, |prim, tmax| {
+                if skip.is_some_and(|s| s.object == object && (s.first..=s.last).contains(&prim)) {
+                    return false;
+                }
                 if let Some(hit) = intersect_primitive(&o.shape, prim, ray.origin, ray.dir, *tmax) {
                     *tmax = hit.0;
                     best = Some(Hit { t: hit.0, object, prim, kind: hit.1 });

@@ -229,6 +229,15 @@ enum ShapeToml {
         #[serde(default = "default_size")]
         size: f32,
     },
+    Pillow {
+        #[serde(default = "default_size")]
+        size: f32,
+        #[serde(default = "default_thickness")]
+        thickness: f32,
+    },
+}
+fn default_thickness() -> f32 {
+    0.3
 }
 fn default_major() -> f32 {
     1.0
@@ -572,6 +581,10 @@ fn procedural(s: &ShapeToml) -> Result<TriangleMesh, String> {
         ShapeToml::Plane { size } => {
             check("size", &[size], 0.0)?;
             TriangleMesh::plane(size)
+        }
+        ShapeToml::Pillow { size, thickness } => {
+            check("size and thickness", &[size, thickness], 0.0)?;
+            TriangleMesh::pillow(size, thickness, 64)
         }
     })
 }
