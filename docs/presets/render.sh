@@ -10,6 +10,9 @@ if [ ${#names[@]} -eq 0 ]; then
     names=($(ls presets/*.toml | xargs -n1 basename | sed 's/\.toml$//'))
 fi
 for name in "${names[@]}"; do
+    # The skin takes the fur's base colour, as Maya's documentation advises, so gaps
+    # between clumps do not show a foreign colour.
+    skin=$(sed -n 's/^base_color = //p' "presets/$name.toml")
     cat > "$tmp/$name.toml" <<SCENE
 [camera]
 eye = [0.0, 1.9, 3.6]
@@ -27,11 +30,11 @@ irradiance = [3.0, 3.0, 3.0]
 
 [[light]]
 type = "environment"
-radiance = [0.35, 0.35, 0.4]
+radiance = [0.45, 0.45, 0.5]
 
 [[mesh]]
 shape = { type = "torus", major = 1.0, minor = 0.35 }
-material = { type = "diffuse", color = [0.2, 0.2, 0.2] }
+material = { type = "diffuse", color = $skin }
 transform = { rotate = [1.0, 0.0, 0.0, 50.0] }
 
 [[fur]]

@@ -14,7 +14,6 @@ use std::path::Path;
 pub const PRESETS: &[(&str, &str)] = &[
     ("Bear", include_str!("../../presets/Bear.toml")),
     ("Bison", include_str!("../../presets/Bison.toml")),
-    ("CalicoCat", include_str!("../../presets/CalicoCat.toml")),
     ("Dreadlocks", include_str!("../../presets/Dreadlocks.toml")),
     ("Duckling", include_str!("../../presets/Duckling.toml")),
     ("Gorilla", include_str!("../../presets/Gorilla.toml")),
