@@ -73,12 +73,19 @@ impl Map {
     }
 }
 
+/// An attribute's noise: field, amplitude, frequency and a domain offset.
+struct Noise {
+    field: Perlin,
+    amplitude: f32,
+    freq: f32,
+    offset: [f32; 2],
+}
+
 /// One attribute, ready to evaluate.
 struct Field {
     value: Vec3,
     map: Option<(Map, f32, f32)>,
-    /// Noise field, amplitude, frequency and a domain offset.
-    noise: Option<(Perlin, f32, f32, [f32; 2])>,
+    noise: Option<Noise>,
     min: f32,
     max: f32,
 }
@@ -93,9 +100,9 @@ impl Field {
             }
             None => self.value,
         };
-        if let Some((perlin, amplitude, freq, [ox, oy])) = &self.noise {
-            let n = perlin.get_noise_2d(at.uv[0] * freq + ox, at.uv[1] * freq + oy);
-            v += Vec3::splat(amplitude * n);
+        if let Some(n) = &self.noise {
+            let x = n.field.get_noise_2d(at.uv[0] * n.freq + n.offset[0], at.uv[1] * n.freq + n.offset[1]);
+            v += Vec3::splat(n.amplitude * x);
         }
         v.clamp(Vec3::splat(self.min), Vec3::splat(self.max))
     }
@@ -194,7 +201,7 @@ fn noise_field(
     freq: f32,
     key: &str,
     mesh: &TriangleMesh,
-) -> Result<Option<(Perlin, f32, f32, [f32; 2])>, FurError> {
+) -> Result<Option<Noise>, FurError> {
     if amplitude == 0.0 {
         return Ok(None);
     }
@@ -204,7 +211,7 @@ fn noise_field(
     let h = hash_combine(&[seed, NOISE_SALT, index]);
     // Shift each field's lattice (where Perlin noise is zero) away from the others'.
     let offset = [(h & 0xffff) as f32 / 256.0, (h >> 16) as f32 / 256.0];
-    Ok(Some((perlin(h), amplitude, freq, offset)))
+    Ok(Some(Noise { field: perlin(h), amplitude, freq, offset }))
 }
 
 impl<'a> Attributes<'a> {
@@ -309,7 +316,7 @@ mod tests {
         let a = Attributes::resolve(&d, &mesh, 1).unwrap();
         let b = Attributes::resolve(&d, &mesh, 2).unwrap();
         let (mut lo, mut hi, mut differs, mut max_step) = (1.0f32, 0.0f32, false, 0.0f32);
-        let mut prev = None;
+        let mut prev: Option<f32> = None;
         for i in 0..1000 {
             let p = at(0, 0.0, 0.0, [i as f32 / 1000.0, 0.37]);
             let v = a.scalar(Scalar::Inclination, &p);
@@ -317,7 +324,7 @@ mod tests {
             hi = hi.max(v);
             differs |= v != b.scalar(Scalar::Inclination, &p);
             if let Some(q) = prev {
-                max_step = max_step.max((v - q as f32).abs());
+                max_step = max_step.max((v - q).abs());
             }
             prev = Some(v);
         }
