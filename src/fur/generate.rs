@@ -269,10 +269,23 @@ impl Grower<'_> {
     }
 }
 
-/// Clump centre hairs, with their roots in an R*-tree.
+/// Clump centre hairs, and for each triangle the centres that may be nearest to a point
+/// of it.
 struct Clumps {
-    tree: RTree<GeomWithData<[f32; 3], u32>>,
+    /// Centre hairs, `segments + 1` points each.
     points: Vec<Vec3>,
+    /// Surface points the centre hairs grow from.
+    roots: Vec<Vec3>,
+    /// Per triangle, the candidate centres.
+    candidates: Vec<Vec<u32>>,
+}
+
+impl Clumps {
+    /// The centre nearest to surface point `p` of triangle `tri` (lowest index on ties).
+    fn nearest(&self, tri: u32, p: Vec3) -> Option<u32> {
+        let distance = |c: &u32| (self.roots[*c as usize] - p).length_squared();
+        self.candidates[tri as usize].iter().copied().min_by(|a, b| distance(a).total_cmp(&distance(b)))
+    }
 }
 
 fn clumps(g: &Grower, total_weight: f64) -> Clumps {
@@ -288,13 +301,37 @@ fn clumps(g: &Grower, total_weight: f64) -> Clumps {
         })
         .collect();
     let mut points = vec![Vec3::ZERO; roots.len() * np];
-    points.par_chunks_mut(np).zip(roots.par_iter()).for_each(|(out, root)| {
-        let f = g.frame(root);
-        let h = g.shape_params(&f.at);
-        g.shape(&f, &h, &mut stream(g.seed, CLUMP_SHAPE, root.tri, root.k), out);
-    });
-    let items = (0..roots.len()).map(|i| GeomWithData::new(points[i * np].to_array(), i as u32)).collect();
-    Clumps { tree: RTree::bulk_load(items), points }
+    let surface: Vec<Vec3> = points
+        .par_chunks_mut(np)
+        .zip(roots.par_iter())
+        .map(|(out, root)| {
+            let f = g.frame(root);
+            let h = g.shape_params(&f.at);
+            g.shape(&f, &h, &mut stream(g.seed, CLUMP_SHAPE, root.tri, root.k), out);
+            f.p
+        })
+        .collect();
+    let tree =
+        RTree::bulk_load(surface.iter().enumerate().map(|(i, p)| GeomWithData::new(p.to_array(), i as u32)).collect());
+    // A point p of a triangle lies within r (the farthest corner) of its centroid c. Its
+    // nearest centre is no farther from p than c's nearest centre, at d from c, so it lies
+    // within d + 2r of c: those are the candidates.
+    let candidates = (0..g.mesh.indices.len() as u32)
+        .into_par_iter()
+        .map(|tri| {
+            let corners = g.mesh.corners(tri);
+            let c = (corners[0] + corners[1] + corners[2]) / 3.0;
+            let r = corners.iter().map(|v| (*v - c).length()).fold(0.0, f32::max);
+            let Some(nearest) = tree.nearest_neighbor(c.to_array()) else { return Vec::new() };
+            let d = (Vec3::from(*nearest.geom()) - c).length();
+            // A relative margin keeps rounding from dropping the true nearest.
+            let reach = (d + 2.0 * r) * (1.0 + 1e-4) + 1e-6;
+            let mut ids: Vec<u32> = tree.locate_within_distance(c.to_array(), reach * reach).map(|g| g.data).collect();
+            ids.sort_unstable();
+            ids
+        })
+        .collect();
+    Clumps { points, roots: surface, candidates }
 }
 
 /// Placement weight and U tangent of every triangle.
@@ -418,8 +455,8 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
                 g.shape(&f, &h, &mut stream(seed, SHAPE, root.tri, root.k), hair);
                 let mut clump = u32::MAX;
                 if let Some(c) = &clumps {
-                    if let Some(nearest) = c.tree.nearest_neighbor(hair[0].to_array()) {
-                        clump = nearest.data;
+                    if let Some(nearest) = c.nearest(root.tri, f.p) {
+                        clump = nearest;
                         let amount = g.attrs.scalar(Scalar::Clumping, at);
                         let p = 10f32.powf(-g.attrs.scalar(Scalar::ClumpShape, at) / 10.0);
                         let centre = &c.points[clump as usize * np..][..np];
