@@ -111,4 +111,11 @@ fn fur_export_writes_the_grown_fur_and_bad_fur_gives_clear_errors() {
     assert_clear_error(&["fur", "export", "size.toml", "-o", "x.hair"], d, &["fur 1", "polar_map", "2 values"]);
     assert_clear_error(&["fur", "export", "fur.toml", "-o", "x.obj"], d, &["x.obj", ".hair"]);
     assert!(!d.join("x.hair").exists());
+
+    let out = Command::new(env!("CARGO_BIN_EXE_tress")).args(["fur", "presets"]).output().unwrap();
+    let listing = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    for name in ["Duckling:", "Squirrel:", "Llama:", "PolarBear:"] {
+        assert!(listing.lines().any(|l| l.starts_with(name)), "`fur presets` lacks {name}: {listing}");
+    }
 }
