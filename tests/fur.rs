@@ -166,6 +166,23 @@ fn curl_bends_by_the_documented_angle_and_keeps_length() {
 }
 
 #[test]
+fn roll_turns_the_curl_plane_about_the_root_direction() {
+    // Upright hairs curled toward the lean direction B = -z (polar 0.5) at roll 0.5; roll r
+    // turns that bend about the hair's root direction (+y) by (r - 0.5) * 180 degrees.
+    let plane = TriangleMesh::plane(2.0);
+    for r in [0.0f32, 0.25, 0.5, 1.0] {
+        let set = [(Scalar::BaseCurl, 0.8), (Scalar::TipCurl, 0.8), (Scalar::Roll, r)];
+        let fur = grow_on(&plane, &desc(20, 16, &set));
+        let expected = glam::Quat::from_axis_angle(Vec3::Y, (r - 0.5) * PI) * Vec3::NEG_Z;
+        for p in strands(&fur.strands) {
+            let d = p[16] - p[0];
+            let sideways = Vec3::new(d.x, 0.0, d.z).normalize();
+            assert!((sideways - expected).length() < 1e-4, "roll {r}: bends toward {sideways}, not {expected}");
+        }
+    }
+}
+
+#[test]
 fn length_map_halves_length_where_it_is_half() {
     // A 16-bit map: the left half at 0.5, the right half at 1. Hairs whose roots lie
     // between texel centres of one half read that half's value exactly.
