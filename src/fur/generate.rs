@@ -231,13 +231,17 @@ impl Grower<'_> {
         let curl = |s: f32| TAU * ((h.base_curl - 0.5) * s + 0.5 * (h.tip_curl - h.base_curl) * s * s);
         let scraggle = h.scraggle > 0.0;
         let own_offset = if scraggle { [rng.random::<f32>() * 1024.0, rng.random::<f32>() * 1024.0] } else { [0.0; 2] };
+        // Scraggle turns by the same angle at every segment.
+        let (sin_s, cos_s) = (h.scraggle * SCRAGGLE_TURN * ds).sin_cos();
         let mut x = f.p + f.n * h.offset;
         out[0] = x;
         let mut turned = 0.0;
         for (i, point) in out[1..].iter_mut().enumerate() {
             let s_mid = (i as f32 + 0.5) * ds;
             let angle = curl(s_mid);
-            t = Quat::from_axis_angle(axis, angle - turned) * t;
+            // Rodrigues' rotation about the curl axis, which stays perpendicular to t.
+            let (sin_c, cos_c) = (angle - turned).sin_cos();
+            t = t * cos_c + axis.cross(t) * sin_c;
             turned = angle;
             if scraggle {
                 let xs = s_mid * h.scraggle_frequency;
@@ -247,12 +251,15 @@ impl Grower<'_> {
                 let shared = if c > 0.0 { self.scraggle_vector(xs, self.shared_offset) } else { (0.0, 0.0) };
                 let r = a * (own.0 + (shared.0 - own.0) * c) + b * (own.1 + (shared.1 - own.1) * c);
                 if let Some(toward) = (r - t * t.dot(r)).try_normalize() {
-                    let q = Quat::from_axis_angle(t.cross(toward).normalize(), h.scraggle * SCRAGGLE_TURN * ds);
-                    t = q * t;
-                    axis = q * axis;
+                    // Turn t toward `toward`, about n = t x toward, and the curl axis alike.
+                    let n = t.cross(toward);
+                    t = t * cos_s + toward * sin_s;
+                    axis = axis * cos_s + n.cross(axis) * sin_s + n * n.dot(axis) * (1.0 - cos_s);
                 }
             }
             t = t.normalize();
+            // Keep the curl axis a unit vector perpendicular to t against rounding drift.
+            axis = (axis - t * t.dot(axis)).try_normalize().unwrap_or(axis);
             x += t * step;
             *point = x;
         }

@@ -92,6 +92,9 @@ struct Field {
 
 impl Field {
     fn eval(&self, mesh: &TriangleMesh, at: &SurfacePoint, scalar: bool) -> Vec3 {
+        if self.is_uniform() {
+            return self.value.clamp(Vec3::splat(self.min), Vec3::splat(self.max));
+        }
         let mut v = match &self.map {
             Some((map, mult, offset)) => {
                 let m = map.sample(mesh, at);
