@@ -1,7 +1,11 @@
 //! Acceleration: one BVH per object over its primitives, and a top-level BVH over objects.
-//! Answers closest-hit and any-hit (shadow) queries for the integrators.
+//! Answers closest-hit and any-hit (shadow) queries for the integrators, and multi-hit
+//! queries for semi-transparent hair ([`Accel::intersect_k`], [`Accel::transmittance`]).
 
 pub mod bvh;
+mod layers;
+
+pub use layers::{LayerHit, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray};
