@@ -86,6 +86,11 @@ fn leaf_hits(
 }
 
 impl Accel {
+    /// True when some strand set has per-point opacity, so rays must look past hits.
+    pub fn has_transparency(&self) -> bool {
+        self.objects.iter().any(|o| matches!(&o.shape, Shape::Strands(s) if s.opacity.is_some()))
+    }
+
     /// The nearest hits along `ray` beyond `tmin`, sorted by distance, into `out`
     /// (cleared first): at most `k` of them (at least one), ending early at the first
     /// opaque hit. One traversal: once `k` hits are held, or an opaque one, the BVH only

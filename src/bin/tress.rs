@@ -82,6 +82,13 @@ struct Overrides {
     /// Seed of every random decision.
     #[arg(long)]
     seed: Option<u32>,
+    /// Light transport: direct, final-gather or path.
+    #[arg(long, value_parser = parse_integrator)]
+    integrator: Option<tress::scene::Integrator>,
+    /// Partial hits collected per traversal through semi-transparent hair (1 re-traces
+    /// after every hit, the slow way).
+    #[arg(long)]
+    transparency_layers: Option<u32>,
     /// Strands in the demo scene (ignored for scene files).
     #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
     demo_strands: u32,
@@ -91,6 +98,10 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("`{s}` is not WIDTHxHEIGHT"))?;
     let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("`{s}` is not WIDTHxHEIGHT"));
     Ok((parse(w)?, parse(h)?))
+}
+
+fn parse_integrator(s: &str) -> Result<tress::scene::Integrator, String> {
+    tress::scene::Integrator::from_name(s).ok_or_else(|| format!("`{s}` is not direct, final-gather or path"))
 }
 
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
@@ -111,6 +122,13 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     if let Some(seed) = o.seed {
         s.seed = seed;
     }
+    if let Some(i) = o.integrator {
+        s.integrator = i;
+    }
+    if let Some(k) = o.transparency_layers {
+        s.transparency_layers = k;
+    }
+    desc.validate()?;
     Ok(desc)
 }
 
@@ -129,7 +147,15 @@ fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Render { scene, overrides, output, quiet } => render(scene.as_deref(), &overrides, &output, quiet),
         Command::Info { scene, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let o = Overrides {
+                spp: None,
+                threads: None,
+                resolution: None,
+                seed: None,
+                integrator: None,
+                transparency_layers: None,
+                demo_strands,
+            };
             let desc = load(scene.as_deref(), &o)?;
             let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
             info(&world);
@@ -137,7 +163,15 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Export { scene, output, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let o = Overrides {
+                spp: None,
+                threads: None,
+                resolution: None,
+                seed: None,
+                integrator: None,
+                transparency_layers: None,
+                demo_strands,
+            };
             let desc = load(scene.as_deref(), &o)?;
             let geometry = tress::scene::load_geometry(&desc)?;
             let mut all = tress::geometry::StrandSet::new();
@@ -191,7 +225,7 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Re
         times.load.as_secs_f64(),
         times.build.as_secs_f64()
     );
-    eprintln!("render        {secs:.3} s");
+    eprintln!("render        {secs:.3} s ({:?} integrator)", s.integrator);
     eprintln!("rays          {} ({:.2} M rays/s)", stats.rays, stats.rays as f64 / secs / 1e6);
     if let Some(peak) = peak_memory_bytes() {
         eprintln!("peak memory   {}", human_bytes(peak));

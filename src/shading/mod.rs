@@ -7,6 +7,7 @@
 //! integrator follows recursively.
 
 pub mod hair_bsdf;
+pub mod scatter;
 pub mod surface;
 pub mod tube;
 
