@@ -240,7 +240,7 @@ mod tests {
     fn k_nearest_equal_brute_force_on_random_strands() {
         let mut rng = GenRng::seed_from_u64(3);
         let mut strands = StrandSet::new();
-        let mut v = |rng: &mut GenRng| Vec3::new(rng.random(), rng.random(), rng.random()) * 4.0 - 2.0;
+        let v = |rng: &mut GenRng| Vec3::new(rng.random(), rng.random(), rng.random()) * 4.0 - 2.0;
         for _ in 0..400 {
             let (a, b) = (v(&mut rng), v(&mut rng));
             strands.push_strand([(a, 0.02), (a.lerp(b, 0.5), 0.02), (b, 0.02)]);

@@ -57,7 +57,7 @@ pub fn trace(
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    trace_with(world, ray, depth, sampler, counters, &Whitted, true)
+    trace_with(world, ray, depth, sampler, counters, &Whitted { see_emitters: true }, true)
 }
 
 /// What an integrator adds to direct light at a hit; the direct integrator and the final
@@ -85,8 +85,12 @@ pub(super) struct At<'a> {
     pub wo: Vec3,
 }
 
-/// The direct integrator adds specular rays only.
-pub(super) struct Whitted;
+/// The direct integrator adds specular rays only. Without `see_emitters` (light gathered
+/// by the final gather), specular rays do not see lights either: no caustics, whose few
+/// bright samples would be fireflies.
+pub(super) struct Whitted {
+    pub see_emitters: bool,
+}
 
 impl Indirect for Whitted {
     fn specular(
@@ -97,7 +101,7 @@ impl Indirect for Whitted {
         sampler: &mut PixelSampler,
         counters: &mut Counters,
     ) -> Color {
-        trace(world, ray, depth, sampler, counters).0
+        trace_with(world, ray, depth, sampler, counters, self, self.see_emitters).0
     }
     fn diffuse(&self, _: &World, _: &At, _: u32, _: &mut PixelSampler, _: &mut Counters) -> Color {
         Color::ZERO

@@ -5,7 +5,9 @@
 //! hemisphere around a normal (which Turtle did, and which misses the light a strand
 //! transmits from behind). Each gathered ray returns the direct light at the point it
 //! reaches; lights and the environment it sees directly count nothing, since the direct
-//! part of the shading already sampled them.
+//! part of the shading already sampled them, nor do lights it sees through a mirror
+//! (no caustics: a few very bright samples would be fireflies). No irradiance cache yet:
+//! every camera sample gathers anew.
 
 use super::direct::{departure, trace_with, At, Counters, FirstHit, Indirect, Whitted};
 use crate::math::rng::PixelSampler;
@@ -45,7 +47,8 @@ impl Indirect for FinalGather {
             let Some(s) = at.material.sample_scatter(&at.surface.sp, at.wo, sampler) else { continue };
             let d = departure(at.surface, at.hit, s.dir, matches!(at.material, Material::Tube(_)));
             let ray = Ray::new(d.origin, s.dir);
-            sum += s.weight * trace_with(world, &ray, depth + 1, sampler, counters, &Whitted, false).0;
+            sum += s.weight
+                * trace_with(world, &ray, depth + 1, sampler, counters, &Whitted { see_emitters: false }, false).0;
         }
         sum / n as f32
     }
