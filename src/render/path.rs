@@ -95,6 +95,10 @@ pub fn trace(
         if let Some((_, le, light)) = seen_light {
             let w = scatter_pdf.map_or(1.0, |pdf| power_heuristic(pdf, light.pdf(ray.origin, ray.dir)));
             radiance += beta * le * w;
+            if hit.is_none() {
+                // The sun is a disk in the sky: the environment shines there too.
+                radiance += beta * world.background;
+            }
             break;
         }
         let Some(hit) = hit else {
