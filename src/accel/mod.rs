@@ -1,7 +1,11 @@
 //! Acceleration: one BVH per object over its primitives, and a top-level BVH over objects.
-//! Answers closest-hit and any-hit (shadow) queries for the integrators.
+//! Answers closest-hit and any-hit (shadow) queries for the integrators, and multi-hit
+//! queries for semi-transparent hair ([`Accel::intersect_k`], [`Accel::transmittance`]).
 
 pub mod bvh;
+mod layers;
+
+pub use layers::{LayerHit, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray};
@@ -134,22 +138,15 @@ impl Accel {
 
     /// The closest hit along the ray before `ray.tmax`.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        self.intersect_skipping(ray, None)
-    }
-
-    /// The closest hit along the ray before `ray.tmax`, ignoring the skipped primitives
-    /// (a ray continuing through a semi-transparent strand it has just passed).
-    pub fn intersect_skipping(&self, ray: &Ray, skip: Option<Skip>) -> Option<Hit> {
         let test = RayBoxTest::new(ray.origin, ray.dir);
         let mut tmax = ray.tmax;
         let mut best = None;
         self.top.traverse(&test, &mut tmax, |objects, tmax| {
             for &object in objects {
                 let o = &self.objects[object as usize];
-                let skip = skip.filter(|s| s.object == object);
                 o.bvh.traverse(&test, tmax, |prims, tmax| {
                     if let Some((prim, t, kind)) =
-                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, skip, false)
+                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false)
                     {
                         *tmax = t;
                         best = Some(Hit { t, object, prim, kind });

@@ -89,7 +89,7 @@ enum FurCommand {
 }
 
 /// Settings that override the scene file's.
-#[derive(clap::Args)]
+#[derive(clap::Args, Default)]
 struct Overrides {
     /// Samples per pixel.
     #[arg(long)]
@@ -103,6 +103,13 @@ struct Overrides {
     /// Seed of every random decision.
     #[arg(long)]
     seed: Option<u32>,
+    /// Light transport: direct, final-gather or path.
+    #[arg(long, value_parser = parse_integrator)]
+    integrator: Option<tress::scene::Integrator>,
+    /// Partial hits collected per traversal through semi-transparent hair (1 re-traces
+    /// after every hit, the slow way).
+    #[arg(long)]
+    transparency_layers: Option<u32>,
     /// Strands in the demo scene (ignored for scene files).
     #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
     demo_strands: u32,
@@ -112,6 +119,10 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("`{s}` is not WIDTHxHEIGHT"))?;
     let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("`{s}` is not WIDTHxHEIGHT"));
     Ok((parse(w)?, parse(h)?))
+}
+
+fn parse_integrator(s: &str) -> Result<tress::scene::Integrator, String> {
+    tress::scene::Integrator::from_name(s).ok_or_else(|| format!("`{s}` is not direct, final-gather or path"))
 }
 
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
@@ -134,6 +145,13 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     if let Some(seed) = o.seed {
         s.seed = seed;
     }
+    if let Some(i) = o.integrator {
+        s.integrator = i;
+    }
+    if let Some(k) = o.transparency_layers {
+        s.transparency_layers = k;
+    }
+    desc.validate()?;
     Ok(desc)
 }
 
@@ -152,7 +170,7 @@ fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Render { scene, overrides, output, quiet } => render(scene.as_deref(), &overrides, &output, quiet),
         Command::Info { scene, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let o = Overrides { demo_strands, ..Default::default() };
             let desc = load(scene.as_deref(), &o)?;
             let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
             info(&world);
@@ -160,11 +178,11 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Export { scene, output, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
+            let o = Overrides { demo_strands, ..Default::default() };
             export(scene.as_deref(), &o, &output, |_| true)
         }
         Command::Fur { command: FurCommand::Export { scene, output } } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands: 0 };
+            let o = Overrides::default();
             export(Some(&scene), &o, &output, |m| matches!(m, Material::Fur(_)))
         }
         Command::Fur { command: FurCommand::Presets } => {
@@ -233,7 +251,7 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Re
         times.load.as_secs_f64(),
         times.build.as_secs_f64()
     );
-    eprintln!("render        {secs:.3} s");
+    eprintln!("render        {secs:.3} s ({:?} integrator)", s.integrator);
     eprintln!("rays          {} ({:.2} M rays/s)", stats.rays, stats.rays as f64 / secs / 1e6);
     if let Some(peak) = peak_memory_bytes() {
         eprintln!("peak memory   {}", human_bytes(peak));

@@ -30,6 +30,8 @@ pub struct Pixel {
     pub clump_id: f32,
     /// The strand's stable random value in [0, 1); -1 when not hair.
     pub strand_random: f32,
+    /// Camera samples taken in the pixel (more where adaptive supersampling refined).
+    pub samples: f32,
 }
 
 /// An image being rendered: `width * height` pixels, row by row from the top.

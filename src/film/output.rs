@@ -13,7 +13,8 @@
 //!   * `strandAlong`, `rootUV.U`, `rootUV.V`, `clumpId`, `strandRandom`: on hair, the position
 //!     along the strand (0 root, 1 tip), its root's surface UV, its clump (guide) index and its
 //!     stable random value in [0, 1); `-1` where not applicable or unknown,
-//!   * `coverage`: coverage again, as a single channel for tools that do not treat `A` as data.
+//!   * `coverage`: coverage again, as a single channel for tools that do not treat `A` as data,
+//!   * `samples`: camera samples the pixel took (varies with adaptive supersampling).
 //!
 //! Infinite depth is written as `+inf`: EXR stores IEEE 754 floats bit for bit, so it round-trips
 //! through the `exr` crate (and OpenEXR) unchanged, and it cannot be confused with a real distance.
@@ -325,6 +326,7 @@ fn exr_image(
         channel("clumpId", |p| p.clump_id),
         channel("strandRandom", |p| p.strand_random),
         channel("coverage", |p| p.coverage),
+        channel("samples", |p| p.samples),
     ]);
     let size = (film.width as usize, film.height as usize);
     let layer = Layer::new(size, layer_attributes, Encoding::SMALL_LOSSLESS, AnyChannels::sort(channels));
@@ -356,6 +358,7 @@ mod tests {
                     root_uv: [i as f32 * 0.05, 1.0 - i as f32 * 0.05],
                     clump_id: (i / 2) as f32,
                     strand_random: 0.125 * (i % 8) as f32,
+                    samples: (i * 3) as f32,
                 };
             }
         }
@@ -462,7 +465,8 @@ mod tests {
         expect("clumpId", |p| p.clump_id);
         expect("strandRandom", |p| p.strand_random);
         expect("coverage", |p| p.coverage);
-        assert_eq!(layer.channel_data.list.len(), 16);
+        expect("samples", |p| p.samples);
+        assert_eq!(layer.channel_data.list.len(), 17);
         assert_eq!(channel("Z")[0], f32::INFINITY);
 
         let attribute = |name: &str| match layer.attributes.other.get(&Text::from(name)) {

@@ -7,8 +7,8 @@ use crate::hair::ramp::RampValue;
 use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
 use crate::scene::{
-    CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
-    RenderSettings,
+    Adaptive, CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, Integrator,
+    MeshEntry, MeshSource, RenderSettings,
 };
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use crate::shading::{tube::Tube, Material};
@@ -96,12 +96,44 @@ struct RenderToml {
     max_depth: u32,
     #[serde(default)]
     threads: usize,
+    /// `direct`, `final-gather` or `path`.
+    #[serde(default)]
+    integrator: Option<String>,
+    #[serde(default)]
+    transparency_layers: Option<u32>,
+    #[serde(default)]
+    gather_rays: Option<u32>,
+    #[serde(default)]
+    adaptive: Option<AdaptiveToml>,
+}
+
+/// `adaptive = { min_spp = 4, max_spp = 64, threshold = 0.05 }`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AdaptiveToml {
+    min_spp: u32,
+    max_spp: u32,
+    #[serde(default = "default_threshold")]
+    threshold: f32,
+}
+fn default_threshold() -> f32 {
+    0.05
 }
 
 impl Default for RenderToml {
     fn default() -> Self {
         let d = RenderSettings::default();
-        RenderToml { resolution: [d.width, d.height], spp: d.spp, seed: d.seed, max_depth: d.max_depth, threads: 0 }
+        RenderToml {
+            resolution: [d.width, d.height],
+            spp: d.spp,
+            seed: d.seed,
+            max_depth: d.max_depth,
+            threads: 0,
+            integrator: None,
+            transparency_layers: None,
+            gather_rays: None,
+            adaptive: None,
+        }
     }
 }
 fn default_resolution() -> [u32; 2] {
@@ -121,6 +153,9 @@ enum LightToml {
     Distant {
         direction: V3,
         irradiance: V3,
+        /// Degrees; 0 is a sharp light.
+        #[serde(default)]
+        angular_diameter: f32,
     },
     Point {
         position: V3,
@@ -648,6 +683,12 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
     let c = &scene.camera;
     finite("camera", &[c.eye, c.target, c.up].concat())?;
     let r = &scene.render;
+    let defaults = RenderSettings::default();
+    let integrator = match r.integrator.as_deref() {
+        None => defaults.integrator,
+        Some(name) => Integrator::from_name(name)
+            .ok_or_else(|| invalid(format!("render: unknown `integrator` `{name}` (direct, final-gather or path)")))?,
+    };
     let settings = RenderSettings {
         width: r.resolution[0],
         height: r.resolution[1],
@@ -655,6 +696,14 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
         seed: r.seed,
         max_depth: r.max_depth,
         threads: r.threads,
+        integrator,
+        transparency_layers: r.transparency_layers.unwrap_or(defaults.transparency_layers),
+        gather_rays: r.gather_rays.unwrap_or(defaults.gather_rays),
+        adaptive: r.adaptive.as_ref().map(|a| Adaptive {
+            min_spp: a.min_spp,
+            max_spp: a.max_spp,
+            threshold: a.threshold,
+        }),
     };
     let mut lights = Vec::new();
     for (i, l) in scene.light.iter().enumerate() {
@@ -718,11 +767,14 @@ fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
 fn light(l: &LightToml) -> Result<Light, String> {
     const ANY: f32 = f32::NEG_INFINITY;
     Ok(match *l {
-        LightToml::Distant { direction, irradiance } => {
+        LightToml::Distant { direction, irradiance, angular_diameter } => {
             check("direction", &direction, ANY)?;
             check("irradiance", &irradiance, 0.0)?;
+            if !(0.0..=180.0).contains(&angular_diameter) {
+                return Err("`angular_diameter` must be between 0 and 180 degrees".into());
+            }
             let direction = Vec3::from(direction).try_normalize().ok_or("`direction` is zero")?;
-            Light::Distant { direction, irradiance: irradiance.into() }
+            Light::distant(direction, irradiance.into(), angular_diameter.to_radians())
         }
         LightToml::Point { position, intensity } => {
             check("position", &position, ANY)?;

@@ -3,13 +3,17 @@
 //! Random numbers come from (pixel, sample, dimension) only ([`PixelSampler`]), and each
 //! pixel is written by exactly one task, so the image is bit-identical for any thread count.
 
+mod adaptive;
 mod direct;
+mod final_gather;
+mod path;
 
-pub use direct::{trace, Counters};
+pub use direct::{trace, Counters, FirstHit};
 
 use crate::film::{Film, Pixel};
 use crate::math::rng::PixelSampler;
-use crate::scene::World;
+use crate::math::{Color, Ray};
+use crate::scene::{Integrator, World};
 use glam::Vec3;
 use rayon::prelude::*;
 use std::time::{Duration, Instant};
@@ -81,35 +85,67 @@ pub fn render(world: &World, progress: Option<&dyn Progress>) -> (Film, RenderSt
     (film, RenderStats { rays, elapsed: start.elapsed() })
 }
 
+/// Radiance along a camera ray by the world's integrator, and the first hit.
+pub fn trace_camera(
+    world: &World,
+    ray: &Ray,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+) -> (Color, Option<FirstHit>) {
+    match world.settings.integrator {
+        Integrator::Direct => trace(world, ray, 0, sampler, counters),
+        Integrator::FinalGather => final_gather::trace(world, ray, sampler, counters),
+        Integrator::Path => path::trace(world, ray, sampler, counters),
+    }
+}
+
 /// All samples of one pixel, box-filtered; the AOVs come from the first sample that hit.
+/// With adaptive sampling the pixel takes `min_spp` samples, then more in batches of
+/// `min_spp` while they disagree ([`adaptive::Spread`]), up to `max_spp`; sample `s` is
+/// the same whatever the batches, so a pixel refined to `n` samples equals a fixed-rate
+/// render at `n`.
 fn render_pixel(world: &World, x: u32, y: u32, counters: &mut Counters) -> Pixel {
-    let spp = world.settings.spp;
+    let (min, max, threshold) = match world.settings.adaptive {
+        Some(a) => (a.min_spp, a.max_spp, Some(a.threshold)),
+        None => (world.settings.spp, world.settings.spp, None),
+    };
     let mut pixel = Film::new(1, 1).pixels[0];
     let mut sum = Vec3::ZERO;
     let mut hits = 0u32;
-    for s in 0..spp {
-        let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
-        let (jx, jy) = sampler.next_2d();
-        let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
-        let (color, first) = trace(world, &ray, 0, &mut sampler, counters);
-        sum += color;
-        if let Some(f) = first {
-            if hits == 0 {
-                pixel.depth = f.t;
-                pixel.normal = f.normal;
-                pixel.object_id = f.object as f32;
-                pixel.strand_id = f.strand.map_or(-1.0, |s| s as f32);
-                if let Some(sp) = f.strand_point {
-                    pixel.strand_along = sp.along;
-                    pixel.root_uv = sp.root_uv.unwrap_or([-1.0, -1.0]);
-                    pixel.clump_id = sp.clump.map_or(-1.0, |c| c as f32);
-                    pixel.strand_random = sp.random;
+    let mut spread = adaptive::Spread::default();
+    let mut taken = 0;
+    while taken < max {
+        let batch = min.min(max - taken);
+        for s in taken..taken + batch {
+            let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
+            let (jx, jy) = sampler.next_2d();
+            let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
+            let (color, first) = trace_camera(world, &ray, &mut sampler, counters);
+            sum += color;
+            spread.add(color, first.map(|f| (f.object, f.strand)));
+            if let Some(f) = first {
+                if hits == 0 {
+                    pixel.depth = f.t;
+                    pixel.normal = f.normal;
+                    pixel.object_id = f.object as f32;
+                    pixel.strand_id = f.strand.map_or(-1.0, |s| s as f32);
+                    if let Some(sp) = f.strand_point {
+                        pixel.strand_along = sp.along;
+                        pixel.root_uv = sp.root_uv.unwrap_or([-1.0, -1.0]);
+                        pixel.clump_id = sp.clump.map_or(-1.0, |c| c as f32);
+                        pixel.strand_random = sp.random;
+                    }
                 }
+                hits += 1;
             }
-            hits += 1;
+        }
+        taken += batch;
+        if !threshold.is_some_and(|t| spread.needs_more(t)) {
+            break;
         }
     }
-    pixel.color = sum / spp as f32;
-    pixel.coverage = hits as f32 / spp as f32;
+    pixel.color = sum / taken as f32;
+    pixel.coverage = hits as f32 / taken as f32;
+    pixel.samples = taken as f32;
     pixel
 }

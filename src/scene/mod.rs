@@ -42,6 +42,52 @@ pub struct RenderSettings {
     pub max_depth: u32,
     /// Worker threads; 0 uses every core.
     pub threads: usize,
+    /// How light is transported: which integrator renders.
+    pub integrator: Integrator,
+    /// Partial hits collected per traversal for semi-transparent hair (the K of thesis
+    /// section 2.2.8's fast transparency); 1 re-traces the ray after every hit.
+    pub transparency_layers: u32,
+    /// Adaptive supersampling; `None` takes `spp` samples in every pixel.
+    pub adaptive: Option<Adaptive>,
+    /// Rays gathered per camera sample at the first diffuse hit by the final gather.
+    pub gather_rays: u32,
+}
+
+/// The light-transport algorithm.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Integrator {
+    /// Direct light with hard or soft shadows, and mirror and glass recursion (Whitted).
+    #[default]
+    Direct,
+    /// Direct light plus one gathered bounce of indirect light (Turtle's final gather).
+    FinalGather,
+    /// Unbiased path tracing with next-event estimation and multiple importance sampling.
+    Path,
+}
+
+impl Integrator {
+    /// The integrator named `name` (`direct`, `final-gather` or `path`).
+    pub fn from_name(name: &str) -> Option<Integrator> {
+        match name {
+            "direct" => Some(Integrator::Direct),
+            "final-gather" | "final_gather" => Some(Integrator::FinalGather),
+            "path" => Some(Integrator::Path),
+            _ => None,
+        }
+    }
+}
+
+/// Adaptive supersampling: every pixel takes `min_spp` samples, then more in batches of
+/// `min_spp` while its samples differ by more than `threshold` in contrast or hit
+/// different objects or strands, up to `max_spp`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Adaptive {
+    /// Samples every pixel takes.
+    pub min_spp: u32,
+    /// Most samples a pixel takes.
+    pub max_spp: u32,
+    /// Contrast `(max - min) / (max + min)` of a colour channel above which a pixel is refined.
+    pub threshold: f32,
 }
 
 impl Default for CameraDesc {
@@ -53,7 +99,18 @@ impl Default for CameraDesc {
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, spp: 16, seed: 0, max_depth: 5, threads: 0 }
+        RenderSettings {
+            width: 640,
+            height: 480,
+            spp: 16,
+            seed: 0,
+            max_depth: 5,
+            threads: 0,
+            integrator: Integrator::Direct,
+            transparency_layers: 8,
+            adaptive: None,
+            gather_rays: 8,
+        }
     }
 }
 
@@ -225,6 +282,29 @@ impl Description {
         }
         if s.spp == 0 || s.spp > 1 << 20 {
             return Err(PrepareError::Invalid(format!("spp {} is out of range (1 to 1048576)", s.spp)));
+        }
+        if s.transparency_layers == 0 || s.transparency_layers > 64 {
+            return Err(PrepareError::Invalid(format!(
+                "transparency_layers {} is out of range (1 to 64)",
+                s.transparency_layers
+            )));
+        }
+        if s.gather_rays == 0 || s.gather_rays > 4096 {
+            return Err(PrepareError::Invalid(format!("gather_rays {} is out of range (1 to 4096)", s.gather_rays)));
+        }
+        if let Some(a) = s.adaptive {
+            if a.min_spp == 0 || a.min_spp > a.max_spp || a.max_spp > 1 << 20 {
+                return Err(PrepareError::Invalid(format!(
+                    "adaptive sampling needs 1 <= min_spp <= max_spp <= 1048576 (got {} and {})",
+                    a.min_spp, a.max_spp
+                )));
+            }
+            if !(a.threshold.is_finite() && a.threshold >= 0.0) {
+                return Err(PrepareError::Invalid(format!(
+                    "adaptive threshold {} must be finite and >= 0",
+                    a.threshold
+                )));
+            }
         }
         if s.max_depth > 64 {
             return Err(PrepareError::Invalid(format!("max_depth {} is out of range (0 to 64)", s.max_depth)));

@@ -8,6 +8,7 @@
 
 pub mod fur;
 pub mod hair_bsdf;
+pub mod scatter;
 pub mod surface;
 pub mod tube;
 
@@ -140,7 +141,13 @@ impl Material {
     /// True when the material lights itself from the environment through [`Material::ambient`],
     /// so the integrator must not also sample the environment for it.
     pub fn has_ambient_term(&self, sp: &ShadingPoint) -> bool {
-        matches!(self, Material::Tube(_) | Material::Fur(_)) && sp.tangent.is_some()
+        self.shades_whole_circle() && sp.tangent.is_some()
+    }
+
+    /// True for the tangent-based hair models (tube, fur), which shade a strand's whole
+    /// circle alike: rays leaving a hit on hair start on the side facing their direction.
+    pub fn shades_whole_circle(&self) -> bool {
+        matches!(self, Material::Tube(_) | Material::Fur(_))
     }
 
     /// The specular rays to follow from this point for a ray arriving along `-wo`
