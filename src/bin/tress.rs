@@ -20,7 +20,8 @@ struct Cli {
 enum Command {
     /// Render a scene file (or the built-in demo scene) to an image.
     Render {
-        /// Scene file (TOML); the built-in demo scene when omitted.
+        /// Scene file: TOML, Maya ASCII (.ma), pbrt-v4 (.pbrt) or USD text (.usda); the
+        /// built-in demo scene when omitted.
         scene: Option<PathBuf>,
         #[command(flatten)]
         overrides: Overrides,
@@ -41,9 +42,10 @@ enum Command {
     },
     /// Write the scene's render strands (all strand sets, in world space) to a file.
     Export {
-        /// Scene file (TOML); the built-in demo scene when omitted.
+        /// Scene file (TOML, .ma, .pbrt or .usda); the built-in demo scene when omitted.
         scene: Option<PathBuf>,
-        /// Output file: a Cem Yuksel .hair file.
+        /// Output file: a Cem Yuksel .hair file (strands) or a USD text .usda file (strands
+        /// as linear BasisCurves and meshes).
         #[arg(short, long)]
         output: PathBuf,
         /// Strands in the demo scene.
@@ -95,7 +97,17 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
 
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     let mut desc = match scene {
-        Some(path) => tress::io::scene_file::read_scene(path)?,
+        Some(path) => {
+            let (desc, warnings) = if tress::io::imported::is_imported(path) {
+                tress::io::imported::read_imported(path)?.into_description()
+            } else {
+                tress::io::scene_file::read_scene_with_warnings(path)?
+            };
+            for w in warnings {
+                eprintln!("warning: {}: {w}", path.display());
+            }
+            desc
+        }
         None => tress::demo::description(o.demo_strands, 1),
     };
     let s = &mut desc.settings;
@@ -140,6 +152,11 @@ fn run(cli: Cli) -> Result<()> {
             let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
             let desc = load(scene.as_deref(), &o)?;
             let geometry = tress::scene::load_geometry(&desc)?;
+            if output.extension().is_some_and(|e| e.eq_ignore_ascii_case("usda")) {
+                tress::io::usd::write_usd(&output, &geometry.shapes, &geometry.materials)?;
+                eprintln!("wrote {} ({} shapes)", output.display(), geometry.shapes.len());
+                return Ok(());
+            }
             let mut all = tress::geometry::StrandSet::new();
             for (shape, _) in &geometry.shapes {
                 if let Shape::Strands(s) = shape {
@@ -147,7 +164,7 @@ fn run(cli: Cli) -> Result<()> {
                 }
             }
             if !output.extension().is_some_and(|e| e.eq_ignore_ascii_case("hair")) {
-                anyhow::bail!("{}: unsupported export format: use a .hair file name", output.display());
+                anyhow::bail!("{}: unsupported export format: use a .hair or .usda file name", output.display());
             }
             tress::io::hair::write_hair(&output, &all)?;
             eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
