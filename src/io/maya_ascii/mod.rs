@@ -347,7 +347,7 @@ impl<'g> Reader<'g> {
         let world = self.world(n)?;
         let material = Material::Diffuse { color: self.mesh_color(n)? };
         let mut placed = mesh.clone();
-        let transform = to_affine(&world);
+        let transform = finite_affine(g, n, &world)?;
         placed.transform(&transform);
         self.meshes.insert(n, (self.out.meshes.len(), placed));
         self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
@@ -460,6 +460,8 @@ impl<'g> Reader<'g> {
     fn hair_system(&mut self, n: usize, used: &mut [bool]) -> Res<()> {
         let g = self.g;
         let node = &g.nodes[n];
+        let system = hair_attributes(g, n)?;
+        system.validate().map_err(|e| (node.line, format!("hair system {}: {e}", node.name)))?;
         let mut follicles: Vec<(usize, usize)> = Vec::new();
         for c in &g.connections {
             let (follicle, index) = if c.dst == n && self.kind(c.src) == "follicle" {
@@ -507,8 +509,6 @@ impl<'g> Reader<'g> {
             self.out.warnings.push(format!("{}: no follicle with a curve: the hair system gives no hair", node.name));
             return Ok(());
         }
-        let system = hair_attributes(g, n)?;
-        system.validate().map_err(|e| (node.line, format!("hair system {}: {e}", node.name)))?;
         let material = Material::Tube(system.tube());
         self.out.hair_systems.push(HairSystemEntry {
             guides: GuideSource::Inline(Guides { curves, root_uv: Some(root_uv) }),
@@ -534,8 +534,12 @@ impl<'g> Reader<'g> {
         };
         let curve = nurbs_block(words).map_err(|e| (a.line, format!("curve {}: {e}", node.name)))?;
         let world = self.world(n)?;
-        let m = to_affine(&world);
-        Ok(Some(curve.sample(SAMPLES_PER_SPAN).into_iter().map(|p| m.transform_point3(p)).collect()))
+        let m = finite_affine(g, n, &world)?;
+        let points: Vec<Vec3> = curve.sample(SAMPLES_PER_SPAN).into_iter().map(|p| m.transform_point3(p)).collect();
+        if points.iter().any(|p| !p.is_finite()) {
+            return Err((a.line, format!("curve {}: its points overflow single precision", node.name)));
+        }
+        Ok(Some(points))
     }
 
     fn free_curves(&mut self, used: &[bool]) -> Res<()> {
@@ -621,6 +625,7 @@ impl<'g> Reader<'g> {
             return Ok(());
         };
         let m = self.world(cam)?;
+        finite_affine(g, cam, &m)?;
         let eye = m.transform_point3(DVec3::ZERO).as_vec3();
         let forward = m.transform_vector3(DVec3::NEG_Z).as_vec3().normalize_or(Vec3::NEG_Z);
         let up = m.transform_vector3(DVec3::Y).as_vec3().normalize_or(Vec3::Y);
@@ -681,6 +686,7 @@ impl<'g> Reader<'g> {
                 ));
             }
             let m = self.world(n)?;
+            finite_affine(g, n, &m)?;
             let position = m.transform_point3(DVec3::ZERO).as_vec3();
             // Maya lights shine along their local −Z.
             let along = m.transform_vector3(DVec3::NEG_Z).as_vec3().normalize_or(Vec3::NEG_Y);
@@ -801,11 +807,11 @@ fn elements(g: &Graph, n: usize, bases: &[&str], k: usize) -> Res<BTreeMap<usize
             return Err((a.line, format!("{}: `{}` must be numbers", g.nodes[n].name, a.name)));
         };
         let count = match end {
-            Some(e) if e >= start => e - start + 1,
+            Some(e) if e >= start => (e - start).saturating_add(1),
             Some(_) => return Err((a.line, format!("{}: `{}` is an empty range", g.nodes[n].name, a.name))),
             None => v.len() / k,
         };
-        if v.len() != count * k {
+        if Some(v.len()) != count.checked_mul(k) {
             return Err((
                 a.line,
                 format!("{}: `{}` has {} values for {count} elements of {k}", g.nodes[n].name, a.name, v.len()),
@@ -847,6 +853,15 @@ fn euler(r: DVec3, order: i64) -> Option<DMat3> {
 
 fn to_affine(m: &DAffine3) -> Affine3A {
     Affine3A::from_cols_array(&m.to_cols_array().map(|x| x as f32))
+}
+
+/// The world matrix of node `n` in single precision, refused when it does not fit.
+fn finite_affine(g: &Graph, n: usize, m: &DAffine3) -> Res<Affine3A> {
+    let a = to_affine(m);
+    match a.is_finite() {
+        true => Ok(a),
+        false => Err((g.nodes[n].line, format!("{}: its transforms overflow single precision", g.nodes[n].name))),
+    }
 }
 
 /// The direction of increasing U across triangle `t` (from its UV gradient).
@@ -1101,8 +1116,8 @@ fn ramp_keys(g: &Graph, n: usize, short: &str, long: &str, k: usize) -> Res<Opti
         let Value::Numbers(v) = &a.value else { return Err(bad("must be numbers")) };
         match child {
             None => {
-                let count = end.map_or(1, |e| e.saturating_sub(start) + 1);
-                if v.len() != count * (k + 2) {
+                let count = end.map_or(1, |e| e.saturating_sub(start).saturating_add(1));
+                if Some(v.len()) != count.checked_mul(k + 2) {
                     return Err(bad(&format!("needs {} numbers per key (position, value, interpolation)", k + 2)));
                 }
                 for (i, c) in v.chunks(k + 2).enumerate() {

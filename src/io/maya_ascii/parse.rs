@@ -416,6 +416,10 @@ impl Graph {
                 (self.node_or_placeholder(n, line), a.to_string())
             }
         };
+        if values.is_empty() && type_name.is_none() {
+            // Flags only (`setAttr -k off ".v";`): no value to keep.
+            return Ok(());
+        }
         let value = read_value(type_name.as_deref(), &values, line)?;
         self.nodes[node].attrs.push(Attr { name, value, line });
         Ok(())

@@ -273,7 +273,8 @@ fn malformed_lines_are_errors_naming_file_and_line() {
     for (text, line) in [
         ("createNode mesh -n m;\nsetAttr \".vt[0:1]\" 0 0 0 1 0;\nsetAttr \".ed[0]\" 0 1 0;\nsetAttr \".fc[0]\" -type \"polyFaces\" f 1 0;\n", 2),
         ("createNode nurbsCurve -n c;\nsetAttr \".cc\" -type \"nurbsCurve\" 3 1 0 no 3 4 0 0 1 1 4 0 0 0 1 0 0;\ncreateNode hairSystem;\n", 2),
-        ("createNode transform -n t;\n\n\nsetAttr \".t\" -type \"double3\" 1 2;\ncreateNode mesh -p t;\n", 4),
+        ("createNode transform -n t;\n\n\nsetAttr \".t\" -type \"double3\" 1 2;\ncreateNode pointLight -p t;\n", 4),
+        ("createNode transform -n t;\nsetAttr \".s\" -type \"double3\" 1e300 1 1;\ncreateNode pointLight -p t;\n", 3),
         ("createNode hairSystem -n h;\nsetAttr \".cws[0:1]\" 0 1 3 1;\n", 2),
         ("createNode hairSystem -n h;\nsetAttr \".hpc\" -4;\ncreateNode follicle -n f;\n", 2),
         ("requires maya \"2020\";\ncreateNode mesh -n \"m;\n", 2),
