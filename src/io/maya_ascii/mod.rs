@@ -145,6 +145,10 @@ impl<'g> Reader<'g> {
 
     fn read(mut self) -> Res<Imported> {
         let g = self.g;
+        // Malformed transform channels are errors even on transforms nothing renders under.
+        for n in self.of_kind("transform") {
+            self.local(n)?;
+        }
         for n in self.of_kind("mesh").collect::<Vec<_>>() {
             self.mesh(n)?;
         }
