@@ -141,7 +141,9 @@ impl Accel {
             for &object in objects {
                 let o = &self.objects[object as usize];
                 o.bvh.traverse(&test, tmax, |prims, tmax| {
-                    if let Some((prim, t, kind)) = intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None) {
+                    if let Some((prim, t, kind)) =
+                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false)
+                    {
                         *tmax = t;
                         best = Some(Hit { t, object, prim, kind });
                     }
@@ -164,7 +166,7 @@ impl Accel {
                 let o = &self.objects[object as usize];
                 let skip = skip.filter(|s| s.object == object);
                 o.bvh.traverse(&test, t, |prims, t| {
-                    blocked = intersect_leaf(&o.shape, prims, origin, dir, *t, skip).is_some();
+                    blocked = intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true).is_some();
                     blocked
                 });
                 if blocked {
@@ -197,7 +199,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
 }
 
 /// The nearest hit among a leaf's primitives before `tmax`, ignoring `skip`: (primitive,
-/// distance, where). Segments are tested four at a time.
+/// distance, where); with `any`, the first hit found. Segments are tested four at a time.
 #[inline]
 fn intersect_leaf(
     shape: &Shape,
@@ -206,6 +208,7 @@ fn intersect_leaf(
     dir: Vec3,
     tmax: f32,
     skip: Option<Skip>,
+    any: bool,
 ) -> Option<(u32, f32, HitKind)> {
     let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
     let mut best = None;
@@ -216,6 +219,9 @@ fn intersect_leaf(
                 if let Some(h) = triangle::intersect_triangle(origin, dir, 0.0, tmax, m.corners(p)) {
                     tmax = h.t;
                     best = Some((p, h.t, HitKind::Triangle { b1: h.b1, b2: h.b2 }));
+                    if any {
+                        break;
+                    }
                 }
             }
         }
@@ -229,6 +235,11 @@ fn intersect_leaf(
                     }
                 }
                 let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
+                if any && hits.mask != 0 {
+                    // Any lane's hit will do: skip forming the normal.
+                    let lane = hits.mask.trailing_zeros() as usize;
+                    return Some((chunk[lane], hits.t()[lane], HitKind::Segment { s: 0.0, normal: Vec3::ZERO }));
+                }
                 if let Some(lane) = hits.nearest() {
                     if let Some(h) = hits.hit(lane) {
                         tmax = h.t;
@@ -244,7 +255,7 @@ fn intersect_leaf(
 /// One primitive's hit before `tmax`: (distance, where).
 #[cfg(test)]
 fn intersect_primitive(shape: &Shape, prim: u32, origin: Vec3, dir: Vec3, tmax: f32) -> Option<(f32, HitKind)> {
-    intersect_leaf(shape, &[prim], origin, dir, tmax, None).map(|(_, t, k)| (t, k))
+    intersect_leaf(shape, &[prim], origin, dir, tmax, None, false).map(|(_, t, k)| (t, k))
 }
 
 #[cfg(test)]

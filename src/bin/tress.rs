@@ -20,8 +20,9 @@ struct Cli {
 enum Command {
     /// Render a scene file (or the built-in demo scene) to an image.
     Render {
-        /// Scene file: TOML, Maya ASCII (.ma), pbrt-v4 (.pbrt) or USD text (.usda); the
-        /// built-in demo scene when omitted.
+        /// Scene file: TOML, Maya ASCII (.ma), pbrt-v4 (.pbrt) or USD text (.usda), or a
+        /// reference scene directory of shared/scenes/gen_scenes.py; the built-in demo scene
+        /// when omitted.
         scene: Option<PathBuf>,
         #[command(flatten)]
         overrides: Overrides,
@@ -97,6 +98,8 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
 
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     let mut desc = match scene {
+        // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
+        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
         Some(path) => {
             let (desc, warnings) = if tress::io::imported::is_imported(path) {
                 tress::io::imported::read_imported(path)?.into_description()
@@ -262,17 +265,7 @@ fn info(world: &World) {
 }
 
 fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usize) -> Result<()> {
-    // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
-    let mut desc = match scene {
-        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
-        _ => load(scene, o)?,
-    };
-    if let Some((w, h)) = o.resolution {
-        (desc.settings.width, desc.settings.height) = (w, h);
-    }
-    if let Some(spp) = o.spp {
-        desc.settings.spp = spp;
-    }
+    let desc = load(scene, o)?;
     let all = pool(0)?.current_num_threads();
     let median = |mut v: Vec<f64>| {
         v.sort_by(f64::total_cmp);

@@ -100,8 +100,12 @@ impl StrandSet {
     /// Unit tangent at point `i` by central differences inside the strand, one-sided at
     /// its ends (thesis fig. 2.2). Falls back to the nearest non-degenerate difference.
     pub fn point_tangent(&self, i: u32) -> Vec3 {
-        let s = self.strand_of(i) as usize;
-        let (first, last) = (self.offsets[s], self.offsets[s + 1] - 1);
+        self.tangent_in(i, self.strand_of(i) as usize)
+    }
+
+    /// [`StrandSet::point_tangent`] of point `i` of strand `strand`.
+    fn tangent_in(&self, i: u32, strand: usize) -> Vec3 {
+        let (first, last) = (self.offsets[strand], self.offsets[strand + 1] - 1);
         let prev = self.position(i.saturating_sub(1).max(first));
         let next = self.position((i + 1).min(last));
         (next - prev).try_normalize().unwrap_or(Vec3::Y)
@@ -110,8 +114,9 @@ impl StrandSet {
     /// Shading tangent at parameter `s` in [0, 1] along the segment starting at point `i`:
     /// the point tangents interpolated, so shading is smooth across segment joints.
     pub fn tangent(&self, i: u32, s: f32) -> Vec3 {
-        let t0 = self.point_tangent(i);
-        let t1 = self.point_tangent(i + 1);
+        let strand = self.strand_of(i) as usize;
+        let t0 = self.tangent_in(i, strand);
+        let t1 = self.tangent_in(i + 1, strand);
         t0.lerp(t1, s).try_normalize().unwrap_or(t0)
     }
 

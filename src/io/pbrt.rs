@@ -18,12 +18,13 @@
 //! runs linearly from `width0` to `width1` (both default to `width`, 1) along the whole
 //! curve, as in pbrt. Curves sharing a material form one strand set.
 //!
-//! **Hair material.** pbrt's `hair` is the model of Chiang et al. 2016; tress maps it to
-//! the tube model: diffuse = the fibre colour, from `reflectance`, or from `sigma_a` by
-//! inverting Chiang et al.'s colour → absorption fit (their eq. 9), or from `eumelanin`
-//! and `pheomelanin` through the melanin absorption coefficients pbrt uses (d'Eon et al.
-//! 2011; eumelanin 1.3 when nothing is given, pbrt's default); specular power = 1/v for
-//! the longitudinal variance v of `beta_m` (Chiang et al. eq. 7).
+//! **Hair material.** pbrt's `hair` is the model of Chiang et al. 2016, as is tress's
+//! `physical` material, which takes its parameters: `beta_m`, `beta_n`, `alpha`, `eta`,
+//! and the absorption from `sigma_a` (as the colour Chiang et al. §4.2 maps to it, which
+//! tress maps back), `reflectance` (that colour) or `eumelanin` and `pheomelanin` (1.3 and
+//! 0 when nothing is given, pbrt's default). The melanin concentrations mean the same
+//! pigment in both renderers; their RGB absorption coefficients differ slightly (pbrt
+//! integrates d'Eon et al. 2011's spectra itself).
 //!
 //! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
 //! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the
@@ -39,7 +40,8 @@ use crate::geometry::curve::{cubic_point, CubicBasis};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::Light;
 use crate::scene::{CameraDesc, HairEntry, HairSource, MeshEntry, MeshSource};
-use crate::shading::{tube::Tube, Material};
+use crate::shading::hair_bsdf::{color_polynomial, Absorption, HairParams, PhysicalHair};
+use crate::shading::Material;
 use glam::{Affine3A, DMat4, DVec3, Vec3};
 use std::collections::{BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
@@ -486,7 +488,7 @@ impl Parser {
     fn material(&mut self, kind: &str, p: &Params) -> Res<usize> {
         let w = &mut self.warnings;
         let m = match kind {
-            "hair" => Material::Tube(hair_tube(p, w)?),
+            "hair" => Material::Physical(hair_material(p, w)?),
             "diffuse" => Material::Diffuse { color: p.color("reflectance", Vec3::splat(0.5), w)? },
             "dielectric" | "thindielectric" => {
                 let eta = p.float("eta", 1.5)?;
@@ -508,7 +510,6 @@ impl Parser {
         let finite = |c: Vec3| c.is_finite() && c.min_element() >= 0.0;
         let ok = match &m {
             Material::Diffuse { color } | Material::Mirror { color } => finite(*color),
-            Material::Tube(t) => finite(t.diffuse) && t.specular_power.is_finite(),
             _ => true,
         };
         if !ok {
@@ -875,41 +876,46 @@ fn triangle_mesh(p: &Params) -> Res<TriangleMesh> {
 
 // ----- hair material -----
 
-/// Absorption of eumelanin and pheomelanin per unit concentration (d'Eon et al. 2011, the
-/// values pbrt-v4's hair material uses).
-const EUMELANIN_SIGMA_A: [f64; 3] = [0.419, 0.697, 1.37];
-const PHEOMELANIN_SIGMA_A: [f64; 3] = [0.187, 0.4, 1.05];
-
-/// The tube material standing in for pbrt's `hair` (see the module documentation).
-fn hair_tube(p: &Params, w: &mut BTreeSet<String>) -> Res<Tube> {
-    let beta_m = p.float("beta_m", 0.3)?;
-    let beta_n = p.float("beta_n", 0.3)?;
-    if !((0.0..=1.0).contains(&beta_m) && (0.0..=1.0).contains(&beta_n)) {
-        return Err((p.line, format!("beta_m {beta_m} and beta_n {beta_n} must be between 0 and 1")));
-    }
-    // Chiang et al. 2016, eq. 9: sigma_a = (ln C / D(beta_n))², so C = exp(−sqrt(sigma_a) D).
-    let d = 5.969 - 0.215 * beta_n + 2.532 * beta_n.powi(2) - 10.73 * beta_n.powi(3)
-        + 5.574 * beta_n.powi(4)
-        + 0.245 * beta_n.powi(5);
-    let from_sigma = |s: [f64; 3]| Vec3::from_array(s.map(|x| (-(x.max(0.0)).sqrt() * d).exp() as f32));
-    let diffuse = if p.get("sigma_a").is_some() {
-        let s = p.color("sigma_a", Vec3::ZERO, w)?;
-        from_sigma(s.as_dvec3().to_array())
-    } else if p.get("reflectance").is_some() {
-        p.color("reflectance", Vec3::splat(0.5), w)?
-    } else {
-        let eu = p.float("eumelanin", if p.get("pheomelanin").is_some() { 0.0 } else { 1.3 })?;
-        let pheo = p.float("pheomelanin", 0.0)?;
-        if !(eu >= 0.0 && pheo >= 0.0) {
-            return Err((p.line, "melanin concentrations must not be negative".into()));
+/// The physical hair material standing in for pbrt's `hair` (see the module documentation).
+fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
+    let defaults = HairParams::default();
+    let beta = |name: &str, d: f32| -> Res<f32> {
+        let v = p.float(name, d as f64)?;
+        match (0.0..=1.0).contains(&v) {
+            // pbrt allows 0; tress's model needs a little roughness.
+            true => Ok((v as f32).max(1e-3)),
+            false => Err((p.get(name).map_or(p.line, |q| q.line), format!("{name} {v} must be between 0 and 1"))),
         }
-        from_sigma([0, 1, 2].map(|i| eu * EUMELANIN_SIGMA_A[i] + pheo * PHEOMELANIN_SIGMA_A[i]))
     };
-    // Chiang et al. 2016, eq. 7: longitudinal variance v of beta_m; a Phong-like lobe
-    // cos^n has variance about 1/n.
-    let v = (0.726 * beta_m + 0.812 * beta_m.powi(2) + 3.7 * beta_m.powi(20)).powi(2);
-    let specular_power = (1.0 / v.max(1e-4)).min(1e4) as f32;
-    Ok(Tube { ambient: diffuse, diffuse, specular: Vec3::splat(0.3), specular_power })
+    let (beta_m, beta_n) = (beta("beta_m", defaults.beta_m)?, beta("beta_n", defaults.beta_n)?);
+    let absorption = if p.get("sigma_a").is_some() {
+        let s = p.color("sigma_a", Vec3::ZERO, w)?;
+        // Chiang et al. 2016 §4.2 inverted: C = exp(−sqrt(σ_a) · poly(β_n)).
+        let k = color_polynomial(beta_n);
+        let c = Vec3::from_array(s.to_array().map(|x| (-(x.max(0.0)).sqrt() * k).exp()));
+        if c.min_element() < 1e-4 {
+            w.insert("sigma_a beyond what a colour can carry (very dark hair) is clamped".into());
+        }
+        Absorption::Color(c.clamp(Vec3::ZERO, Vec3::ONE))
+    } else if p.get("reflectance").is_some() {
+        Absorption::Color(p.color("reflectance", Vec3::splat(0.5), w)?.clamp(Vec3::ZERO, Vec3::ONE))
+    } else {
+        let melanin = |name: &str, d: f64| -> Res<f32> { Ok(p.float(name, d)? as f32) };
+        let given = p.get("eumelanin").is_some() || p.get("pheomelanin").is_some();
+        Absorption::Melanin {
+            eumelanin: melanin("eumelanin", if given { 0.0 } else { 1.3 })?,
+            pheomelanin: melanin("pheomelanin", 0.0)?,
+        }
+    };
+    let params = HairParams {
+        absorption,
+        beta_m,
+        beta_n,
+        alpha_degrees: p.float("alpha", defaults.alpha_degrees as f64)? as f32,
+        eta: p.float("eta", defaults.eta as f64)? as f32,
+    };
+    params.validate().map_err(|e| (p.line, format!("hair material: {e}")))?;
+    Ok(PhysicalHair::new(params))
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ use crate::light::Light;
 use crate::scene::{
     CameraDesc, Description, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, RenderSettings,
 };
+use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use crate::shading::{tube::Tube, Material};
 use glam::{Affine3A, Quat, Vec3};
 use serde::Deserialize;
@@ -196,6 +197,35 @@ enum MaterialToml {
         #[serde(default = "default_specular_power")]
         specular_power: f32,
     },
+    /// The physical hair BSDF; exactly one of melanin, `color` and `from_file`.
+    Physical {
+        eumelanin: Option<f32>,
+        pheomelanin: Option<f32>,
+        color: Option<V3>,
+        #[serde(default)]
+        from_file: bool,
+        #[serde(default = "default_beta_m")]
+        beta_m: f32,
+        #[serde(default = "default_beta_n")]
+        beta_n: f32,
+        /// Degrees.
+        #[serde(default = "default_alpha")]
+        alpha: f32,
+        #[serde(default = "default_hair_eta")]
+        eta: f32,
+    },
+}
+fn default_beta_m() -> f32 {
+    HairParams::default().beta_m
+}
+fn default_beta_n() -> f32 {
+    HairParams::default().beta_n
+}
+fn default_alpha() -> f32 {
+    HairParams::default().alpha_degrees
+}
+fn default_hair_eta() -> f32 {
+    HairParams::default().eta
 }
 fn one3() -> V3 {
     [1.0; 3]
@@ -714,6 +744,25 @@ fn material(m: &MaterialToml) -> Result<Material, String> {
                 specular_power,
             })
         }
+        MaterialToml::Physical { eumelanin, pheomelanin, color, from_file, beta_m, beta_n, alpha, eta } => {
+            let melanin = eumelanin.is_some() || pheomelanin.is_some();
+            let absorption = match (melanin, color, from_file) {
+                (true, None, false) => {
+                    Absorption::Melanin { eumelanin: eumelanin.unwrap_or(0.0), pheomelanin: pheomelanin.unwrap_or(0.0) }
+                }
+                (false, Some(c), false) => Absorption::Color(c.into()),
+                (false, None, true) => Absorption::FromStrands,
+                _ => {
+                    return Err(
+                        "physical: give exactly one of `eumelanin`/`pheomelanin`, `color` and `from_file = true`"
+                            .into(),
+                    )
+                }
+            };
+            let params = HairParams { absorption, beta_m, beta_n, alpha_degrees: alpha, eta };
+            params.validate().map_err(|m| format!("physical: {m}"))?;
+            Material::Physical(PhysicalHair::new(params))
+        }
     })
 }
 
@@ -927,6 +976,47 @@ seed = 7
                 assert!(e.contains(w), "`{follicles}`: {e}");
             }
         }
+    }
+
+    #[test]
+    fn physical_hair_material_takes_one_colour_source() {
+        let hair =
+            |m: &str| parse(&format!("[[hair]]\nfile = \"h.hair\"\nmaterial = {{ type = \"physical\", {m} }}\n"));
+        let params = |m: &str| match &hair(m).unwrap().hair[0].material {
+            Material::Physical(p) => *p.params(),
+            m => panic!("{m:?}"),
+        };
+        let p = params("eumelanin = 1.3");
+        assert_eq!(p, HairParams::default());
+        assert_eq!(p.beta_m, 0.3);
+        assert_eq!(p.alpha_degrees, 2.0);
+        assert_eq!(p.eta, 1.55);
+        let p = params("pheomelanin = 0.5, beta_m = 0.1, beta_n = 0.7, alpha = -3.0, eta = 1.6");
+        assert_eq!(p.absorption, Absorption::Melanin { eumelanin: 0.0, pheomelanin: 0.5 });
+        assert_eq!((p.beta_m, p.beta_n, p.alpha_degrees, p.eta), (0.1, 0.7, -3.0, 1.6));
+        assert_eq!(params("color = [0.8, 0.6, 0.3]").absorption, Absorption::Color(Vec3::new(0.8, 0.6, 0.3)));
+        assert_eq!(params("from_file = true").absorption, Absorption::FromStrands);
+        for bad in [
+            "",
+            "from_file = false",
+            "eumelanin = 1.0, color = [0.5, 0.5, 0.5]",
+            "color = [0.5, 0.5, 0.5], from_file = true",
+        ] {
+            let e = hair(bad).unwrap_err().to_string();
+            assert!(e.contains("hair 1") && e.contains("exactly one"), "{bad}: {e}");
+        }
+        for (bad, key) in [
+            ("eumelanin = -1.0", "eumelanin"),
+            ("color = [2.0, 0.5, 0.5]", "color"),
+            ("eumelanin = 1.0, beta_m = 0.0", "beta_m"),
+            ("eumelanin = 1.0, eta = 0.5", "eta"),
+            ("eumelanin = 1.0, alpha = 60.0", "alpha"),
+        ] {
+            let e = hair(bad).unwrap_err().to_string();
+            assert!(e.contains("hair 1") && e.contains(key), "{bad}: {e}");
+        }
+        let e = hair("eumelanin = 1.0, roughness = 0.3").unwrap_err().to_string();
+        assert!(e.contains("roughness"), "{e}");
     }
 
     #[test]

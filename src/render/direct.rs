@@ -3,6 +3,7 @@
 
 use crate::accel::{Hit, HitKind, Shape, Skip};
 use crate::geometry::StrandPoint;
+use crate::light::{Light, LightSample};
 use crate::math::rng::PixelSampler;
 use crate::math::{offset_origin, Color, Ray};
 use crate::scene::World;
@@ -92,7 +93,16 @@ pub fn trace(
             continue; // the tube model's ambient term already stands for the environment
         }
         let normal = if tube_hair { None } else { Some(sp.normal) };
-        let Some(ls) = light.sample(sp.p, normal, sampler.next_2d()) else { continue };
+        let ls = match *light {
+            // A constant environment is best sampled by a material that can sample its own
+            // response (the hair BSDF, whose lobes the sphere's uniform samples would miss).
+            Light::Environment { radiance } => match material.sample_direction(sp, wo, sampler) {
+                Some((dir, pdf)) => Some(LightSample { dir, dist: f32::INFINITY, value: radiance / pdf }),
+                None => light.sample(sp.p, normal, sampler.next_2d()),
+            },
+            _ => light.sample(sp.p, normal, sampler.next_2d()),
+        };
+        let Some(ls) = ls else { continue };
         let f = material.response(sp, wo, ls.dir);
         if f.max_element() <= 0.0 {
             continue;

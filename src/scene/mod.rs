@@ -250,7 +250,7 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
         materials.push(m.material.clone());
     }
-    for h in &desc.hair {
+    for (i, h) in desc.hair.iter().enumerate() {
         let mut strands = match &h.source {
             HairSource::File(path) => io::hair::read_hair(path)?,
             HairSource::Inline(s) => s.clone(),
@@ -261,6 +261,19 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         }
         if !h.file_colors {
             strands.colors = None;
+        }
+        if let Material::Physical(m) = &h.material {
+            if m.needs_strand_colors() && strands.colors.is_none() {
+                let from = match &h.source {
+                    HairSource::File(path) => path.display().to_string(),
+                    HairSource::Inline(_) => "the strand set".into(),
+                };
+                return Err(PrepareError::Invalid(format!(
+                    "hair {}: the material takes its colour from the strands (`from_file`), but {from} has no \
+                     colours (or `file_colors = false` drops them)",
+                    i + 1
+                )));
+            }
         }
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());

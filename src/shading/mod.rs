@@ -2,12 +2,15 @@
 //!
 //! Every material answers one question for direct lighting, [`Material::response`]: the
 //! radiance leaving towards `wo` per unit of light arriving from `wi` (a BRDF times the
-//! cosine for surfaces; the tube model for hair). Mirror and glass answer through
-//! [`Material::specular`] instead, which the integrator follows recursively.
+//! cosine for surfaces; the tube model or the physical hair BSDF times its cosine for
+//! hair). Mirror and glass answer through [`Material::specular`] instead, which the
+//! integrator follows recursively.
 
+pub mod hair_bsdf;
 pub mod surface;
 pub mod tube;
 
+use crate::math::rng::PixelSampler;
 use crate::math::Color;
 use glam::Vec3;
 
@@ -42,6 +45,8 @@ pub enum Material {
     },
     /// The thesis' tube shading for hair (section 2.1.8, eq. 2.1 to 2.3).
     Tube(tube::Tube),
+    /// The physically based hair BSDF of Chiang et al. 2016 ([`hair_bsdf`]).
+    Physical(hair_bsdf::PhysicalHair),
 }
 
 /// Where and how a ray met a surface or a strand, as the materials need it.
@@ -87,6 +92,24 @@ impl Material {
                 // Tube shading on a surface: fall back to Lambert with the diffuse colour.
                 None => surface::lambert(sp.color.unwrap_or(t.diffuse), sp.normal, wi),
             },
+            Material::Physical(h) => match sp.tangent {
+                Some(tangent) => h.response(sp.color, tangent, sp.normal, wo, wi),
+                // On a surface: Lambert with the colour the absorption stands for.
+                None => surface::lambert(h.surface_color(sp.color), sp.normal, wi),
+            },
+        }
+    }
+
+    /// A direction `wi` drawn in proportion to the material's response, and its
+    /// solid-angle density, for materials that can importance-sample themselves: the hair
+    /// BSDF on hair. `None` for the others, which then draw nothing from `sampler`.
+    pub fn sample_direction(&self, sp: &ShadingPoint, wo: Vec3, sampler: &mut PixelSampler) -> Option<(Vec3, f32)> {
+        match (self, sp.tangent) {
+            (Material::Physical(h), Some(tangent)) => {
+                let u = [sampler.next_1d(), sampler.next_1d(), sampler.next_1d(), sampler.next_1d()];
+                h.sample(sp.color, tangent, sp.normal, wo, u)
+            }
+            _ => None,
         }
     }
 

@@ -41,9 +41,11 @@ fn a_hair_scene_reads_camera_film_lights_curves_and_meshes() {
     assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.4, 0.6) });
     let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
     assert_eq!(set.strand_count(), 2);
-    // Hair material: melanin colour, brighter red than blue (eumelanin absorbs blue most).
-    let Material::Tube(t) = &s.hair[0].material else { panic!() };
-    assert!(t.diffuse.x > t.diffuse.y && t.diffuse.y > t.diffuse.z, "{}", t.diffuse);
+    // Hair material: the physical model with the file's melanin and roughness, the rest
+    // pbrt's defaults.
+    let Material::Physical(h) = &s.hair[0].material else { panic!() };
+    let want = HairParams { absorption: Absorption::Melanin { eumelanin: 0.3, pheomelanin: 0.0 }, beta_m: 0.25, ..HairParams::default() };
+    assert_eq!(*h.params(), want);
 }
 
 #[test]
@@ -96,8 +98,8 @@ fn includes_named_materials_and_degree_two_curves() {
     // A quadratic Bézier's midpoint is (P0 + 2 P1 + P2) / 4 = (1, 0.5, 0).
     let mid = set.points[4];
     assert!((Vec3::new(mid[0], mid[1], mid[2]) - Vec3::new(1.0, 0.5, 0.0)).length() < 1e-5, "{mid:?}");
-    let Material::Tube(t) = &s.hair[0].material else { panic!() };
-    assert_eq!(t.diffuse, Vec3::new(0.5, 0.4, 0.3));
+    let Material::Physical(h) = &s.hair[0].material else { panic!() };
+    assert_eq!(h.params().absorption, Absorption::Color(Vec3::new(0.5, 0.4, 0.3)));
     // An include cycle is an error, not a hang.
     std::fs::write(dir.path().join("loop.pbrt"), "Include \"loop.pbrt\"\n").unwrap();
     let e = read_pbrt(&dir.path().join("loop.pbrt")).unwrap_err().to_string();
@@ -125,6 +127,15 @@ fn malformed_files_give_line_numbered_errors() {
         };
         assert!(e.starts_with(&format!("dir/scene.pbrt: line {line}:")), "{text:?}: {e}");
     }
+}
+
+#[test]
+fn sigma_a_round_trips_through_the_physical_material() {
+    // A σ_a given to pbrt reaches the BSDF unchanged (through Chiang's colour mapping).
+    let s = read("Material \"hair\" \"rgb sigma_a\" [0.2 0.5 1.1] \"float beta_n\" 0.4\nShape \"curve\" \"point3 P\" [0 0 0 0 1 0 0 2 0 0 3 0]\n").unwrap();
+    let Material::Physical(h) = &s.hair[0].material else { panic!() };
+    let sigma = h.sigma_a(None);
+    assert!((sigma - Vec3::new(0.2, 0.5, 1.1)).abs().max_element() < 1e-4, "{sigma}");
 }
 
 proptest! {
