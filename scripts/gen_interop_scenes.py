@@ -197,7 +197,7 @@ AttributeBegin
   Shape "plymesh" "string filename" "box.ply"
 AttributeEnd
 AttributeBegin
-  Material "hair" "float eumelanin" [ 0.8 ] "float pheomelanin" [ 0.3 ] "float beta_m" [ 0.25 ]
+  Material "hair" "float eumelanin" [ 0.3 ] "float pheomelanin" [ 0.1 ] "float beta_m" [ 0.25 ]
   Include "pbrt_hair_curves.pbrt"
 AttributeEnd
 """)

@@ -36,7 +36,7 @@ impl CubicBasis {
     pub fn segments(self, points: usize) -> usize {
         match self {
             _ if points < 4 => 0,
-            CubicBasis::Bezier if (points - 1) % 3 != 0 => 0,
+            CubicBasis::Bezier if !(points - 1).is_multiple_of(3) => 0,
             b => (points - 4) / b.step() + 1,
         }
     }

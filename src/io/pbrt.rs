@@ -845,7 +845,7 @@ fn triangle_mesh(p: &Params) -> Res<TriangleMesh> {
         None if n == 3 => vec![0.0, 1.0, 2.0],
         None => return Err((p.line, "trianglemesh without \"integer indices\" (only 3 points may omit them)".into())),
     };
-    if indices.len() % 3 != 0 {
+    if !indices.len().is_multiple_of(3) {
         return Err((p.line, format!("{} indices is not a multiple of 3", indices.len())));
     }
     let mut tris = Vec::with_capacity(indices.len() / 3);

@@ -633,7 +633,7 @@ pub fn usda_text(shapes: &[(Shape, u32)], materials: &[Material]) -> Res<String>
                     continue;
                 }
                 curves += 1;
-                let c = BasisCurves::define(&stage, sdf::path(&format!("/World/Hair{curves}"))?)?;
+                let c = BasisCurves::define(&stage, sdf::path(format!("/World/Hair{curves}"))?)?;
                 c.create_type_attr()?.set(sdf::Value::Token("linear".into()))?;
                 let range = |i: usize| s.offsets[i] as usize..s.offsets[i + 1] as usize;
                 let counts = keep.iter().map(|&i| (s.offsets[i + 1] - s.offsets[i]) as i32).collect();
@@ -654,7 +654,7 @@ pub fn usda_text(shapes: &[(Shape, u32)], materials: &[Material]) -> Res<String>
             }
             Shape::Mesh(mesh) => {
                 meshes += 1;
-                let m = Mesh::define(&stage, sdf::path(&format!("/World/Mesh{meshes}"))?)?;
+                let m = Mesh::define(&stage, sdf::path(format!("/World/Mesh{meshes}"))?)?;
                 m.create_points_attr()?.set(sdf::Value::Vec3fVec(mesh.positions.iter().map(|p| v3(*p)).collect()))?;
                 m.create_face_vertex_counts_attr()?.set(sdf::Value::IntVec(vec![3; mesh.indices.len()]))?;
                 let idx = mesh.indices.iter().flatten().map(|&i| i as i32).collect();

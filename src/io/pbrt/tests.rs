@@ -44,7 +44,11 @@ fn a_hair_scene_reads_camera_film_lights_curves_and_meshes() {
     // Hair material: the physical model with the file's melanin and roughness, the rest
     // pbrt's defaults.
     let Material::Physical(h) = &s.hair[0].material else { panic!() };
-    let want = HairParams { absorption: Absorption::Melanin { eumelanin: 0.3, pheomelanin: 0.0 }, beta_m: 0.25, ..HairParams::default() };
+    let want = HairParams {
+        absorption: Absorption::Melanin { eumelanin: 0.3, pheomelanin: 0.0 },
+        beta_m: 0.25,
+        ..HairParams::default()
+    };
     assert_eq!(*h.params(), want);
 }
 
