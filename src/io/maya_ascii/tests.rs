@@ -1,3 +1,6 @@
+//! Maya ASCII import against a small scene written as Maya writes them: counts, attribute
+//! values, node defaults, curve knots, line-numbered errors, and random or mutated input.
+
 use super::fur::MayaFur;
 use super::*;
 use proptest::prelude::*;

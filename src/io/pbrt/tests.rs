@@ -1,3 +1,6 @@
+//! pbrt-v4 import: camera, lights, curves against their control points, materials,
+//! includes, line-numbered errors, and random or mutated input.
+
 use super::*;
 use proptest::prelude::*;
 

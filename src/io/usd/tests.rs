@@ -1,3 +1,6 @@
+//! USD text import and export: curves with their bases, widths and colours, meshes,
+//! up axis, round trips, errors, and mutated input.
+
 use super::*;
 use proptest::prelude::*;
 
