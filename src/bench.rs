@@ -252,6 +252,6 @@ pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
         lights,
         meshes,
         hair,
-        hair_systems: Vec::new(),
+        ..Default::default()
     })
 }

@@ -55,7 +55,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
             radius_scale: 1.0,
             file_colors: true,
         }],
-        hair_systems: Vec::new(),
+        ..Default::default()
     }
 }
 

@@ -12,6 +12,7 @@ pub mod bench;
 pub mod camera;
 pub mod demo;
 pub mod film;
+pub mod fur;
 pub mod geometry;
 pub mod hair;
 pub mod io;

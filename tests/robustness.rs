@@ -23,7 +23,7 @@ fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> 
             radius_scale: 1.0,
             file_colors: false,
         }],
-        hair_systems: Vec::new(),
+        ..Default::default()
     };
     prepare(&desc).unwrap().0
 }

@@ -134,15 +134,22 @@ impl Accel {
 
     /// The closest hit along the ray before `ray.tmax`.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        self.intersect_skipping(ray, None)
+    }
+
+    /// The closest hit along the ray before `ray.tmax`, ignoring the skipped primitives
+    /// (a ray continuing through a semi-transparent strand it has just passed).
+    pub fn intersect_skipping(&self, ray: &Ray, skip: Option<Skip>) -> Option<Hit> {
         let test = RayBoxTest::new(ray.origin, ray.dir);
         let mut tmax = ray.tmax;
         let mut best = None;
         self.top.traverse(&test, &mut tmax, |objects, tmax| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                let skip = skip.filter(|s| s.object == object);
                 o.bvh.traverse(&test, tmax, |prims, tmax| {
                     if let Some((prim, t, kind)) =
-                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false)
+                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, skip, false)
                     {
                         *tmax = t;
                         best = Some(Hit { t, object, prim, kind });

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use tress::accel::Shape;
 use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_shadow, Memory};
 use tress::scene::{prepare, Description, World};
+use tress::shading::Material;
 use tress::stats::{human_bytes, peak_memory_bytes};
 
 #[derive(Parser)]
@@ -53,6 +54,11 @@ enum Command {
         #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
         demo_strands: u32,
     },
+    /// Grow fur: export it, list the presets.
+    Fur {
+        #[command(subcommand)]
+        command: FurCommand,
+    },
     /// Measure BVH build time, ray throughput and memory per hair segment.
     Bench {
         /// Scene file (TOML), or a reference scene directory written by
@@ -68,6 +74,20 @@ enum Command {
         #[arg(long, default_value_t = 3)]
         reps: usize,
     },
+}
+
+#[derive(Subcommand)]
+enum FurCommand {
+    /// Write the fur a scene grows (every [[fur]] entry, in world space) to a file.
+    Export {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Output file: a Cem Yuksel .hair file.
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+    /// List the fur presets by Maya's names.
+    Presets,
 }
 
 /// Settings that override the scene file's.
@@ -153,30 +173,52 @@ fn run(cli: Cli) -> Result<()> {
         }
         Command::Export { scene, output, demo_strands } => {
             let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands };
-            let desc = load(scene.as_deref(), &o)?;
-            let geometry = tress::scene::load_geometry(&desc)?;
-            if output.extension().is_some_and(|e| e.eq_ignore_ascii_case("usda")) {
-                tress::io::usd::write_usd(&output, &geometry.shapes, &geometry.materials)?;
-                eprintln!("wrote {} ({} shapes)", output.display(), geometry.shapes.len());
-                return Ok(());
+            export(scene.as_deref(), &o, &output, |_| true)
+        }
+        Command::Fur { command: FurCommand::Export { scene, output } } => {
+            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands: 0 };
+            export(Some(&scene), &o, &output, |m| matches!(m, Material::Fur(_)))
+        }
+        Command::Fur { command: FurCommand::Presets } => {
+            // Each preset file opens with "# Name: what it looks like".
+            for (_, text) in tress::fur::presets::PRESETS {
+                println!("{}", text.lines().next().unwrap_or("").trim_start_matches('#').trim());
             }
-            let mut all = tress::geometry::StrandSet::new();
-            for (shape, _) in &geometry.shapes {
-                if let Shape::Strands(s) = shape {
-                    all.append(s);
-                }
-            }
-            if !output.extension().is_some_and(|e| e.eq_ignore_ascii_case("hair")) {
-                anyhow::bail!("{}: unsupported export format: use a .hair or .usda file name", output.display());
-            }
-            tress::io::hair::write_hair(&output, &all)?;
-            eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
             Ok(())
         }
         Command::Bench { scene, overrides, thread_counts, reps } => {
             bench(scene.as_deref(), &overrides, &thread_counts, reps)
         }
     }
+}
+
+/// Writes the shapes of a scene whose material passes `keep`, in world space: strand sets
+/// to a `.hair` file, or strand sets and meshes to a `.usda` file.
+fn export(scene: Option<&Path>, o: &Overrides, output: &Path, keep: impl Fn(&Material) -> bool) -> Result<()> {
+    let is = |ext: &str| output.extension().is_some_and(|e| e.eq_ignore_ascii_case(ext));
+    if !is("hair") && !is("usda") {
+        anyhow::bail!("{}: unsupported export format: use a .hair or .usda file name", output.display());
+    }
+    let desc = load(scene, o)?;
+    let geometry = tress::scene::load_geometry(&desc)?;
+    if is("usda") {
+        let materials = &geometry.materials;
+        let shapes: Vec<_> = geometry.shapes.into_iter().filter(|(_, m)| keep(&materials[*m as usize])).collect();
+        tress::io::usd::write_usd(output, &shapes, materials)?;
+        eprintln!("wrote {} ({} shapes)", output.display(), shapes.len());
+        return Ok(());
+    }
+    let mut all = tress::geometry::StrandSet::new();
+    for (shape, material) in &geometry.shapes {
+        if let Shape::Strands(s) = shape {
+            if keep(&geometry.materials[*material as usize]) {
+                all.append(s);
+            }
+        }
+    }
+    tress::io::hair::write_hair(output, &all)?;
+    eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
+    Ok(())
 }
 
 fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Result<()> {

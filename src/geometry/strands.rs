@@ -225,6 +225,19 @@ mod tests {
     }
 
     #[test]
+    fn along_counts_segments_from_root_to_tip() {
+        let mut s = set(1, None); // 3 points: 2 segments
+        s.push_strand((0..5).map(|i| (Vec3::new(0.0, i as f32, 0.0), 0.1)));
+        let at = |i, t| {
+            let p = s.strand_point(i, t);
+            (p.strand, p.along)
+        };
+        assert_eq!(at(0, 0.0), (0, 0.0));
+        assert_eq!(at(1, 1.0), (0, 1.0));
+        assert_eq!(at(4, 0.5), (1, 0.375));
+    }
+
+    #[test]
     fn tangents_are_central_differences_and_one_sided_at_ends() {
         let mut s = StrandSet::new();
         s.push_strand([(Vec3::ZERO, 0.1), (Vec3::X, 0.1), (Vec3::new(1.0, 1.0, 0.0), 0.1)]);

@@ -8,7 +8,8 @@ use crate::geometry::StrandSet;
 use crate::light::Light;
 use crate::math::Aabb;
 use crate::scene::{
-    CameraDesc, Description, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, RenderSettings,
+    CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
+    RenderSettings,
 };
 use glam::{Affine3A, Vec3, Vec3A};
 use std::path::Path;
@@ -32,8 +33,8 @@ pub struct Imported {
     pub hair: Vec<HairEntry>,
     /// Hair systems (inline guides).
     pub hair_systems: Vec<HairSystemEntry>,
-    /// Maya FurDescription nodes, read but not grown (see [`maya_ascii::fur`]).
-    pub fur: Vec<maya_ascii::fur::MayaFur>,
+    /// Fur; `mesh` indexes [`Imported::meshes`] (see [`maya_ascii::fur`]).
+    pub fur: Vec<FurEntry>,
     /// What was read only in part or skipped, one line each, for the user.
     pub warnings: Vec<String>,
 }
@@ -145,6 +146,7 @@ impl Imported {
             meshes: self.meshes,
             hair: self.hair,
             hair_systems: self.hair_systems,
+            fur: self.fur,
         };
         (desc, self.warnings)
     }

@@ -1,12 +1,14 @@
 //! Scene files in TOML (documented in `docs/scene-format.md`), read into a
 //! [`Description`]. Unknown keys and wrong types are errors naming the file, line and key.
 
+use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPlacement};
 use crate::geometry::TriangleMesh;
 use crate::hair::ramp::RampValue;
 use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
 use crate::scene::{
-    CameraDesc, Description, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, RenderSettings,
+    CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
+    RenderSettings,
 };
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use crate::shading::{tube::Tube, Material};
@@ -59,6 +61,8 @@ struct SceneToml {
     hair: Vec<HairToml>,
     #[serde(default)]
     hair_system: Vec<HairSystemToml>,
+    #[serde(default)]
+    fur: Vec<FurToml>,
     #[serde(default)]
     import: Vec<ImportToml>,
 }
@@ -276,6 +280,15 @@ enum ShapeToml {
         #[serde(default = "default_size")]
         size: f32,
     },
+    Pillow {
+        #[serde(default = "default_size")]
+        size: f32,
+        #[serde(default = "default_thickness")]
+        thickness: f32,
+    },
+}
+fn default_thickness() -> f32 {
+    0.3
 }
 fn default_major() -> f32 {
     1.0
@@ -541,6 +554,93 @@ fn follicles(f: &FolliclesToml) -> Result<FollicleParams, String> {
     Ok(params)
 }
 
+/// A `[[fur]]` entry: its own keys, and every other key a fur attribute.
+#[derive(Deserialize)]
+struct FurToml {
+    /// 1-based, as messages count meshes.
+    mesh: i64,
+    preset: Option<String>,
+    #[serde(default)]
+    seed: u32,
+    #[serde(default)]
+    placement: PlacementToml,
+    guides: Option<PathBuf>,
+    attractors: Option<AttractorsToml>,
+    #[serde(flatten)]
+    attributes: toml::Table,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+enum PlacementToml {
+    #[default]
+    Area,
+    Uv,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AttractorsToml {
+    model: Option<AttractorModelToml>,
+    curves_per_fur: Option<u32>,
+    global_scale: Option<f32>,
+    radius: Option<f32>,
+    power: Option<f32>,
+    influence: Option<f32>,
+    threshold_length: Option<f32>,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum AttractorModelToml {
+    Local,
+    Global,
+}
+
+fn fur(f: &FurToml, meshes: usize, base: &Path) -> Result<FurEntry, String> {
+    if f.mesh < 1 || f.mesh as usize > meshes {
+        return Err(format!("`mesh` = {} names no mesh (give 1 to {meshes}, the [[mesh]] entries in order)", f.mesh));
+    }
+    let mut description = match &f.preset {
+        Some(name) => crate::fur::presets::preset(name)?,
+        None => FurDescription::default(),
+    };
+    description.apply_table(&f.attributes, base)?;
+    let guides = match (&f.guides, &f.attractors) {
+        (Some(file), a) => {
+            let d = Attractors::default();
+            let a = a.as_ref();
+            let attractors = Attractors {
+                model: match a.and_then(|a| a.model.as_ref()) {
+                    Some(AttractorModelToml::Global) => AttractorModel::Global,
+                    Some(AttractorModelToml::Local) => AttractorModel::Local,
+                    None => d.model,
+                },
+                curves_per_fur: a.and_then(|a| a.curves_per_fur).unwrap_or(d.curves_per_fur),
+                global_scale: a.and_then(|a| a.global_scale).unwrap_or(d.global_scale),
+                radius: a.and_then(|a| a.radius).unwrap_or(d.radius),
+                power: a.and_then(|a| a.power).unwrap_or(d.power),
+                influence: a.and_then(|a| a.influence).unwrap_or(d.influence),
+                threshold_length: a.and_then(|a| a.threshold_length).unwrap_or(d.threshold_length),
+            };
+            attractors.validate()?;
+            Some((HairSource::File(base.join(file)), attractors))
+        }
+        (None, Some(_)) => return Err("`attractors` needs `guides`".into()),
+        (None, None) => None,
+    };
+    Ok(FurEntry {
+        mesh: f.mesh as usize - 1,
+        description,
+        placement: match f.placement {
+            PlacementToml::Area => FurPlacement::Area,
+            PlacementToml::Uv => FurPlacement::Uv,
+        },
+        seed: f.seed,
+        guides,
+    })
+}
+
 /// Reads a scene file. Relative paths inside it are relative to its directory.
 pub fn read_scene(path: &Path) -> Result<Description, SceneFileError> {
     let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
@@ -617,6 +717,10 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
         let entry = hair_system(h, base, meshes.len()).map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
         hair_systems.push(entry);
     }
+    let mut furs = Vec::new();
+    for (i, f) in scene.fur.iter().enumerate() {
+        furs.push(fur(f, meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?);
+    }
     // Imported entries come after the file's own, so `[[mesh]]` numbers stay as written.
     let mut warnings = Vec::new();
     for (i, imp) in scene.import.iter().enumerate() {
@@ -628,6 +732,8 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
         if imp.lights {
             lights.append(&mut imported.lights);
         }
+        // Imported fur grows on imported meshes: their numbers move by the meshes before.
+        furs.extend(imported.fur.drain(..).map(|f| FurEntry { mesh: f.mesh + meshes.len(), ..f }));
         meshes.append(&mut imported.meshes);
         hair.append(&mut imported.hair);
         hair_systems.append(&mut imported.hair_systems);
@@ -639,6 +745,7 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
         meshes,
         hair,
         hair_systems,
+        fur: furs,
     };
     desc.validate().map_err(|e| invalid(e.to_string()))?;
     Ok((desc, warnings))
@@ -802,6 +909,10 @@ fn procedural(s: &ShapeToml) -> Result<TriangleMesh, String> {
         ShapeToml::Plane { size } => {
             check("size", &[size], 0.0)?;
             TriangleMesh::plane(size)
+        }
+        ShapeToml::Pillow { size, thickness } => {
+            check("size and thickness", &[size, thickness], 0.0)?;
+            TriangleMesh::pillow(size, thickness, 64)
         }
     })
 }
@@ -1017,6 +1128,54 @@ seed = 7
         }
         let e = hair("eumelanin = 1.0, roughness = 0.3").unwrap_err().to_string();
         assert!(e.contains("roughness"), "{e}");
+    }
+
+    const MESH: &str = "[[mesh]]\nshape = { type = \"torus\" }\nmaterial = { type = \"diffuse\", color = [1, 1, 1] }\n";
+
+    #[test]
+    fn fur_entries_take_a_preset_overrides_maps_and_guides() {
+        use crate::fur::{presets::preset, MapSource, Scalar};
+        let d = parse(&format!(
+            "{MESH}{MESH}[[fur]]\nmesh = 2\npreset = \"Squirrel\"\nseed = 9\nplacement = \"uv\"\nlength = 0.5\n\
+             dbw = 0.02\nlength_map = \"len.png\"\nguides = \"g.hair\"\nattractors = {{ model = \"global\", radius = 2.0 }}\n"
+        ))
+        .unwrap();
+        let f = &d.fur[0];
+        assert_eq!((f.mesh, f.seed, f.placement), (1, 9, FurPlacement::Uv));
+        let mut expected = preset("Squirrel").unwrap();
+        expected[Scalar::Length].value = 0.5;
+        expected[Scalar::BaseWidth].value = 0.02;
+        expected[Scalar::Length].map = Some(MapSource::Image(PathBuf::from("dir/len.png")));
+        assert_eq!(f.description, expected);
+        let (source, a) = f.guides.as_ref().unwrap();
+        assert_eq!(source, &HairSource::File(PathBuf::from("dir/g.hair")));
+        assert_eq!((a.model, a.radius, a.power), (AttractorModel::Global, 2.0, 1.0));
+        // Without a preset: Maya's node defaults.
+        let d = parse(&format!("{MESH}[[fur]]\nmesh = 1\n")).unwrap();
+        assert_eq!(d.fur[0].description, FurDescription::default());
+    }
+
+    #[test]
+    fn bad_fur_entries_are_errors_naming_the_entry_and_key() {
+        for (entry, needles) in [
+            ("mesh = 2", &["fur 1", "mesh"][..]),
+            ("mesh = 0", &["fur 1", "mesh"]),
+            ("mesh = 1\ndensity = -5", &["fur 1", "density", "-5"]),
+            ("mesh = 1\nlength = nan", &["fur 1", "length", "finite"]),
+            ("mesh = 1\nbaldness = 2", &["fur 1", "baldness", "0 to 1"]),
+            ("mesh = 1\nfluffiness = 2", &["fur 1", "fluffiness"]),
+            ("mesh = 1\npreset = \"Chinchilla\"", &["fur 1", "Chinchilla", "Duckling"]),
+            ("mesh = 1\nattractors = { radius = 1.0 }", &["fur 1", "guides"]),
+            ("mesh = 1\nguides = \"g.hair\"\nattractors = { radius = -1.0 }", &["fur 1", "radius"]),
+            ("mesh = 1\nguides = \"g.hair\"\nattractors = { pull = 1.0 }", &["pull"]),
+            ("mesh = 1\nplacement = \"random\"", &["random"]),
+        ] {
+            let e = parse(&format!("{MESH}[[fur]]\n{entry}\n")).unwrap_err().to_string();
+            assert!(e.contains("dir/test.toml"), "{e}");
+            for n in needles {
+                assert!(e.contains(n), "{entry}: `{e}` lacks `{n}`");
+            }
+        }
     }
 
     #[test]

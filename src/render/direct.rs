@@ -56,8 +56,8 @@ pub fn trace(
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
     counters.rays += 1;
-    let hit = world.accel.intersect(ray);
-    let t_hit = hit.map_or(ray.tmax, |h| h.t);
+    let (hit, passed, moved) = first_opaque_hit(world, ray, sampler, counters);
+    let t_hit = hit.map_or(ray.tmax, |h| passed + h.t);
     // Area lights are not in the BVH; a ray sees one if it meets it before any geometry.
     let seen_light =
         world.lights.iter().filter_map(|l| l.emitted(ray.origin, ray.dir, t_hit)).min_by(|a, b| a.0.total_cmp(&b.0));
@@ -67,13 +67,14 @@ pub fn trace(
     let Some(hit) = hit else {
         return (world.background, None);
     };
+    let ray = &moved;
     let object = &world.accel.objects[hit.object as usize];
     let material = &world.materials[object.material as usize];
     let surface = surface_at(&object.shape, &hit, ray);
     let sp = &surface.sp;
     let wo = -ray.dir;
     let first = FirstHit {
-        t: hit.t,
+        t: passed + hit.t,
         normal: sp.tangent.unwrap_or(sp.normal),
         object: hit.object,
         strand: match &object.shape {
@@ -107,7 +108,7 @@ pub fn trace(
         if f.max_element() <= 0.0 {
             continue;
         }
-        let d = departure(&surface, &hit, ls.dir, matches!(material, Material::Tube(_)));
+        let d = departure(&surface, &hit, ls.dir, matches!(material, Material::Tube(_) | Material::Fur(_)));
         counters.rays += 1;
         // Stop short of the light by a relative margin so its own surface does not block.
         let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
@@ -129,6 +130,46 @@ pub fn trace(
     (color, Some(first))
 }
 
+/// Most semi-transparent strand points one ray passes before it stops at the next hit.
+const MAX_PASSES: u32 = 64;
+
+/// The first hit along `ray` that stops it. A strand point of opacity `a` (from the strand
+/// set's per-point opacity) stops the ray with probability `a`, else the ray goes on past
+/// that segment: stochastic transparency (Enderton et al. 2010), which averages to
+/// `a * front + (1 - a) * behind` over a pixel's samples without sorting hits. Returns the
+/// hit, the distance already travelled and the ray it lies on (starting at the last
+/// passed point, with its cone widened to there). Shadow rays treat strands as opaque.
+fn first_opaque_hit(
+    world: &World,
+    ray: &Ray,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+) -> (Option<Hit>, f32, Ray) {
+    let (mut current, mut passed) = (*ray, 0.0);
+    let mut hit = world.accel.intersect(ray);
+    for _ in 0..MAX_PASSES {
+        let Some(h) = hit else { break };
+        let opacity = match (&world.accel.objects[h.object as usize].shape, h.kind) {
+            (Shape::Strands(s), HitKind::Segment { s: at, .. }) => s.opacity_at(h.prim, at),
+            _ => 1.0,
+        };
+        if opacity >= 1.0 || sampler.next_1d() < opacity {
+            break;
+        }
+        passed += h.t;
+        current = Ray {
+            origin: ray.at(passed),
+            dir: ray.dir,
+            tmax: ray.tmax - passed,
+            cone: ray.cone.propagate(passed, 0.0),
+        };
+        let skip = Skip { object: h.object, first: h.prim.saturating_sub(1), last: h.prim + 1 };
+        counters.rays += 1;
+        hit = world.accel.intersect_skipping(&current, Some(skip));
+    }
+    (hit, passed, current)
+}
+
 /// Builds the shading point from a hit.
 fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
     match (shape, hit.kind) {
@@ -147,7 +188,7 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
                 // An interpolated normal may face away at grazing angles; keep it usable.
                 normal = geometric;
             }
-            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface };
+            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface, strand: None };
             Surface { sp, hair: None, geometric }
         }
         (Shape::Strands(strands), HitKind::Segment { s, normal }) => {
@@ -161,8 +202,15 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
             // relative to the segment's coordinates, not to the ray's length.
             let p = axis_point + normal * radius;
             let tangent = strands.tangent(hit.prim, s);
-            let sp =
-                ShadingPoint { p, normal, tangent: Some(tangent), color: strands.color(hit.prim, s), backface: false };
+            let at = strands.strand_point(hit.prim, s);
+            let sp = ShadingPoint {
+                p,
+                normal,
+                tangent: Some(tangent),
+                color: strands.color(hit.prim, s),
+                backface: false,
+                strand: Some((at.strand, at.along)),
+            };
             Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal }
         }
         _ => unreachable!("hit kinds match their shapes"),

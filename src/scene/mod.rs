@@ -44,6 +44,13 @@ pub struct RenderSettings {
     pub threads: usize,
 }
 
+impl Default for CameraDesc {
+    /// Looking at the origin from 5 units along +z, y up, 35 degrees.
+    fn default() -> Self {
+        CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 35.0 }
+    }
+}
+
 impl Default for RenderSettings {
     fn default() -> Self {
         RenderSettings { width: 640, height: 480, spp: 16, seed: 0, max_depth: 5, threads: 0 }
@@ -128,8 +135,25 @@ pub struct HairSystemEntry {
     pub seed: u32,
 }
 
-/// Everything a scene says, before any file is read.
+/// Fur grown on one of the scene's meshes (Maya Fur, [`crate::fur`]).
 #[derive(Clone, Debug, PartialEq)]
+pub struct FurEntry {
+    /// Index of the mesh it grows on, into [`Description::meshes`]; it grows on the mesh
+    /// as placed in the world (after the mesh's transform).
+    pub mesh: usize,
+    /// The fur description (a preset with overrides).
+    pub description: crate::fur::FurDescription,
+    /// Root placement by area or by UV area.
+    pub placement: crate::fur::Placement,
+    /// Seed of every random decision of the fur.
+    pub seed: u32,
+    /// Guide curves (world space) that attract the fur, and how.
+    pub guides: Option<(HairSource, crate::fur::Attractors)>,
+}
+
+/// Everything a scene says, before any file is read. The default is an empty scene seen
+/// by [`CameraDesc::default`].
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Description {
     /// Camera placement.
     pub camera: CameraDesc,
@@ -143,6 +167,8 @@ pub struct Description {
     pub hair: Vec<HairEntry>,
     /// Hair systems.
     pub hair_systems: Vec<HairSystemEntry>,
+    /// Fur grown on meshes.
+    pub fur: Vec<FurEntry>,
 }
 
 /// The prepared scene: geometry with its BVHs, materials, lights and camera.
@@ -225,6 +251,16 @@ impl Description {
                 }
             }
         }
+        for (i, f) in self.fur.iter().enumerate() {
+            let what = |e: String| PrepareError::Invalid(format!("fur {}: {e}", i + 1));
+            if f.mesh >= self.meshes.len() {
+                return Err(what(format!("`mesh` = {} names no mesh (there are {})", f.mesh + 1, self.meshes.len())));
+            }
+            f.description.validate().map_err(what)?;
+            if let Some((_, a)) = &f.guides {
+                a.validate().map_err(what)?;
+            }
+        }
         Ok(())
     }
 }
@@ -300,6 +336,29 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         let strands = hair::expand(&h.system, &guides, h.colors, h.seed).map_err(what)?;
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
+    }
+    for (i, f) in desc.fur.iter().enumerate() {
+        let what = |e: String| PrepareError::Invalid(format!("fur {}: {e}", i + 1));
+        // Meshes come first among the shapes, in order.
+        let Some((Shape::Mesh(mesh), _)) = shapes.get(f.mesh) else {
+            return Err(what(format!("there is no mesh {}", f.mesh + 1)));
+        };
+        let guides = match &f.guides {
+            Some((HairSource::File(path), attractors)) => Some((io::hair::read_hair(path)?, attractors)),
+            Some((HairSource::Inline(s), attractors)) => Some((s.clone(), attractors)),
+            None => None,
+        };
+        let options = crate::fur::GrowOptions {
+            placement: f.placement,
+            seed: f.seed,
+            guides: guides.as_ref().map(|(s, a)| (s, *a)),
+        };
+        let grown = crate::fur::grow(mesh, &f.description, options).map_err(|e| match e {
+            crate::fur::FurError::Load(e) => PrepareError::Load(e),
+            e => what(e.to_string()),
+        })?;
+        shapes.push((Shape::Strands(grown.strands), materials.len() as u32));
+        materials.push(Material::Fur(grown.shading));
     }
     Ok(LoadedGeometry { shapes, materials })
 }

@@ -3,10 +3,15 @@
 //! (shared/spec/maya-fur-hair.md section 2.2: a `.ma` file stores only the attributes that
 //! differ from them), plus the meshes it is attached to.
 //!
-//! Growing the fur is the job of the fur module, which lives on another branch;
-//! [`fur_entries`] is the one place that connects the two.
+//! Growing the fur is the job of [`crate::fur`]; [`fur_description`] carries the
+//! attributes over and [`fur_entries`] attaches the result to the meshes.
 
 use super::parse::{Graph, Value};
+use crate::fur::description::{MAX_DENSITY, MAX_SEGMENTS};
+use crate::fur::{ColorAttr, FurDescription, Placement, Scalar};
+use crate::math::Color;
+use crate::scene::FurEntry;
+use crate::shading::fur::LightModel;
 use std::collections::BTreeMap;
 
 /// The value of a FurDescription attribute.
@@ -185,26 +190,75 @@ pub fn read_fur(g: &Graph, node: usize) -> Result<MayaFur, (u32, String)> {
     Ok(fur)
 }
 
-// ---------------------------------------------------------------------------------------
-// INTEGRATION POINT (fur module). The fur generator (`src/fur/`, a `FurDescription` with
-// Maya's attribute names and node defaults and a `[[fur]]` scene entry) is on a branch not
-// merged yet. Once it is, this function should turn each `MayaFur` into that module's
-// description (attribute by attribute: the long names here are Maya's) attached to the
-// meshes `fur.meshes` indexes, and return the scene entries. Until then it returns none
-// and says so in one warning, so a Maya file with fur still renders its meshes and hair.
-// ---------------------------------------------------------------------------------------
-/// Scene entries for the FurDescriptions of an import. The fur module is not merged yet:
-/// returns a warning naming the descriptions that were read but not grown.
-pub fn fur_entries(fur: &[MayaFur]) -> Option<String> {
-    if fur.is_empty() {
-        return None;
+/// The fur module's description of a FurDescription read from a file: every attribute of
+/// table 2.2 and its noise, map offset and map multiplier, by Maya's long name (both
+/// start from the same node defaults). Texture maps are not carried over: Maya's are
+/// `.iff` files, which tress does not read; the caller says so.
+pub fn fur_description(f: &MayaFur) -> Result<FurDescription, String> {
+    let mut d = FurDescription::default();
+    let whole = |name: &str, max: f64| -> Result<i64, String> {
+        let v = f.number(name).unwrap_or(0.0).round();
+        match (0.0..=max).contains(&v) {
+            true => Ok(v as i64),
+            false => Err(format!("`{name}` = {v} is out of range (0 to {max})")),
+        }
+    };
+    d.light_model = LightModel::from_index(whole("LightModel", 3.0)?).expect("range checked");
+    d.density = whole("Density", MAX_DENSITY as f64)? as u32;
+    d.segments = whole("Segments", MAX_SEGMENTS as f64)?.max(1) as u32;
+    d.global_scale = f.number("GlobalScale").unwrap_or(1.0) as f32;
+    let num = |name: String| f.number(&name).map(|v| v as f32);
+    for s in Scalar::ALL {
+        let long = s.spec().maya;
+        let a = &mut d[s];
+        a.value = num(long.to_string()).unwrap_or(a.value);
+        a.noise = num(format!("{long}Noise")).unwrap_or(a.noise);
+        a.noise_freq = num(format!("{long}NoiseFreq")).unwrap_or(a.noise_freq);
+        a.map_offset = num(format!("{long}MapOffset")).unwrap_or(a.map_offset);
+        a.map_mult = num(format!("{long}MapMult")).unwrap_or(a.map_mult);
     }
-    let names: Vec<&str> = fur.iter().map(|f| f.name.as_str()).collect();
-    Some(format!(
-        "{} FurDescription node(s) read but not grown (this build has no fur generator): {}",
-        fur.len(),
-        names.join(", ")
-    ))
+    for c in ColorAttr::ALL {
+        let long = c.spec().maya;
+        let a = &mut d[c];
+        if let Some(v) = f.color(long) {
+            a.value = Color::from(v.map(|x| x as f32));
+        }
+        a.noise = num(format!("{long}Noise")).unwrap_or(a.noise);
+        a.noise_freq = num(format!("{long}NoiseFreq")).unwrap_or(a.noise_freq);
+    }
+    d.validate()?;
+    Ok(d)
+}
+
+/// Scene entries for the FurDescriptions of an import: one per (description, attached
+/// mesh), `mesh` indexing the import's meshes, roots spread by area (what Maya's default
+/// equalizer maps aim at), seed 0; and warnings for what is left out (descriptions on no
+/// mesh, texture maps).
+pub fn fur_entries(fur: &[MayaFur]) -> Result<(Vec<FurEntry>, Vec<String>), (u32, String)> {
+    let (mut entries, mut warnings) = (Vec::new(), Vec::new());
+    for f in fur {
+        let description = fur_description(f).map_err(|e| (f.line, format!("FurDescription {}: {e}", f.name)))?;
+        if f.meshes.is_empty() {
+            warnings.push(format!("FurDescription {} is attached to no mesh: no fur grows", f.name));
+        }
+        if !f.maps.is_empty() {
+            warnings.push(format!(
+                "FurDescription {}: {} attribute map(s) left out (Maya's .iff maps are not read)",
+                f.name,
+                f.maps.len()
+            ));
+        }
+        for &mesh in &f.meshes {
+            entries.push(FurEntry {
+                mesh,
+                description: description.clone(),
+                placement: Placement::Area,
+                seed: 0,
+                guides: None,
+            });
+        }
+    }
+    Ok((entries, warnings))
 }
 
 #[cfg(test)]
@@ -258,9 +312,24 @@ mod tests {
     }
 
     #[test]
-    fn the_integration_point_reports_unrendered_fur() {
-        assert_eq!(fur_entries(&[]), None);
-        let w = fur_entries(&[MayaFur::with_defaults("FurDescription1", 3)]).unwrap();
-        assert!(w.contains("FurDescription1"), "{w}");
+    fn descriptions_carry_every_attribute_to_the_fur_module() {
+        // Node defaults on both sides agree.
+        assert_eq!(fur_description(&MayaFur::with_defaults("f", 1)).unwrap(), FurDescription::default());
+        let g = parse(
+            "createNode FurDescription -n f;\nsetAttr \".d\" 20000;\nsetAttr \".dsg\" 8;\nsetAttr \".lmd\" 1;\n\
+             setAttr \".dl\" 0.4;\nsetAttr \".dlnf\" 3;\nsetAttr \".dtcl\" 0.7;\nsetAttr \".dsc\" -type \"float3\" 0.1 0.2 0.3;\n",
+        )
+        .unwrap();
+        let d = fur_description(&read_fur(&g, 0).unwrap()).unwrap();
+        assert_eq!((d.density, d.segments, d.light_model), (20000, 8, LightModel::from_index(1).unwrap()));
+        assert_eq!((d[Scalar::Length].value, d[Scalar::Length].noise_freq, d[Scalar::TipCurl].value), (0.4, 3.0, 0.7));
+        assert_eq!(d[ColorAttr::SpecularColor].value, Color::new(0.1, 0.2, 0.3));
+        // Out of the fur module's range: an error naming the node and its line.
+        let g = parse("createNode FurDescription -n bad;\nsetAttr \".di\" 3;\n").unwrap();
+        let e = fur_entries(&[read_fur(&g, 0).unwrap()]).unwrap_err();
+        assert!(e.0 == 1 && e.1.contains("bad") && e.1.contains("inclination"), "{e:?}");
+        // A description on no mesh grows nothing and says so.
+        let (entries, warnings) = fur_entries(&[MayaFur::with_defaults("lonely", 1)]).unwrap();
+        assert!(entries.is_empty() && warnings[0].contains("lonely"));
     }
 }

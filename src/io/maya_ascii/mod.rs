@@ -20,7 +20,9 @@
 //!   follicle with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
 //!   file does not store (it is computed by Maya from `.pu`, `.pv`) is placed on its
 //!   mesh, local X along the surface normal and Y along the U tangent.
-//! - **FurDescription**: see [`fur`].
+//! - **FurDescription**: its attributes (node defaults for those the file omits) become a
+//!   fur description grown on each mesh it is attached to (through a `FurFeedback`), see
+//!   [`fur`].
 //! - **camera**: the first renderable perspective camera other than the default `persp`
 //!   (else `persp`), field of view from focal length (`.fl`), film aperture (`.cap`) and
 //!   film fit (`.ff`); image size from `defaultResolution`.
@@ -166,14 +168,15 @@ impl<'g> Reader<'g> {
             }
         }
         self.free_curves(&used_curves)?;
+        let mut furs = Vec::new();
         for n in self.of_kind("FurDescription").collect::<Vec<_>>() {
             let mut f = fur::read_fur(g, n)?;
             f.meshes = self.fur_meshes(n);
-            self.out.fur.push(f);
+            furs.push(f);
         }
-        if let Some(w) = fur::fur_entries(&self.out.fur) {
-            self.out.warnings.push(w);
-        }
+        let (entries, warnings) = fur::fur_entries(&furs)?;
+        self.out.fur = entries;
+        self.out.warnings.extend(warnings);
         self.camera()?;
         self.lights()?;
         if let Some(r) = g.find("defaultResolution") {

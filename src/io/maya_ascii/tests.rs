@@ -1,8 +1,8 @@
 //! Maya ASCII import against a small scene written as Maya writes them: counts, attribute
 //! values, node defaults, curve knots, line-numbered errors, and random or mutated input.
 
-use super::fur::MayaFur;
 use super::*;
+use crate::fur::{ColorAttr, FurDescription, Scalar};
 use proptest::prelude::*;
 
 /// A small scene as Maya writes it: a 2 × 1 quad plane with UVs under a moved transform,
@@ -182,17 +182,18 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     );
     assert_eq!(sys.clump_flatness, d.clump_flatness);
 
-    // The FurDescription: the file's values, node defaults elsewhere, attached to the plane.
+    // The FurDescription: the file's values, node defaults elsewhere, grown on the plane.
     assert_eq!(s.fur.len(), 1);
-    let f = &s.fur[0];
-    assert_eq!((f.number("Density"), f.number("Length"), f.number("BaseWidth")), (Some(5000.0), Some(0.4), Some(0.02)));
-    assert_eq!(f.color("BaseColor"), Some([0.6, 0.4, 0.2]));
-    assert_eq!(
-        (f.number("TipWidth"), f.number("Inclination"), f.number("Scraggle")),
-        (Some(0.0), Some(0.0), Some(0.0))
-    );
-    assert_eq!(f.meshes, vec![0]);
-    assert!(s.warnings.iter().any(|w| w.contains("FurDescription1")));
+    let (f, d) = (&s.fur[0], &s.fur[0].description);
+    assert_eq!(f.mesh, 0);
+    assert_eq!((d.density, d[Scalar::Length].value, d[Scalar::BaseWidth].value), (5000, 0.4, 0.02));
+    assert_eq!(d[ColorAttr::BaseColor].value, Vec3::new(0.6, 0.4, 0.2));
+    let n = FurDescription::default();
+    for a in [Scalar::TipWidth, Scalar::Inclination, Scalar::Scraggle, Scalar::ClumpingFrequency, Scalar::Polar] {
+        assert_eq!(d[a], n[a], "{a:?}");
+    }
+    assert_eq!((d.segments, d.light_model), (n.segments, n.light_model));
+    assert_eq!(d[ColorAttr::TipColor], n[ColorAttr::TipColor]);
 
     // Camera, light, resolution; the control circle is not hair; polyCube is reported once.
     let c = s.camera.as_ref().unwrap();
@@ -253,7 +254,12 @@ fn node_defaults_apply_when_the_file_sets_nothing() {
     )
     .unwrap();
     assert_eq!(s.hair_systems[0].system, HairSystem::default());
-    assert_eq!(s.fur[0].attributes, MayaFur::with_defaults("fd", 7).attributes);
+    // The bare FurDescription is attached to no mesh: read, and reported as growing nothing.
+    assert!(
+        s.fur.is_empty() && s.warnings.iter().any(|w| w.contains("fd") && w.contains("no mesh")),
+        "{:?}",
+        s.warnings
+    );
     assert!(s.camera.is_none() && s.lights.is_empty());
 }
 
