@@ -21,8 +21,9 @@ struct Cli {
 enum Command {
     /// Render a scene file (or the built-in demo scene) to an image.
     Render {
-        /// Scene file (TOML), or a reference scene directory of shared/scenes/gen_scenes.py;
-        /// the built-in demo scene when omitted.
+        /// Scene file: TOML, Maya ASCII (.ma), pbrt-v4 (.pbrt) or USD text (.usda), or a
+        /// reference scene directory of shared/scenes/gen_scenes.py; the built-in demo scene
+        /// when omitted.
         scene: Option<PathBuf>,
         #[command(flatten)]
         overrides: Overrides,
@@ -43,9 +44,10 @@ enum Command {
     },
     /// Write the scene's render strands (all strand sets, in world space) to a file.
     Export {
-        /// Scene file (TOML); the built-in demo scene when omitted.
+        /// Scene file (TOML, .ma, .pbrt or .usda); the built-in demo scene when omitted.
         scene: Option<PathBuf>,
-        /// Output file: a Cem Yuksel .hair file.
+        /// Output file: a Cem Yuksel .hair file (strands) or a USD text .usda file (strands
+        /// as linear BasisCurves and meshes).
         #[arg(short, long)]
         output: PathBuf,
         /// Strands in the demo scene.
@@ -129,7 +131,17 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     let mut desc = match scene {
         // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
         Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
-        Some(path) => tress::io::scene_file::read_scene(path)?,
+        Some(path) => {
+            let (desc, warnings) = if tress::io::imported::is_imported(path) {
+                tress::io::imported::read_imported(path)?.into_description()
+            } else {
+                tress::io::scene_file::read_scene_with_warnings(path)?
+            };
+            for w in warnings {
+                eprintln!("warning: {}: {w}", path.display());
+            }
+            desc
+        }
         None => tress::demo::description(o.demo_strands, 1),
     };
     let s = &mut desc.settings;
@@ -198,14 +210,22 @@ fn run(cli: Cli) -> Result<()> {
     }
 }
 
-/// Writes the strand sets of a scene whose material passes `keep` to a `.hair` file, in
-/// world space.
+/// Writes the shapes of a scene whose material passes `keep`, in world space: strand sets
+/// to a `.hair` file, or strand sets and meshes to a `.usda` file.
 fn export(scene: Option<&Path>, o: &Overrides, output: &Path, keep: impl Fn(&Material) -> bool) -> Result<()> {
-    if !output.extension().is_some_and(|e| e.eq_ignore_ascii_case("hair")) {
-        anyhow::bail!("{}: unsupported export format: use a .hair file name", output.display());
+    let is = |ext: &str| output.extension().is_some_and(|e| e.eq_ignore_ascii_case(ext));
+    if !is("hair") && !is("usda") {
+        anyhow::bail!("{}: unsupported export format: use a .hair or .usda file name", output.display());
     }
     let desc = load(scene, o)?;
     let geometry = tress::scene::load_geometry(&desc)?;
+    if is("usda") {
+        let materials = &geometry.materials;
+        let shapes: Vec<_> = geometry.shapes.into_iter().filter(|(_, m)| keep(&materials[*m as usize])).collect();
+        tress::io::usd::write_usd(output, &shapes, materials)?;
+        eprintln!("wrote {} ({} shapes)", output.display(), shapes.len());
+        return Ok(());
+    }
     let mut all = tress::geometry::StrandSet::new();
     for (shape, material) in &geometry.shapes {
         if let Shape::Strands(s) = shape {

@@ -41,7 +41,6 @@
 //! allocated, so a forged header cannot make the reader allocate more than the file's size
 //! justifies.
 
-use std::io::Write;
 use std::path::Path;
 
 use super::error::LoadError;
@@ -516,25 +515,7 @@ pub fn write_hair(path: &Path, strands: &StrandSet) -> Result<(), LoadError> {
     if let Some(problem) = structure_problem(strands).or_else(|| value_problem(strands)) {
         return Err(LoadError::invalid(path, format!("cannot write these strands: {problem}")));
     }
-    let bytes = encode_hair(strands);
-    // The temporary file must be on the same file system for the final rename to be atomic.
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(".tress-").suffix(".hair.tmp");
-    // Temporary files are private by default; the result should get the usual permissions.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        builder.permissions(std::fs::Permissions::from_mode(0o666));
-    }
-    let mut tmp =
-        builder.tempfile_in(dir).map_err(|e| LoadError::io(path, "create a temporary file next to the file", e))?;
-    tmp.write_all(&bytes).map_err(|e| LoadError::io(path, "write the file", e))?;
-    tmp.as_file().sync_all().map_err(|e| LoadError::io(path, "write the file", e))?;
-    tmp.persist(path).map_err(|e| LoadError::io(path, "replace the file", e.error))?;
+    super::write_atomically(path, &encode_hair(strands))?;
     Ok(())
 }
 

@@ -63,6 +63,20 @@ struct SceneToml {
     hair_system: Vec<HairSystemToml>,
     #[serde(default)]
     fur: Vec<FurToml>,
+    #[serde(default)]
+    import: Vec<ImportToml>,
+}
+
+/// An `[[import]]` entry: the meshes, hair and hair systems of a Maya ASCII, pbrt-v4 or
+/// USD text file, optionally moved, optionally with its lights.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ImportToml {
+    file: PathBuf,
+    #[serde(default)]
+    transform: TransformToml,
+    #[serde(default)]
+    lights: bool,
 }
 
 #[derive(Deserialize)]
@@ -668,8 +682,21 @@ pub fn read_scene(path: &Path) -> Result<Description, SceneFileError> {
     parse_scene(&text, path)
 }
 
-/// Parses scene text; `path` names the file in messages and anchors relative paths.
+/// Reads a scene file and returns with it the warnings of its `[[import]]`s (what the
+/// imported files hold that tress skipped).
+pub fn read_scene_with_warnings(path: &Path) -> Result<(Description, Vec<String>), SceneFileError> {
+    let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
+    parse_scene_with_warnings(&text, path)
+}
+
+/// Parses scene text; `path` names the file in messages and anchors relative paths. The
+/// warnings of `[[import]]`s are dropped: [`parse_scene_with_warnings`] returns them.
 pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileError> {
+    parse_scene_with_warnings(text, path).map(|(d, _)| d)
+}
+
+/// [`parse_scene`], with the warnings of the scene's `[[import]]`s.
+pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description, Vec<String>), SceneFileError> {
     let syntax = |e: toml::de::Error| SceneFileError::Syntax { path: path.to_owned(), message: e.to_string() };
     let invalid = |message: String| SceneFileError::Invalid { path: path.to_owned(), message };
     let scene: SceneToml = toml::from_str(text).map_err(syntax)?;
@@ -743,6 +770,23 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
     for (i, f) in scene.fur.iter().enumerate() {
         furs.push(fur(f, meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?);
     }
+    // Imported entries come after the file's own, so `[[mesh]]` numbers stay as written.
+    let mut warnings = Vec::new();
+    for (i, imp) in scene.import.iter().enumerate() {
+        let what = |m: String| invalid(format!("import {}: {m}", i + 1));
+        let file = base.join(&imp.file);
+        let mut imported = crate::io::imported::read_imported(&file).map_err(|e| what(e.to_string()))?;
+        imported.transform(&transform(&imp.transform).map_err(what)?);
+        warnings.extend(imported.warnings.iter().map(|w| format!("{}: {w}", file.display())));
+        if imp.lights {
+            lights.append(&mut imported.lights);
+        }
+        // Imported fur grows on imported meshes: their numbers move by the meshes before.
+        furs.extend(imported.fur.drain(..).map(|f| FurEntry { mesh: f.mesh + meshes.len(), ..f }));
+        meshes.append(&mut imported.meshes);
+        hair.append(&mut imported.hair);
+        hair_systems.append(&mut imported.hair_systems);
+    }
     let desc = Description {
         camera: CameraDesc { eye: c.eye.into(), target: c.target.into(), up: c.up.into(), vfov: c.vfov },
         settings,
@@ -753,7 +797,7 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
         fur: furs,
     };
     desc.validate().map_err(|e| invalid(e.to_string()))?;
-    Ok(desc)
+    Ok((desc, warnings))
 }
 
 fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
