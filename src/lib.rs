@@ -16,6 +16,7 @@ pub mod geometry;
 pub mod io;
 pub mod light;
 pub mod math;
+pub mod partial;
 pub mod render;
 pub mod scene;
 pub mod shading;

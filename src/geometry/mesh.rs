@@ -65,6 +65,15 @@ impl TriangleMesh {
         }
     }
 
+    /// Removes the triangles with a corner that is missing or not finite (positions pushed
+    /// past the float range by a transform); returns how many.
+    pub fn remove_unusable_triangles(&mut self) -> usize {
+        let before = self.indices.len();
+        let positions = &self.positions;
+        self.indices.retain(|t| t.iter().all(|&v| positions.get(v as usize).is_some_and(|p| p.is_finite())));
+        before - self.indices.len()
+    }
+
     /// Checks indices are in range and positions finite; returns a description of the
     /// first problem found.
     pub fn validate(&self) -> Result<(), String> {
