@@ -65,12 +65,14 @@ impl TriangleMesh {
         }
     }
 
-    /// Removes the triangles with a corner that is missing or not finite (positions pushed
-    /// past the float range by a transform); returns how many.
+    /// Removes the triangles with a corner that is missing, not finite or beyond
+    /// [`super::MAX_COORDINATE`] (positions pushed past the float range by a transform);
+    /// returns how many.
     pub fn remove_unusable_triangles(&mut self) -> usize {
         let before = self.indices.len();
         let positions = &self.positions;
-        self.indices.retain(|t| t.iter().all(|&v| positions.get(v as usize).is_some_and(|p| p.is_finite())));
+        let usable = |p: &Vec3| p.is_finite() && p.abs().max_element() <= super::MAX_COORDINATE;
+        self.indices.retain(|t| t.iter().all(|&v| positions.get(v as usize).is_some_and(usable)));
         before - self.indices.len()
     }
 

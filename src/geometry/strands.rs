@@ -156,10 +156,14 @@ impl StrandSet {
     }
 
     /// Removes the strands that cannot be rendered: a coordinate or radius that is not
-    /// finite, or a negative radius (from a transform past the float range, or a generator's
-    /// NaN); such numbers would poison BVH bounds and intersections. Returns how many.
+    /// finite or beyond [`super::MAX_COORDINATE`], or a negative radius (from a transform
+    /// past the float range, or a generator's NaN); such numbers would poison BVH bounds and
+    /// intersections. Returns how many.
     pub fn remove_unusable_strands(&mut self) -> usize {
-        let usable = |p: &[f32; 4]| p.iter().all(|c| c.is_finite()) && p[3] >= 0.0;
+        // Written so that NaN fails every comparison.
+        let usable = |p: &[f32; 4]| {
+            p[..3].iter().all(|c| c.abs() <= super::MAX_COORDINATE) && (0.0..=super::MAX_COORDINATE).contains(&p[3])
+        };
         let keep: Vec<bool> =
             self.offsets.windows(2).map(|w| self.points[w[0] as usize..w[1] as usize].iter().all(usable)).collect();
         let removed = keep.iter().filter(|k| !**k).count();

@@ -206,7 +206,11 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         mesh.transform(&m.transform);
         let dropped = mesh.remove_unusable_triangles();
         if dropped > 0 {
-            warnings.push(format!("mesh {}: skipped {dropped} triangles with non-finite corners", i + 1));
+            warnings.push(format!(
+                "mesh {}: skipped {dropped} triangles with corners not finite or beyond ±{:e}",
+                i + 1,
+                crate::geometry::MAX_COORDINATE
+            ));
         }
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
         materials.push(m.material.clone());
@@ -226,8 +230,9 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         let dropped = strands.remove_unusable_strands();
         if dropped > 0 {
             warnings.push(format!(
-                "hair {}: skipped {dropped} strands with non-finite or negative coordinates or radii",
-                i + 1
+                "hair {}: skipped {dropped} strands with coordinates or radii negative, not finite or beyond ±{:e}",
+                i + 1,
+                crate::geometry::MAX_COORDINATE
             ));
         }
         shapes.push((Shape::Strands(strands), materials.len() as u32));

@@ -3,7 +3,7 @@
 use std::path::Path;
 
 /// Seed files.
-pub const SEEDS: &[&str] = &["tests/data/two_strands.hair"];
+pub const SEEDS: &[&str] = &["tests/data/two_strands.hair", "scenes/hairy_torus.hair"];
 
 /// Parses `bytes` as a `.hair` file: an error, or strands fit to render.
 pub fn check(bytes: &[u8]) -> bool {

@@ -13,6 +13,7 @@ pub mod scene;
 use tress::geometry::{StrandSet, TriangleMesh};
 
 /// A format under test.
+#[derive(Debug)]
 pub struct Format {
     /// Short name, also the fuzz target's name.
     pub name: &'static str,
