@@ -306,7 +306,7 @@ mod tests {
         assert!(e(&[p(0, 2, 1), p(1, 3, 1)]).contains("one of 2"));
         let mut partial = p(1, 2, 1);
         partial.1.state.done = TileMask::new(partial.1.state.done.len());
-        assert!(e(&[p(0, 2, 1), partial]).contains("partial (0 of 2 tiles)"));
+        assert!(e(&[p(0, 2, 1), partial]).contains("partial (0 of 4 tiles)"));
         assert!(e(&[]).contains("no tiles"));
     }
 

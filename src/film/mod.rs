@@ -68,9 +68,11 @@ impl Film {
     }
 }
 
-/// The EXR channels, each with how it is read from and written to a pixel. `A` and
-/// `coverage` hold the same value; a reader takes `A`.
-pub(crate) const CHANNELS: [(&str, fn(&Pixel) -> f32, fn(&mut Pixel, f32)); 11] = [
+/// An EXR channel: its name, how it is taken from a pixel and how it is put back.
+pub(crate) type Channel = (&'static str, fn(&Pixel) -> f32, fn(&mut Pixel, f32));
+
+/// The EXR channels. `A` and `coverage` hold the same value; a reader takes `A`.
+pub(crate) const CHANNELS: [Channel; 11] = [
     ("R", |p| p.color.x, |p, v| p.color.x = v),
     ("G", |p| p.color.y, |p, v| p.color.y = v),
     ("B", |p| p.color.z, |p, v| p.color.z = v),

@@ -7,7 +7,7 @@ mod direct;
 mod tiled;
 
 pub use direct::{trace, Counters};
-pub use tiled::{render_tiles, tile_count_of, Control, TileMask, TiledFilm};
+pub use tiled::{render_tiles, tile_count_of, AfterTile, Control, TileMask, TiledFilm};
 
 use crate::film::{Film, Pixel};
 use crate::math::rng::PixelSampler;

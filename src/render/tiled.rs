@@ -123,6 +123,9 @@ pub fn tile_count_of(region: Region) -> u32 {
     region.width.div_ceil(TILE) * region.height.div_ceil(TILE)
 }
 
+/// A hook called after each finished tile with the render's state.
+pub type AfterTile<'a> = dyn Fn(&Mutex<TiledFilm>) + Sync + 'a;
+
 /// What a tiled render is told and tells while it runs.
 #[derive(Clone, Copy, Default)]
 pub struct Control<'a> {
@@ -132,7 +135,7 @@ pub struct Control<'a> {
     /// no new tile starts; the result holds the tiles finished until then.
     pub cancel: Option<&'a AtomicBool>,
     /// Called after each finished tile with the state (for checkpoints); it may lock it.
-    pub after_tile: Option<&'a (dyn Fn(&Mutex<TiledFilm>) + Sync)>,
+    pub after_tile: Option<&'a AfterTile<'a>>,
 }
 
 /// Renders the tiles of `state` not yet done, on the current rayon pool, until all are done
