@@ -261,7 +261,8 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: 
         Checkpointer::new(path.clone(), Duration::from_secs_f64(job.checkpoint_every * 60.0), template.clone())
     });
     if let Some(sig) = interrupt.signal() {
-        anyhow::bail!("interrupted by signal {sig} before rendering started; nothing written");
+        eprintln!("interrupted by signal {sig} before rendering started; nothing written");
+        std::process::exit(128 + sig);
     }
 
     let bar = if quiet { ProgressBar::hidden() } else { ProgressBar::new(u64::from(state.done.len())) };
@@ -315,8 +316,12 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: 
     }
     let hair = Memory::of(&world.accel);
     let secs = stats.elapsed.as_secs_f64();
+    let part_of = match job.tile {
+        Some((i, n)) => format!("tile {i}/{n}: rows {} to {} of ", region.y, region.y + region.height - 1),
+        None => String::new(),
+    };
     eprintln!(
-        "wrote {} ({}x{}, {} spp, {} threads)",
+        "wrote {} ({part_of}{}x{}, {} spp, {} threads)",
         output.display(),
         s.width,
         s.height,

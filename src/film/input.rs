@@ -34,6 +34,9 @@ pub struct ExrFilm {
 /// 1032:1), with room for the uncompressed parts of a file.
 const MAX_EXPANSION: u64 = 1100;
 
+/// Largest side of an image, as [`crate::scene::Description::validate`] allows.
+const MAX_SIDE: u32 = 65_536;
+
 /// Decodes an EXR file written by tress; `path` is used only in messages.
 pub fn decode_exr(bytes: &[u8], path: &Path) -> Result<ExrFilm, LoadError> {
     let bad = |m: String| LoadError::format(path, m);
@@ -78,6 +81,10 @@ pub fn decode_exr(bytes: &[u8], path: &Path) -> Result<ExrFilm, LoadError> {
     };
     if display.position.0 != 0 || display.position.1 != 0 {
         return Err(bad("the display window does not start at (0, 0)".into()));
+    }
+    // The largest image tress renders; it also bounds what merging tiles allocates.
+    if fw > MAX_SIDE || fh > MAX_SIDE {
+        return Err(bad(format!("the {fw}x{fh} image is larger than tress renders ({MAX_SIDE} pixels a side)")));
     }
     let full = super::Region::full(fw, fh);
     if w == 0 || h == 0 || !full.contains(&super::Region { x, y, width: w, height: h }) {
