@@ -111,11 +111,15 @@ impl TiledFilm {
 
     /// Tile `t` of the region, in image coordinates.
     pub fn tile(&self, t: u32) -> Region {
-        let r = self.region;
-        let tiles_x = r.width.div_ceil(TILE);
-        let (x, y) = ((t % tiles_x) * TILE, (t / tiles_x) * TILE);
-        Region { x: r.x + x, y: r.y + y, width: TILE.min(r.width - x), height: TILE.min(r.height - y) }
+        tile_of(self.region, t)
     }
+}
+
+/// Tile `t` of `region` (numbered row by row), in image coordinates.
+fn tile_of(r: Region, t: u32) -> Region {
+    let tiles_x = r.width.div_ceil(TILE);
+    let (x, y) = ((t % tiles_x) * TILE, (t / tiles_x) * TILE);
+    Region { x: r.x + x, y: r.y + y, width: TILE.min(r.width - x), height: TILE.min(r.height - y) }
 }
 
 /// Number of tiles in a region.
@@ -145,6 +149,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
     let start = Instant::now();
     let todo: Vec<u32> = (0..state.done.len()).filter(|&t| !state.done.get(t)).collect();
     let cancelled = || control.cancel.is_some_and(|c| c.load(Ordering::Relaxed));
+    let region = state.region;
     let shared = Mutex::new(state);
     let rays: u64 = todo
         .into_par_iter()
@@ -152,7 +157,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
             if cancelled() {
                 return 0;
             }
-            let tile = lock(&shared).tile(t);
+            let tile = tile_of(region, t);
             let mut counters = Counters::default();
             let mut pixels = Film::new(tile.width, tile.height);
             for (i, p) in pixels.pixels.iter_mut().enumerate() {
@@ -164,8 +169,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
             }
             {
                 let mut s = lock(&shared);
-                let (x, y) = (tile.x - s.region.x, tile.y - s.region.y);
-                s.film.paste(x, y, &pixels);
+                s.film.paste(tile.x - region.x, tile.y - region.y, &pixels);
                 s.done.set(t);
             }
             if let Some(p) = control.progress {
