@@ -145,7 +145,7 @@ for i in $(seq 600); do
     sleep 0.5
 done
 for t in $(seq 0 $((TILES - 1))); do
-    log "tile task ${TILE_JOB}_$t: $(job_state "${TILE_JOB}_$t")"
+    log "tile task ${TILE_JOB}_$t: $(job_state "${TILE_JOB}_$t"): $(head -1 "$OUT/tile-$t.log")"
 done
 log "merge job $MERGE_JOB: $(job_state "$MERGE_JOB")"
 cat "$OUT/merge.log"
