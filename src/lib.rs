@@ -18,6 +18,7 @@ pub mod hair;
 pub mod io;
 pub mod light;
 pub mod math;
+pub mod partial;
 pub mod render;
 pub mod scene;
 pub mod shading;

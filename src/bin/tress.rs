@@ -4,8 +4,14 @@ use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
 use tress::accel::Shape;
 use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_shadow, Memory};
+use tress::film::Region;
+use tress::partial::{fingerprint, Checkpointer, Partial};
+use tress::render::{render_tiles, Control, TiledFilm};
 use tress::scene::{prepare, Description, World};
 use tress::shading::Material;
 use tress::stats::{human_bytes, peak_memory_bytes};
@@ -33,11 +39,25 @@ enum Command {
         /// Do not show the progress bar.
         #[arg(long)]
         quiet: bool,
+        #[command(flatten)]
+        job: Job,
+    },
+    /// Assemble farm tiles (from `render --tile I/N`) into the whole image.
+    Merge {
+        /// The tile files, all N of them, in any order.
+        #[arg(required = true)]
+        tiles: Vec<PathBuf>,
+        /// Output image: .png or .exr, bit for bit what a single render would write.
+        #[arg(short, long)]
+        output: PathBuf,
     },
     /// Print the counts and memory of a scene (the demo scene when omitted).
     Info {
         /// Scene file (TOML).
         scene: Option<PathBuf>,
+        /// Animation frame (for scenes with camera keys or frame patterns).
+        #[arg(long)]
+        frame: Option<u32>,
         /// Strands in the demo scene.
         #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
         demo_strands: u32,
@@ -50,6 +70,9 @@ enum Command {
         /// as linear BasisCurves and meshes).
         #[arg(short, long)]
         output: PathBuf,
+        /// Animation frame (for scenes with camera keys or frame patterns).
+        #[arg(long)]
+        frame: Option<u32>,
         /// Strands in the demo scene.
         #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
         demo_strands: u32,
@@ -115,6 +138,30 @@ struct Overrides {
     /// Strands in the demo scene (ignored for scene files).
     #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
     demo_strands: u32,
+    /// Animation frame: camera keys are interpolated at it and `#` runs in file names
+    /// become its number (see docs/scene-format.md).
+    #[arg(long)]
+    frame: Option<u32>,
+}
+
+/// How a render runs as a job: a farm tile, checkpoints, limits (see docs/render-farm.md).
+#[derive(clap::Args)]
+struct Job {
+    /// Render only tile I of N (bands of rows, I from 0) into an .exr tile file for
+    /// `tress merge`.
+    #[arg(long, value_name = "I/N", value_parser = tress::partial::parse_farm_tile)]
+    tile: Option<(u32, u32)>,
+    /// Checkpoint file (.exr): progress is saved there, and a render started again with the
+    /// same command resumes from it. Removed once the image is written.
+    #[arg(long, value_name = "PATH")]
+    checkpoint: Option<PathBuf>,
+    /// Minutes between checkpoints.
+    #[arg(long, value_name = "MINUTES", default_value_t = 10.0, requires = "checkpoint")]
+    checkpoint_every: f64,
+    /// Refuse, before loading anything, a scene whose estimated memory exceeds this
+    /// (bytes, or with a K, M, G or T suffix: powers of 1024).
+    #[arg(long, value_name = "SIZE", value_parser = tress::scene::parse_memory_size)]
+    memory_limit: Option<u64>,
 }
 
 fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
@@ -135,7 +182,7 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
             let (desc, warnings) = if tress::io::imported::is_imported(path) {
                 tress::io::imported::read_imported(path)?.into_description()
             } else {
-                tress::io::scene_file::read_scene_with_warnings(path)?
+                tress::io::scene_file::read_scene_frame_with_warnings(path, o.frame)?
             };
             for w in warnings {
                 eprintln!("warning: {}: {w}", path.display());
@@ -180,17 +227,20 @@ fn main() {
 
 fn run(cli: Cli) -> Result<()> {
     match cli.command {
-        Command::Render { scene, overrides, output, quiet } => render(scene.as_deref(), &overrides, &output, quiet),
-        Command::Info { scene, demo_strands } => {
-            let o = Overrides { demo_strands, ..Default::default() };
+        Command::Render { scene, overrides, output, quiet, job } => {
+            render(scene.as_deref(), &overrides, &output, quiet, &job)
+        }
+        Command::Merge { tiles, output } => merge(&tiles, &output),
+        Command::Info { scene, demo_strands, frame } => {
+            let o = Overrides { demo_strands, frame, ..Default::default() };
             let desc = load(scene.as_deref(), &o)?;
             let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
             info(&world);
             println!("build: load {:.3} s, bvh {:.3} s", times.load.as_secs_f64(), times.build.as_secs_f64());
             Ok(())
         }
-        Command::Export { scene, output, demo_strands } => {
-            let o = Overrides { demo_strands, ..Default::default() };
+        Command::Export { scene, output, demo_strands, frame } => {
+            let o = Overrides { demo_strands, frame, ..Default::default() };
             export(scene.as_deref(), &o, &output, |_| true)
         }
         Command::Fur { command: FurCommand::Export { scene, output } } => {
@@ -239,26 +289,119 @@ fn export(scene: Option<&Path>, o: &Overrides, output: &Path, keep: impl Fn(&Mat
     Ok(())
 }
 
-fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Result<()> {
-    // Check the output before spending time on the render.
+fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: &Job) -> Result<()> {
+    // Check the outputs before spending time on the render.
     tress::film::check_output(output)?;
+    let is_exr = |p: &Path| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+    if job.tile.is_some() && !is_exr(output) {
+        anyhow::bail!("{}: a tile (--tile) must be written to an .exr file", output.display());
+    }
+    if let Some(c) = &job.checkpoint {
+        tress::film::check_output(c)?;
+        if !is_exr(c) {
+            anyhow::bail!("{}: a checkpoint must be an .exr file", c.display());
+        }
+    }
+    if !(job.checkpoint_every.is_finite() && job.checkpoint_every > 0.0) {
+        anyhow::bail!("--checkpoint-every must be a positive number of minutes");
+    }
     let desc = load(scene, o)?;
+    if let Some(limit) = job.memory_limit {
+        let e = tress::scene::estimate_memory(&desc)?;
+        if e.total() > limit {
+            anyhow::bail!(
+                "the scene needs an estimated {} (geometry {}, BVH {}, image {}), more than the memory limit of {}",
+                human_bytes(e.total()),
+                human_bytes(e.geometry),
+                human_bytes(e.bvh),
+                human_bytes(e.image),
+                human_bytes(limit)
+            );
+        }
+    }
+    let interrupt = Interrupt::install()?;
     let pool = pool(desc.settings.threads)?;
     let (world, times) = pool.install(|| prepare(&desc))?;
+    for w in &world.warnings {
+        eprintln!("warning: {w}");
+    }
     let s = &world.settings;
-    let tiles = tress::render::tile_count(s.width, s.height);
-    let bar = if quiet { ProgressBar::hidden() } else { ProgressBar::new(tiles) };
+    let full = (s.width, s.height);
+    let region = match job.tile {
+        Some((i, n)) => Region::band(s.width, s.height, i, n).map_err(anyhow::Error::msg)?,
+        None => Region::full(s.width, s.height),
+    };
+    let template =
+        Partial { state: TiledFilm::new(region), full, fingerprint: fingerprint(&world), farm_tile: job.tile };
+    let state = match &job.checkpoint {
+        Some(path) if path.exists() => resume(path, &template)?,
+        _ => template.state.clone(),
+    };
+    let checkpointer = job.checkpoint.as_ref().map(|path| {
+        Checkpointer::new(path.clone(), Duration::from_secs_f64(job.checkpoint_every * 60.0), template.clone())
+    });
+    if let Some(sig) = interrupt.signal() {
+        eprintln!("interrupted by signal {sig} before rendering started; nothing written");
+        std::process::exit(128 + sig);
+    }
+
+    let bar = if quiet { ProgressBar::hidden() } else { ProgressBar::new(u64::from(state.done.len())) };
     bar.set_style(
         ProgressStyle::with_template("{spinner} [{elapsed_precise}] {wide_bar} {percent}% ETA {eta}")
             .expect("static template"),
     );
-    let (film, stats) = pool.install(|| tress::render::render(&world, Some(&bar)));
+    bar.set_position(u64::from(state.done.count()));
+    bar.reset_eta();
+    let after_tile = |shared: &std::sync::Mutex<TiledFilm>| {
+        if let Some(Err(e)) = checkpointer.as_ref().and_then(|c| c.maybe_save(shared)) {
+            bar.println(format!("warning: checkpoint not saved: {e}"));
+        }
+    };
+    let control = Control { progress: Some(&bar), cancel: Some(interrupt.flag()), after_tile: Some(&after_tile) };
+    let (state, stats) = pool.install(|| render_tiles(&world, state, &control));
     bar.finish_and_clear();
-    tress::film::write_image(output, &film)?;
+
+    let part = Partial { state, ..template };
+    if !part.is_complete() {
+        // Interrupted: keep what is done and stop with the signal's status, so a scheduler
+        // sees the job did not finish.
+        let sig = interrupt.signal().unwrap_or(libc::SIGINT);
+        if let Some(c) = &checkpointer {
+            c.save(part.state.clone())?;
+            eprintln!("saved checkpoint {}", c.path().display());
+        }
+        if is_exr(output) {
+            part.save(output)?;
+        } else {
+            tress::film::write_image(output, &part.state.film)?;
+        }
+        eprintln!(
+            "interrupted by signal {sig}: wrote the partial image {} ({} of {} tiles done)",
+            output.display(),
+            part.state.done.count(),
+            part.state.done.len()
+        );
+        std::process::exit(128 + sig);
+    }
+    if job.tile.is_some() {
+        part.save(output)?;
+    } else {
+        tress::film::write_image(output, &part.state.film)?;
+    }
+    if let Some(c) = &checkpointer {
+        std::fs::remove_file(c.path()).or_else(|e| match e.kind() {
+            std::io::ErrorKind::NotFound => Ok(()),
+            _ => Err(e),
+        })?;
+    }
     let hair = Memory::of(&world.accel);
     let secs = stats.elapsed.as_secs_f64();
+    let part_of = match job.tile {
+        Some((i, n)) => format!("tile {i}/{n}: rows {} to {} of ", region.y, region.y + region.height - 1),
+        None => String::new(),
+    };
     eprintln!(
-        "wrote {} ({}x{}, {} spp, {} threads)",
+        "wrote {} ({part_of}{}x{}, {} spp, {} threads)",
         output.display(),
         s.width,
         s.height,
@@ -283,6 +426,70 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Re
             hair.bytes_per_segment()
         );
     }
+    Ok(())
+}
+
+/// The state saved in a checkpoint, if it belongs to this render.
+fn resume(path: &Path, template: &Partial) -> Result<TiledFilm> {
+    let saved = Partial::load(path)?;
+    if saved.fingerprint != template.fingerprint
+        || saved.full != template.full
+        || saved.state.region != template.state.region
+        || saved.farm_tile != template.farm_tile
+    {
+        anyhow::bail!(
+            "{}: the checkpoint is of another render (scene, settings, frame or tile differ); delete it to start afresh",
+            path.display()
+        );
+    }
+    eprintln!(
+        "resuming from {}: {} of {} tiles done",
+        path.display(),
+        saved.state.done.count(),
+        saved.state.done.len()
+    );
+    Ok(saved.state)
+}
+
+/// SIGINT and SIGTERM (and SIGHUP) handling for renders: the first signal asks the render
+/// to stop and write what it has; a second one ends the process at once.
+struct Interrupt {
+    flag: Arc<AtomicBool>,
+    signal: Arc<AtomicUsize>,
+}
+
+impl Interrupt {
+    fn install() -> Result<Interrupt> {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        let interrupt = Interrupt { flag: Arc::new(AtomicBool::new(false)), signal: Arc::new(AtomicUsize::new(0)) };
+        for sig in [SIGINT, SIGTERM, SIGHUP] {
+            // Registered first, so it sees the flag as the previous signal left it.
+            signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, interrupt.flag.clone())?;
+            signal_hook::flag::register_usize(sig, interrupt.signal.clone(), sig as usize)?;
+            signal_hook::flag::register(sig, interrupt.flag.clone())?;
+        }
+        Ok(interrupt)
+    }
+
+    fn flag(&self) -> &AtomicBool {
+        &self.flag
+    }
+
+    /// The signal received, if any.
+    fn signal(&self) -> Option<i32> {
+        match self.signal.load(Ordering::SeqCst) {
+            0 => None,
+            s => Some(s as i32),
+        }
+    }
+}
+
+fn merge(tiles: &[PathBuf], output: &Path) -> Result<()> {
+    tress::film::check_output(output)?;
+    let parts = tiles.iter().map(|p| Ok((p.clone(), Partial::load(p)?))).collect::<Result<Vec<_>>>()?;
+    let film = tress::partial::merge(&parts)?;
+    tress::film::write_image(output, &film)?;
+    eprintln!("wrote {} ({}x{}, from {} tiles)", output.display(), film.width, film.height, parts.len());
     Ok(())
 }
 

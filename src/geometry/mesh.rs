@@ -65,6 +65,17 @@ impl TriangleMesh {
         }
     }
 
+    /// Removes the triangles with a corner that is missing, not finite or beyond
+    /// [`super::MAX_COORDINATE`] (positions pushed past the float range by a transform);
+    /// returns how many.
+    pub fn remove_unusable_triangles(&mut self) -> usize {
+        let before = self.indices.len();
+        let positions = &self.positions;
+        let usable = |p: &Vec3| p.is_finite() && p.abs().max_element() <= super::MAX_COORDINATE;
+        self.indices.retain(|t| t.iter().all(|&v| positions.get(v as usize).is_some_and(usable)));
+        before - self.indices.len()
+    }
+
     /// Checks indices are in range and positions finite; returns a description of the
     /// first problem found.
     pub fn validate(&self) -> Result<(), String> {

@@ -289,6 +289,37 @@ pub fn parse_hair(bytes: &[u8], path: &Path) -> Result<StrandSet, LoadError> {
     Ok(StrandSet { points, offsets, colors, opacity, strand_info: None })
 }
 
+/// What a `.hair` file's header says the file holds, for estimates made before reading it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HairCounts {
+    /// Number of strands.
+    pub strands: u32,
+    /// Number of points.
+    pub points: u32,
+    /// Whether the file has per-point colours.
+    pub colors: bool,
+    /// Whether reading it gives per-point opacity.
+    pub opacity: bool,
+}
+
+/// Reads only the 128-byte header of a `.hair` file (the rest is checked when it is read).
+pub fn read_hair_counts(path: &Path) -> Result<HairCounts, LoadError> {
+    use std::io::Read;
+    let mut bytes = [0u8; HEADER_SIZE];
+    let mut file = std::fs::File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    file.read_exact(&mut bytes).map_err(|e| LoadError::io(path, "read the hair header", e))?;
+    if &bytes[..4] != SIGNATURE {
+        return Err(LoadError::format(path, "not a hair file: it does not start with the \"HAIR\" signature"));
+    }
+    let h = Header::decode(&bytes);
+    Ok(HairCounts {
+        strands: h.strands,
+        points: h.points,
+        colors: h.has(HAS_COLOR),
+        opacity: h.has(HAS_TRANSPARENCY) || h.default_transparency != 0.0,
+    })
+}
+
 /// Checks the data length against what the header requires, before anything is allocated.
 fn check_length(header: &Header, len: u64) -> Result<(), String> {
     let need = header.file_size();

@@ -1,5 +1,8 @@
 //! Scene files in TOML (documented in `docs/scene-format.md`), read into a
 //! [`Description`]. Unknown keys and wrong types are errors naming the file, line and key.
+//!
+//! An animated scene (camera keys, or file names with `#` runs standing for the frame
+//! number) is read at one frame: the camera is interpolated and the frame substituted.
 
 use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPlacement};
 use crate::geometry::TriangleMesh;
@@ -82,12 +85,27 @@ struct ImportToml {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct CameraToml {
-    eye: V3,
-    target: V3,
+    /// Required unless there are keys.
+    eye: Option<V3>,
+    /// Required unless there are keys.
+    target: Option<V3>,
     #[serde(default = "default_up")]
     up: V3,
     #[serde(default = "default_vfov")]
     vfov: f32,
+    /// A camera path: keys at frames, interpolated linearly between them.
+    #[serde(default)]
+    key: Vec<CameraKeyToml>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CameraKeyToml {
+    frame: u32,
+    eye: V3,
+    target: V3,
+    /// Defaults to the camera's `vfov`.
+    vfov: Option<f32>,
 }
 
 fn default_up() -> V3 {
@@ -685,18 +703,40 @@ pub fn read_scene(path: &Path) -> Result<Description, SceneFileError> {
 /// Reads a scene file and returns with it the warnings of its `[[import]]`s (what the
 /// imported files hold that tress skipped).
 pub fn read_scene_with_warnings(path: &Path) -> Result<(Description, Vec<String>), SceneFileError> {
-    let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
-    parse_scene_with_warnings(&text, path)
+    read_scene_frame_with_warnings(path, None)
 }
 
-/// Parses scene text; `path` names the file in messages and anchors relative paths. The
-/// warnings of `[[import]]`s are dropped: [`parse_scene_with_warnings`] returns them.
+/// Parses scene text; `path` names the file in messages and anchors relative paths.
+/// An animated scene is an error here: read it with [`read_scene_frame`]. The warnings of
+/// `[[import]]`s are dropped: [`parse_scene_frame`] returns them.
 pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileError> {
-    parse_scene_with_warnings(text, path).map(|(d, _)| d)
+    parse_scene_frame(text, path, None).map(|(d, _)| d)
 }
 
-/// [`parse_scene`], with the warnings of the scene's `[[import]]`s.
-pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description, Vec<String>), SceneFileError> {
+/// Reads a scene file at animation frame `frame` (see [`parse_scene_frame`]).
+pub fn read_scene_frame(path: &Path, frame: Option<u32>) -> Result<Description, SceneFileError> {
+    read_scene_frame_with_warnings(path, frame).map(|(d, _)| d)
+}
+
+/// [`read_scene_frame`], with the warnings of the scene's `[[import]]`s.
+pub fn read_scene_frame_with_warnings(
+    path: &Path,
+    frame: Option<u32>,
+) -> Result<(Description, Vec<String>), SceneFileError> {
+    let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
+    parse_scene_frame(&text, path, frame)
+}
+
+/// Parses scene text at animation frame `frame`: the camera keys are interpolated at it
+/// and every run of `#` in a file name becomes the frame number, zero-padded to the run's
+/// length (`hair.####.hair` at frame 7 is `hair.0007.hair`). A scene with keys or
+/// patterns needs a frame; a frame given to a scene with neither changes nothing.
+/// Returns the warnings of the scene's `[[import]]`s with it.
+pub fn parse_scene_frame(
+    text: &str,
+    path: &Path,
+    frame: Option<u32>,
+) -> Result<(Description, Vec<String>), SceneFileError> {
     let syntax = |e: toml::de::Error| SceneFileError::Syntax { path: path.to_owned(), message: e.to_string() };
     let invalid = |message: String| SceneFileError::Invalid { path: path.to_owned(), message };
     let scene: SceneToml = toml::from_str(text).map_err(syntax)?;
@@ -708,7 +748,24 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
         }
     };
     let c = &scene.camera;
-    finite("camera", &[c.eye, c.target, c.up].concat())?;
+    let animated = !c.key.is_empty()
+        || scene
+            .mesh
+            .iter()
+            .filter_map(|m| m.file.as_ref())
+            .chain(scene.hair.iter().map(|h| &h.file))
+            .any(|f| has_pattern(f));
+    let frame = match (frame, animated) {
+        (None, true) => {
+            return Err(invalid(
+                "the scene is animated (camera keys or `#` frame patterns in file names): give a frame (--frame F)"
+                    .into(),
+            ))
+        }
+        (frame, _) => frame.unwrap_or(0),
+    };
+    let (eye, target, vfov) = camera_at(c, frame).map_err(|m| invalid(format!("camera: {m}")))?;
+    finite("camera", &[eye, target, c.up, [vfov, 0.0, 0.0]].concat())?;
     let r = &scene.render;
     let defaults = RenderSettings::default();
     let integrator = match r.integrator.as_deref() {
@@ -740,7 +797,7 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
     for (i, m) in scene.mesh.iter().enumerate() {
         let what = |m: String| invalid(format!("mesh {}: {m}", i + 1));
         let source = match (&m.file, &m.shape) {
-            (Some(file), None) => MeshSource::File(base.join(file)),
+            (Some(file), None) => MeshSource::File(base.join(at_frame(file, frame))),
             (None, Some(shape)) => MeshSource::Inline(procedural(shape).map_err(what)?),
             _ => return Err(what("give exactly one of `file` and `shape`".into())),
         };
@@ -754,7 +811,7 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
     for (i, h) in scene.hair.iter().enumerate() {
         let what = |m: String| invalid(format!("hair {}: {m}", i + 1));
         hair.push(HairEntry {
-            source: HairSource::File(base.join(&h.file)),
+            source: HairSource::File(base.join(at_frame(&h.file, frame))),
             material: material(&h.material).map_err(what)?,
             transform: transform(&h.transform).map_err(what)?,
             radius_scale: h.radius_scale,
@@ -788,7 +845,7 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
         hair_systems.append(&mut imported.hair_systems);
     }
     let desc = Description {
-        camera: CameraDesc { eye: c.eye.into(), target: c.target.into(), up: c.up.into(), vfov: c.vfov },
+        camera: CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov },
         settings,
         lights,
         meshes,
@@ -798,6 +855,66 @@ pub fn parse_scene_with_warnings(text: &str, path: &Path) -> Result<(Description
     };
     desc.validate().map_err(|e| invalid(e.to_string()))?;
     Ok((desc, warnings))
+}
+
+/// Eye, target and field of view at `frame`: the fixed camera, or the keys interpolated
+/// linearly (held before the first key and after the last).
+fn camera_at(c: &CameraToml, frame: u32) -> Result<(V3, V3, f32), String> {
+    let (first, last) = match (c.key.first(), c.key.last()) {
+        (None, _) | (_, None) => {
+            return match (c.eye, c.target) {
+                (Some(eye), Some(target)) => Ok((eye, target, c.vfov)),
+                _ => Err("give `eye` and `target`, or camera keys".into()),
+            }
+        }
+        (Some(first), Some(last)) => (first, last),
+    };
+    if c.eye.is_some() || c.target.is_some() {
+        return Err("give either `eye` and `target` or camera keys, not both".into());
+    }
+    if let Some(w) = c.key.windows(2).find(|w| w[0].frame >= w[1].frame) {
+        return Err(format!("key frames must increase: frame {} comes after frame {}", w[1].frame, w[0].frame));
+    }
+    let vfov = |k: &CameraKeyToml| k.vfov.unwrap_or(c.vfov);
+    let key = |k: &CameraKeyToml| (k.eye, k.target, vfov(k));
+    if frame <= first.frame {
+        return Ok(key(first));
+    }
+    if frame >= last.frame {
+        return Ok(key(last));
+    }
+    let after = c.key.partition_point(|k| k.frame <= frame);
+    let (a, b) = (&c.key[after - 1], &c.key[after]);
+    let t = (frame - a.frame) as f32 / (b.frame - a.frame) as f32;
+    let lerp3 = |p: V3, q: V3| std::array::from_fn(|i| p[i] + (q[i] - p[i]) * t);
+    Ok((lerp3(a.eye, b.eye), lerp3(a.target, b.target), vfov(a) + (vfov(b) - vfov(a)) * t))
+}
+
+/// True when a file name holds a `#` frame pattern.
+fn has_pattern(file: &Path) -> bool {
+    file.file_name().is_some_and(|n| n.to_string_lossy().contains('#'))
+}
+
+/// The file name with every run of `#` replaced by `frame`, zero-padded to the run's length.
+fn at_frame(file: &Path, frame: u32) -> PathBuf {
+    let Some(name) = file.file_name().map(|n| n.to_string_lossy().into_owned()) else { return file.to_owned() };
+    if !name.contains('#') {
+        return file.to_owned();
+    }
+    let mut out = String::new();
+    let mut chars = name.chars().peekable();
+    while let Some(ch) = chars.next() {
+        if ch != '#' {
+            out.push(ch);
+            continue;
+        }
+        let mut width = 1;
+        while chars.next_if_eq(&'#').is_some() {
+            width += 1;
+        }
+        out.push_str(&format!("{frame:0width$}"));
+    }
+    file.with_file_name(out)
 }
 
 fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
@@ -1228,6 +1345,59 @@ seed = 7
                 assert!(e.contains(n), "{entry}: `{e}` lacks `{n}`");
             }
         }
+    }
+
+    const KEYS: &str = r#"
+[camera]
+vfov = 40.0
+[[camera.key]]
+frame = 10
+eye = [0.0, 0.0, 10.0]
+target = [0.0, 0.0, 0.0]
+[[camera.key]]
+frame = 20
+eye = [10.0, 0.0, 0.0]
+target = [0.0, 2.0, 0.0]
+vfov = 20.0
+[[hair]]
+file = "sim/hair.####.hair"
+material = { type = "diffuse", color = [1, 1, 1] }
+[[mesh]]
+file = "ground_#.obj"
+material = { type = "diffuse", color = [1, 1, 1] }
+"#;
+
+    #[test]
+    fn camera_keys_interpolate_and_frame_patterns_substitute() {
+        let path = Path::new("dir/anim.toml");
+        let at = |f| parse_scene_frame(KEYS, path, Some(f)).unwrap().0;
+        let d = at(15);
+        assert_eq!(d.camera.eye, Vec3::new(5.0, 0.0, 5.0));
+        assert_eq!(d.camera.target, Vec3::new(0.0, 1.0, 0.0));
+        assert_eq!(d.camera.vfov, 30.0);
+        assert_eq!(d.hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.0015.hair")));
+        assert_eq!(d.meshes[0].source, MeshSource::File(PathBuf::from("dir/ground_15.obj")));
+        // Held before the first key and after the last.
+        assert_eq!((at(0).camera.eye, at(0).camera.vfov), (Vec3::new(0.0, 0.0, 10.0), 40.0));
+        assert_eq!((at(99).camera.eye, at(99).camera.vfov), (Vec3::new(10.0, 0.0, 0.0), 20.0));
+        assert_eq!(at(12345).hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.12345.hair")));
+        let e = parse_scene(KEYS, path).unwrap_err().to_string();
+        assert!(e.contains("dir/anim.toml") && e.contains("--frame"), "{e}");
+        // A still scene ignores the frame.
+        assert_eq!(parse_scene_frame(MINIMAL, path, Some(3)).unwrap().0, parse_scene(MINIMAL, path).unwrap());
+    }
+
+    #[test]
+    fn bad_camera_paths_are_errors() {
+        let path = Path::new("a.toml");
+        let both = KEYS.replace("vfov = 40.0", "vfov = 40.0\neye = [1, 1, 1]");
+        assert!(parse_scene_frame(&both, path, Some(1)).unwrap_err().to_string().contains("not both"));
+        let order = KEYS.replace("frame = 20", "frame = 10");
+        assert!(parse_scene_frame(&order, path, Some(1)).unwrap_err().to_string().contains("must increase"));
+        let e = parse_scene_frame("[camera]\nvfov = 3.0\n", path, None).unwrap_err().to_string();
+        assert!(e.contains("give `eye` and `target`"), "{e}");
+        let nan = KEYS.replace("target = [0.0, 2.0, 0.0]", "target = [0.0, nan, 0.0]");
+        assert!(parse_scene_frame(&nan, path, Some(15)).unwrap_err().to_string().contains("camera"));
     }
 
     #[test]

@@ -7,16 +7,17 @@ mod adaptive;
 mod direct;
 mod final_gather;
 mod path;
+mod tiled;
 
 pub use direct::{trace, Counters, FirstHit};
+pub use tiled::{render_tiles, tile_count_of, AfterTile, Control, TileMask, TiledFilm};
 
 use crate::film::{Film, Pixel};
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
 use crate::scene::{Integrator, World};
 use glam::Vec3;
-use rayon::prelude::*;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// Side of the square image tiles rendered as one task.
 pub const TILE: u32 = 16;
@@ -49,40 +50,9 @@ pub fn tile_count(width: u32, height: u32) -> u64 {
 
 /// Renders the world on the current rayon thread pool.
 pub fn render(world: &World, progress: Option<&dyn Progress>) -> (Film, RenderStats) {
-    let start = Instant::now();
-    let (w, h) = (world.settings.width, world.settings.height);
-    let tiles_x = w.div_ceil(TILE);
-    let tiles = tile_count(w, h) as u32;
-    let results: Vec<(Vec<Pixel>, u64)> = (0..tiles)
-        .into_par_iter()
-        .map(|tile| {
-            let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
-            let mut counters = Counters::default();
-            let mut pixels = Vec::with_capacity((TILE * TILE) as usize);
-            for y in y0..(y0 + TILE).min(h) {
-                for x in x0..(x0 + TILE).min(w) {
-                    pixels.push(render_pixel(world, x, y, &mut counters));
-                }
-            }
-            if let Some(p) = progress {
-                p.advance(1);
-            }
-            (pixels, counters.rays)
-        })
-        .collect();
-    let mut film = Film::new(w, h);
-    let mut rays = 0;
-    for (tile, (pixels, tile_rays)) in results.into_iter().enumerate() {
-        let tile = tile as u32;
-        let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
-        let tw = (x0 + TILE).min(w) - x0;
-        for (i, p) in pixels.into_iter().enumerate() {
-            let (x, y) = (x0 + i as u32 % tw, y0 + i as u32 / tw);
-            film.pixels[(y * w + x) as usize] = p;
-        }
-        rays += tile_rays;
-    }
-    (film, RenderStats { rays, elapsed: start.elapsed() })
+    let full = crate::film::Region::full(world.settings.width, world.settings.height);
+    let (state, stats) = render_tiles(world, TiledFilm::new(full), &Control { progress, ..Control::default() });
+    (state.film, stats)
 }
 
 /// Radiance along a camera ray by the world's integrator, and the first hit.

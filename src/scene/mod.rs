@@ -2,6 +2,10 @@
 //! (plain data the renderer reads). [`prepare`] turns one into the other: it loads the
 //! files a description names, applies transforms and builds the acceleration structures.
 
+mod estimate;
+
+pub use estimate::{estimate_memory, parse_memory_size, MemoryEstimate};
+
 use crate::accel::{Accel, Shape};
 use crate::camera::{Camera, CameraError};
 use crate::geometry::{StrandSet, TriangleMesh};
@@ -243,6 +247,8 @@ pub struct World {
     pub accel: Accel,
     /// Sum of the environment lights' radiance (what unblocked rays see).
     pub background: Color,
+    /// What was skipped while preparing (strands or triangles with unusable numbers).
+    pub warnings: Vec<String>,
 }
 
 /// Why a description cannot be prepared.
@@ -351,18 +357,30 @@ pub struct LoadedGeometry {
     pub shapes: Vec<(Shape, u32)>,
     /// Materials, indexed by the shapes.
     pub materials: Vec<Material>,
+    /// What was skipped: strands or triangles whose numbers are not finite once
+    /// transformed (enormous coordinates scaled past the float range, NaN from a generator).
+    pub warnings: Vec<String>,
 }
 
 /// Loads every mesh and strand set a description names and applies its transform.
 pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError> {
     let mut materials = Vec::new();
     let mut shapes = Vec::new();
-    for m in &desc.meshes {
+    let mut warnings = Vec::new();
+    for (i, m) in desc.meshes.iter().enumerate() {
         let mut mesh = match &m.source {
             MeshSource::File(path) => io::read_mesh(path)?,
             MeshSource::Inline(mesh) => mesh.clone(),
         };
         mesh.transform(&m.transform);
+        let dropped = mesh.remove_unusable_triangles();
+        if dropped > 0 {
+            warnings.push(format!(
+                "mesh {}: skipped {dropped} triangles with corners not finite or beyond ±{:e}",
+                i + 1,
+                crate::geometry::MAX_COORDINATE
+            ));
+        }
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
         materials.push(m.material.clone());
     }
@@ -390,6 +408,14 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
                     i + 1
                 )));
             }
+        }
+        let dropped = strands.remove_unusable_strands();
+        if dropped > 0 {
+            warnings.push(format!(
+                "hair {}: skipped {dropped} strands with coordinates or radii negative, not finite or beyond ±{:e}",
+                i + 1,
+                crate::geometry::MAX_COORDINATE
+            ));
         }
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
@@ -440,7 +466,7 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         shapes.push((Shape::Strands(grown.strands), materials.len() as u32));
         materials.push(Material::Fur(grown.shading));
     }
-    Ok(LoadedGeometry { shapes, materials })
+    Ok(LoadedGeometry { shapes, materials, warnings })
 }
 
 /// Loads geometry, applies transforms and builds the BVHs.
@@ -449,14 +475,21 @@ pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError
     let c = &desc.camera;
     let camera = Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height)?;
     let start = Instant::now();
-    let LoadedGeometry { shapes, materials } = load_geometry(desc)?;
+    let LoadedGeometry { shapes, materials, warnings } = load_geometry(desc)?;
     let load = start.elapsed();
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     let accel = Accel::build(shapes);
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = desc.lights.iter().map(Light::background).sum();
-    let world =
-        World { camera, settings: desc.settings.clone(), lights: desc.lights.clone(), materials, accel, background };
+    let world = World {
+        camera,
+        settings: desc.settings.clone(),
+        lights: desc.lights.clone(),
+        materials,
+        accel,
+        background,
+        warnings,
+    };
     Ok((world, PrepareTimes { load, build, build_cpu }))
 }
