@@ -135,7 +135,7 @@ mod tests {
         let held = m.strand_points + m.strand_bvh + m.mesh + m.other_bvh;
         assert!(e.geometry + e.bvh >= held, "estimate {e:?} below the {held} bytes held");
         assert!(e.geometry + e.bvh <= 6 * held, "estimate {e:?} far above the {held} bytes held");
-        assert_eq!(e.image, 64 * 48 * 40 * IMAGE_COPIES);
+        assert_eq!(e.image, 64 * 48 * std::mem::size_of::<Pixel>() as u64 * IMAGE_COPIES);
     }
 
     #[test]
