@@ -11,9 +11,8 @@
 use crate::accel::{Accel, HitKind, Shape};
 use crate::light::Light;
 use crate::math::rng::hash_u32;
-use crate::math::Color;
 use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings, World};
-use crate::shading::{tube::Tube, Material};
+use crate::shading::Material;
 use crate::stats::process_cpu_time;
 use glam::{Affine3A, Vec3};
 use rayon::prelude::*;
@@ -234,12 +233,9 @@ pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
         .iter()
         .map(|h| HairEntry {
             source: HairSource::File(dir.join(&h.file)),
-            material: Material::Tube(Tube {
-                ambient: h.diffuse.into(),
-                diffuse: h.diffuse.into(),
-                specular: Color::splat(0.3),
-                specular_power: 40.0,
-            }),
+            // Peers shade the curves as diffuse surfaces; so does tress here, for a
+            // pixel-for-pixel comparison.
+            material: Material::Diffuse { color: h.diffuse.into() },
             transform: Affine3A::IDENTITY,
             radius_scale: 1.0,
             file_colors: false,
@@ -257,6 +253,6 @@ pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
         lights,
         meshes,
         hair,
-        hair_systems: Vec::new(),
+        ..Default::default()
     })
 }

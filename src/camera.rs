@@ -46,7 +46,10 @@ impl Camera {
         width: u32,
         height: u32,
     ) -> Result<Camera, CameraError> {
-        let forward = (target - eye).try_normalize().ok_or(CameraError::NoDirection)?;
+        // Divided by its largest component first, so a camera 1e30 away from its target
+        // does not overflow the squared length.
+        let view = target - eye;
+        let forward = (view / view.abs().max_element()).try_normalize().ok_or(CameraError::NoDirection)?;
         let right = forward.cross(up).try_normalize().ok_or(CameraError::UpParallel)?;
         if !(vfov_deg > 0.0 && vfov_deg < 180.0) {
             return Err(CameraError::BadFov(vfov_deg));

@@ -56,7 +56,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
             file_colors: true,
             lod: None,
         }],
-        hair_systems: Vec::new(),
+        ..Default::default()
     }
 }
 

@@ -1,4 +1,5 @@
-//! Lights: distant, point, spot, quad and sphere area lights, and a constant environment.
+//! Lights: distant (sharp, or a disk of finite angular size for soft shadows), point,
+//! spot, quad and sphere area lights, and a constant environment.
 
 use crate::math::{frame, sampling, Color};
 use glam::Vec3;
@@ -53,6 +54,16 @@ pub enum Light {
         radius: f32,
         /// Emitted radiance.
         radiance: Color,
+    },
+    /// A distant light of finite angular size (the sun as a disk), for soft shadows:
+    /// uniform radiance over the cone of directions within its angular radius.
+    Sun {
+        /// Unit direction towards the disk's centre.
+        direction: Vec3,
+        /// Radiance of the disk.
+        radiance: Color,
+        /// Cosine of the disk's angular radius.
+        cos_max: f32,
     },
     /// Constant radiance from every direction not blocked by geometry.
     Environment {
@@ -121,6 +132,12 @@ impl Light {
                 let dist = b - (radius * radius - (dc * dc - b * b)).max(0.0).sqrt();
                 LightSample { dir, dist, value: radiance * (2.0 * PI * (1.0 - cos_max)) }
             }
+            Light::Sun { direction, radiance, cos_max } => {
+                let local = sampling::uniform_cone(u, v, cos_max);
+                let (b1, b2) = frame(direction);
+                let dir = (b1 * local.x + b2 * local.y + direction * local.z).normalize();
+                LightSample { dir, dist: f32::INFINITY, value: radiance * (2.0 * PI * (1.0 - cos_max)) }
+            }
             Light::Environment { radiance } => match normal {
                 Some(n) => {
                     let local = sampling::cosine_hemisphere(u, v);
@@ -178,8 +195,58 @@ impl Light {
                 let t = -b - disc.sqrt();
                 (t > 0.0 && t < tmax).then_some((t, radiance))
             }
+            // Infinitely far: seen only by a ray that meets nothing.
+            Light::Sun { direction, radiance, cos_max } => {
+                (tmax == f32::INFINITY && dir.dot(direction) >= cos_max).then_some((f32::INFINITY, radiance))
+            }
             _ => None,
         }
+    }
+
+    /// Solid-angle density with which [`Light::sample`] picks `dir` from `p`, for
+    /// multiple importance sampling against a material's own sampling; 0 for lights no
+    /// ray can hit (delta lights) and for the environment, which a path tracer reaches by
+    /// material sampling alone.
+    pub fn pdf(&self, p: Vec3, dir: Vec3) -> f32 {
+        match *self {
+            Light::Quad { edge_u, edge_v, .. } => match self.emitted(p, dir, f32::INFINITY) {
+                Some((t, _)) => {
+                    let n = edge_u.cross(edge_v);
+                    let cos_light = -dir.dot(n) / n.length();
+                    if cos_light > 0.0 {
+                        t * t / (n.length() * cos_light)
+                    } else {
+                        0.0
+                    }
+                }
+                None => 0.0,
+            },
+            Light::Sphere { center, radius, .. } => {
+                let dc = p.distance(center);
+                if dc <= radius || self.emitted(p, dir, f32::INFINITY).is_none() {
+                    return 0.0;
+                }
+                let sin_max = radius / dc;
+                let cos_max = (1.0 - sin_max * sin_max).max(0.0).sqrt();
+                1.0 / (2.0 * PI * (1.0 - cos_max))
+            }
+            Light::Sun { direction, cos_max, .. } if dir.dot(direction) >= cos_max => {
+                1.0 / (2.0 * PI * (1.0 - cos_max))
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// A distant light of `irradiance` on a surface facing it, spread over a disk of
+    /// `angular_diameter` radians: [`Light::Sun`] whose radiance gives that irradiance
+    /// (E = pi L sin^2(radius)), or a sharp [`Light::Distant`] for a zero diameter.
+    pub fn distant(direction: Vec3, irradiance: Color, angular_diameter: f32) -> Light {
+        let radius = 0.5 * angular_diameter;
+        if radius <= 0.0 {
+            return Light::Distant { direction, irradiance };
+        }
+        let sin = radius.min(0.5 * PI).sin();
+        Light::Sun { direction, radiance: irradiance / (PI * sin * sin), cos_max: radius.min(0.5 * PI).cos() }
     }
 
     /// Radiance of the environment seen along any unblocked ray (zero for other lights).
@@ -247,6 +314,46 @@ mod tests {
         let s = 1.0 / (1.0 + h * h).sqrt();
         let expected = 4.0 * s * (s).atan() * 1.0;
         assert!((e - expected).abs() < 0.01 * expected, "{e} vs {expected}");
+    }
+
+    #[test]
+    fn sun_gives_its_irradiance_and_its_pdf_matches_its_samples() {
+        let light = Light::distant(Vec3::Z, Color::splat(2.0), 4f32.to_radians());
+        let e = irradiance(&light, Vec3::ZERO, Vec3::Z, 64).x;
+        assert!((e - 2.0).abs() < 2e-3, "{e}");
+        for (u, v) in [(0.1, 0.2), (0.7, 0.9), (0.5, 0.5)] {
+            let s = light.sample(Vec3::ZERO, None, (u, v)).unwrap();
+            let Light::Sun { radiance, .. } = light else { panic!("a sun") };
+            // value = L / pdf for a uniform light.
+            assert!((radiance.x / light.pdf(Vec3::ZERO, s.dir) - s.value.x).abs() < 1e-3 * s.value.x);
+            assert_eq!(light.emitted(Vec3::ZERO, s.dir, f32::INFINITY).map(|e| e.1), Some(radiance));
+        }
+        assert_eq!(light.pdf(Vec3::ZERO, Vec3::X), 0.0);
+        assert_eq!(
+            Light::distant(Vec3::Z, Color::ONE, 0.0),
+            Light::Distant { direction: Vec3::Z, irradiance: Color::ONE }
+        );
+    }
+
+    #[test]
+    fn area_light_pdf_matches_their_samples() {
+        let lights = [
+            Light::Quad {
+                corner: Vec3::new(-1.0, -0.5, 2.0),
+                edge_u: Vec3::new(0.0, 1.5, 0.3),
+                edge_v: Vec3::new(2.0, 0.0, 0.0),
+                radiance: Color::ONE,
+            },
+            Light::Sphere { center: Vec3::new(0.5, 0.0, 3.0), radius: 0.7, radiance: Color::ONE },
+        ];
+        for light in &lights {
+            for (u, v) in [(0.1, 0.2), (0.7, 0.9), (0.5, 0.5), (0.95, 0.05)] {
+                let s = light.sample(Vec3::ZERO, None, (u, v)).unwrap();
+                let pdf = light.pdf(Vec3::ZERO, s.dir);
+                assert!((1.0 / pdf - s.value.x).abs() < 2e-3 * s.value.x, "{light:?}: {} vs {}", 1.0 / pdf, s.value.x);
+            }
+            assert_eq!(light.pdf(Vec3::ZERO, -Vec3::Z), 0.0);
+        }
     }
 
     #[test]

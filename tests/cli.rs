@@ -68,3 +68,54 @@ fn renders_a_scene_file_to_png_and_exr() {
     // The sphere is in the middle of the frame, lit from above.
     assert!(img.get_pixel(4, 2)[0] > 30);
 }
+
+#[test]
+fn fur_export_writes_the_grown_fur_and_bad_fur_gives_clear_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let fur = |extra: &str| {
+        format!(
+            "{HEAD}[[mesh]]\nshape = {{ type = \"sphere\", radius = 0.5 }}\nmaterial = {{ type = \"diffuse\", color = [1, 1, 1] }}\n\
+             [[hair]]\nfile = \"two.hair\"\nmaterial = {{ type = \"tube\", diffuse = [1, 1, 1] }}\n\
+             [[fur]]\nmesh = 1\npreset = \"Mouse\"\ndensity = 3000\n{extra}"
+        )
+    };
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/two_strands.hair");
+    std::fs::copy(data, d.join("two.hair")).unwrap();
+    std::fs::write(d.join("fur.toml"), fur("")).unwrap();
+    let (ok, stderr) = tress(&["fur", "export", "fur.toml", "-o", "fur.hair"], d);
+    assert!(ok, "{stderr}");
+    // Only the fur is written, not the scene's other strands; it reads back whole.
+    let strands = tress::io::hair::read_hair(&d.join("fur.hair")).unwrap();
+    let desc = tress::io::scene_file::read_scene(&d.join("fur.toml")).unwrap();
+    let geometry = tress::scene::load_geometry(&desc).unwrap();
+    let grown = geometry.shapes.iter().find_map(|(s, m)| match (s, &geometry.materials[*m as usize]) {
+        (tress::accel::Shape::Strands(s), tress::shading::Material::Fur(_)) => Some(s),
+        _ => None,
+    });
+    let grown = grown.expect("the scene grows fur");
+    assert_eq!(strands.strand_count(), grown.strand_count());
+    assert!((2900..3100).contains(&strands.strand_count()), "{}", strands.strand_count());
+    assert_eq!(strands.points, grown.points);
+    assert_eq!(strands.colors, grown.colors);
+    // `tress export` writes every strand set: two more strands.
+    let (ok, stderr) = tress(&["export", "fur.toml", "-o", "all.hair"], d);
+    assert!(ok, "{stderr}");
+    assert_eq!(tress::io::hair::read_hair(&d.join("all.hair")).unwrap().strand_count(), grown.strand_count() + 2);
+
+    std::fs::write(d.join("nomap.toml"), fur("length_map = \"missing.png\"\n")).unwrap();
+    assert_clear_error(&["fur", "export", "nomap.toml", "-o", "x.hair"], d, &["missing.png"]);
+    std::fs::write(d.join("neg.toml"), fur("tip_width = -1\n")).unwrap();
+    assert_clear_error(&["render", "neg.toml", "-o", "x.png"], d, &["neg.toml", "fur 1", "tip_width"]);
+    std::fs::write(d.join("size.toml"), fur("polar_map = [0.5, 0.5]\n")).unwrap();
+    assert_clear_error(&["fur", "export", "size.toml", "-o", "x.hair"], d, &["fur 1", "polar_map", "2 values"]);
+    assert_clear_error(&["fur", "export", "fur.toml", "-o", "x.obj"], d, &["x.obj", ".hair"]);
+    assert!(!d.join("x.hair").exists());
+
+    let out = Command::new(env!("CARGO_BIN_EXE_tress")).args(["fur", "presets"]).output().unwrap();
+    let listing = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    for name in ["Duckling:", "Squirrel:", "Llama:", "PolarBear:"] {
+        assert!(listing.lines().any(|l| l.starts_with(name)), "`fur presets` lacks {name}: {listing}");
+    }
+}

@@ -18,7 +18,6 @@ fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Descrip
         settings: RenderSettings { width: 24, height: 24, spp: 1024, max_depth: 0, ..Default::default() },
         lights: vec![Light::Environment { radiance: Color::ONE }],
         meshes: vec![],
-        hair_systems: Vec::new(),
         hair: vec![HairEntry {
             source: HairSource::Inline(strands),
             material: Material::Physical(PhysicalHair::new(params)),
@@ -27,6 +26,7 @@ fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Descrip
             file_colors,
             lod: None,
         }],
+        ..Default::default()
     }
 }
 

@@ -1,5 +1,5 @@
-//! End-to-end renders of the demo scene: a golden image with a tolerance, and
-//! bit-identical images whatever the thread count.
+//! End-to-end renders of the demo scene and a fur scene: golden images with a tolerance,
+//! bit-identical images whatever the thread count, and strand transparency.
 
 use std::path::Path;
 use tress::film::{srgb_encode, Film};
@@ -32,24 +32,126 @@ fn same_image_with_one_and_two_threads() {
     assert_eq!(a, b);
 }
 
-#[test]
-fn demo_matches_the_golden_image() {
-    let film = small_demo(2);
-    let got = to_rgb8(&film);
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/golden_demo.png");
+/// Compares a render with the reference `tests/data/NAME` (rewritten when `TRESS_BLESS`
+/// is set). Tolerance: small per-pixel differences from floating-point changes are fine;
+/// a shading, sampling or geometry change moves the mean or many pixels.
+fn assert_matches_golden(film: &Film, name: &str) -> Vec<u8> {
+    let got = to_rgb8(film);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(name);
     if std::env::var_os("TRESS_BLESS").is_some() {
         image::save_buffer(&path, &got, film.width, film.height, image::ColorType::Rgb8).unwrap();
     }
     let want = image::open(&path).expect("reference image (regenerate with TRESS_BLESS=1)").to_rgb8();
     assert_eq!((want.width(), want.height()), (film.width, film.height));
-    // Tolerance: small per-pixel differences from floating-point changes are fine; a
-    // shading, sampling or geometry change moves the mean or many pixels.
     let diffs: Vec<i32> = got.iter().zip(want.as_raw()).map(|(&a, &b)| (a as i32 - b as i32).abs()).collect();
     let mean = diffs.iter().sum::<i32>() as f64 / diffs.len() as f64;
     let large = diffs.iter().filter(|&&d| d > 16).count() as f64 / diffs.len() as f64;
     assert!(mean < 1.0 && large < 0.01, "mean difference {mean:.3}, {:.2} % of values differ by > 16", large * 100.0);
+    got
+}
+
+#[test]
+fn demo_matches_the_golden_image() {
+    let film = small_demo(2);
+    let got = assert_matches_golden(&film, "golden_demo.png");
     // The image is not trivially black or saturated: hair, torus and ground are all lit.
     let avg = got.iter().map(|&v| v as f64).sum::<f64>() / got.len() as f64;
     assert!(avg > 20.0 && avg < 200.0, "mean value {avg}");
     assert!(film.pixels.iter().any(|p| p.strand_id >= 0.0), "no hair visible");
+}
+
+/// A small fur scene: the Squirrel preset (clumping, scraggle, noise) with see-through
+/// tips on a sphere, through the scene file, the generator and fur shading.
+const FUR_SCENE: &str = r#"
+[camera]
+eye = [0.0, 1.2, 3.0]
+target = [0.0, 0.0, 0.0]
+[render]
+resolution = [160, 120]
+spp = 4
+[[light]]
+type = "distant"
+direction = [0.4, 0.9, 0.6]
+irradiance = [3.0, 3.0, 3.0]
+[[light]]
+type = "environment"
+radiance = [0.4, 0.4, 0.45]
+[[mesh]]
+shape = { type = "sphere", radius = 0.8 }
+material = { type = "diffuse", color = [0.07, 0.05, 0.04] }
+[[fur]]
+mesh = 1
+preset = "Squirrel"
+density = 20000
+tip_opacity = 0.5
+seed = 3
+"#;
+
+#[test]
+fn fur_matches_the_golden_image_whatever_the_thread_count() {
+    let desc = tress::io::scene_file::parse_scene(FUR_SCENE, Path::new("fur.toml")).unwrap();
+    let render = |threads| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        pool.install(|| tress::render::render(&prepare(&desc).unwrap().0, None).0)
+    };
+    let film = render(2);
+    assert_eq!(film, render(1));
+    let got = assert_matches_golden(&film, "golden_fur.png");
+    // Fur covers much of the frame and is lit: brownish grey, neither black nor white.
+    let hair = film.pixels.iter().filter(|p| p.strand_id >= 0.0).count() as f64 / film.pixels.len() as f64;
+    assert!(hair > 0.3, "fur covers {hair:.2} of the frame");
+    let avg = got.iter().map(|&v| v as f64).sum::<f64>() / got.len() as f64;
+    assert!(avg > 40.0 && avg < 200.0, "mean value {avg}");
+}
+
+/// Strands of opacity `a` in front of a uniform background let through `1 - a` of it on
+/// average (stochastic transparency), and stacked strands multiply their transmittance.
+#[test]
+fn semi_transparent_strands_let_the_background_through() {
+    use glam::{Affine3A, Vec3};
+    use tress::geometry::StrandSet;
+    use tress::light::Light;
+    use tress::math::{rng::PixelSampler, Color, Ray};
+    use tress::render::{trace, Counters};
+    use tress::scene::{CameraDesc, Description, HairEntry, HairSource, RenderSettings};
+    use tress::shading::{tube::Tube, Material};
+    let seen = |opacities: &[f32]| {
+        let mut strands = StrandSet::new();
+        for (i, _) in opacities.iter().enumerate() {
+            // Thick black strands across the view axis, one behind the other.
+            let z = -(i as f32);
+            strands.push_strand([(Vec3::new(-1.0, 0.0, z), 0.2), (Vec3::new(1.0, 0.0, z), 0.2)]);
+        }
+        strands.opacity = Some(opacities.iter().flat_map(|&a| [a, a]).collect());
+        let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
+        let desc = Description {
+            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 10.0 },
+            settings: RenderSettings { width: 8, height: 8, spp: 1, ..Default::default() },
+            lights: vec![Light::Environment { radiance: Color::ONE }],
+            meshes: vec![],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(strands),
+                material: Material::Tube(black),
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: false,
+                lod: None,
+            }],
+            ..Default::default()
+        };
+        let world = prepare(&desc).unwrap().0;
+        let n = 4096;
+        let mut sum = 0.0;
+        for i in 0..n {
+            let mut sampler = PixelSampler::new(0, 3, 4, i);
+            let ray = Ray::new(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z);
+            sum += trace(&world, &ray, 0, &mut sampler, &mut Counters::default()).0.x;
+        }
+        sum / n as f32
+    };
+    assert_eq!(seen(&[1.0]), 0.0);
+    for (opacities, expected) in [(&[0.25][..], 0.75), (&[0.5, 0.5], 0.25), (&[0.0, 0.9], 0.1)] {
+        let got = seen(opacities);
+        assert!((got - expected).abs() < 0.03, "{opacities:?}: {got} vs {expected}");
+    }
 }

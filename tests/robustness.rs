@@ -24,7 +24,7 @@ fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> 
             file_colors: false,
             lod: None,
         }],
-        hair_systems: Vec::new(),
+        ..Default::default()
     };
     prepare(&desc).unwrap().0
 }

@@ -22,7 +22,6 @@
 //! dither per ray instead of showing a seam, and stay deterministic.
 
 use super::bvh::{BuildItem, Bvh, RayBoxTest};
-use super::{intersect_strands, HitKind, Skip};
 use crate::geometry::{segment, StrandSet};
 use crate::math::rng::{hash_combine, unit_float, GenRng};
 use crate::math::{Aabb, RayCone};
@@ -132,6 +131,49 @@ impl RayLevels {
         self.cutoffs[..max].iter().take_while(|&&c| t >= c).count()
     }
 }
+
+/// A ray as level of detail sees it: where it starts and goes, its cone, and its jitter.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LodRay {
+    origin: Vec3,
+    dir: Vec3,
+    cone: RayCone,
+    jitter: f32,
+}
+
+impl LodRay {
+    /// The ray from `origin` along unit `dir` with footprint `cone`.
+    #[inline]
+    pub(crate) fn new(origin: Vec3, dir: Vec3, cone: RayCone) -> LodRay {
+        LodRay { origin, dir, cone, jitter: ray_jitter(origin, dir) }
+    }
+}
+
+/// One group of a strand set as a ray traverses it: the level (and radius factor) of each
+/// of its segments from the segment's distance along the ray.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct GroupView<'a> {
+    lod: &'a StrandLod,
+    levels: &'a RayLevels,
+    group: usize,
+    origin: Vec3,
+    dir: Vec3,
+}
+
+impl GroupView<'_> {
+    /// Radius factor and level of the segment between points `a` and `b`. The level is read
+    /// at the distance of the segment's midpoint along the ray: segments are short next to
+    /// the distances where levels change.
+    #[inline(always)]
+    pub(crate) fn widen(&self, a: [f32; 4], b: [f32; 4]) -> (f32, u32) {
+        let mid = Vec3::new(a[0] + b[0], a[1] + b[1], a[2] + b[2]) * 0.5;
+        let level = self.levels.level((mid - self.origin).dot(self.dir), self.group);
+        (self.lod.scales[level], level as u32)
+    }
+}
+
+/// How a leaf's segments are widened for a ray's level of detail: `None` at full detail.
+pub(crate) type Widen<'a> = Option<GroupView<'a>>;
 
 /// A jitter value in [0, 1) for the level choice, derived from the ray's bits so it is the
 /// same whatever thread traces it, and differs from ray to ray (sub-pixel offsets, shadow
@@ -243,55 +285,42 @@ impl StrandLod {
         RayLevels { cutoffs, levels }
     }
 
-    /// The nearest hit of the ray on the pruned strands before `*tmax` (which it shortens),
-    /// ignoring `skip`: (segment, distance, where, level). With `any`, stops at the first
-    /// hit found (shadow rays).
-    #[allow(clippy::too_many_arguments)]
-    pub(super) fn intersect(
+    /// Visits the leaves of the groups a ray sees before `*tmax`: group `k` up to the
+    /// distance where the ray's level passes `k`. `leaf(prims, widen, tmax)` as in
+    /// [`super::Object::traverse`]; a hit it records (by shortening the group's `tmax`)
+    /// shortens `*tmax` for the groups after. Returns true when `leaf` stopped.
+    #[inline]
+    pub(super) fn traverse(
         &self,
-        strands: &StrandSet,
         test: &RayBoxTest,
-        origin: Vec3,
-        dir: Vec3,
-        ray: &RayLevels,
+        ray: &LodRay,
         tmax: &mut f32,
-        skip: Option<Skip>,
-        any: bool,
-    ) -> Option<(u32, f32, HitKind, u32)> {
-        let mut best = None;
+        mut leaf: impl FnMut(&[u32], Widen, &mut f32) -> bool,
+    ) -> bool {
+        let levels = self.ray_levels(ray.cone, ray.jitter);
         // Fine groups first: a near hit there bounds the traversal of the coarse groups,
-        // whose boxes are widened for their coarsest level (measured: faster than coarse
-        // first on scenes/lod_field.toml). Far rays skip the fine groups by their cut-off.
-        for k in 0..ray.levels {
-            let limit = ray.cutoffs[k].min(*tmax);
-            if limit.is_nan() || limit <= 0.0 {
+        // whose boxes are widened for their coarsest level. Far rays skip the fine groups
+        // by their cut-off.
+        for k in 0..levels.levels {
+            let start = levels.cutoffs[k].min(*tmax);
+            if start.is_nan() || start <= 0.0 {
                 continue;
             }
-            let mut t = limit;
+            let group = GroupView { lod: self, levels: &levels, group: k, origin: ray.origin, dir: ray.dir };
+            let (mut t, mut stop) = (start, false);
             self.groups[k].traverse(test, &mut t, |prims, t| {
-                // The level of a segment is read at the distance of its midpoint along the
-                // ray: segments are short next to the distances where levels change.
-                let widen = |a: Vec3, b: Vec3| {
-                    let level = ray.level(((a + b) * 0.5 - origin).dot(dir), k);
-                    (self.scales[level], level as u32)
-                };
-                match intersect_strands(strands, prims, origin, dir, *t, skip, widen) {
-                    Some(hit) => {
-                        *t = hit.1;
-                        best = Some(hit);
-                        any
-                    }
-                    None => false,
-                }
+                stop = leaf(prims, Some(group), t);
+                stop
             });
-            if best.is_some() {
-                *tmax = best.map_or(*tmax, |b| b.1);
-                if any {
-                    break;
-                }
+            // Leaves only shorten `t` to a hit, which lies before the group's cut-off.
+            if t < start {
+                *tmax = t;
+            }
+            if stop {
+                return true;
             }
         }
-        best
+        false
     }
 
     /// A strand colour seen at `level`, its contrast to the set's mean reduced by
@@ -512,7 +541,7 @@ mod tests {
         let accel = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
         let lod = accel.objects[0].lod().unwrap();
         let groups = p.strand_groups(s.strand_count(), super::super::lod_seed(0));
-        let (mut hits, mut coarse) = (0, 0);
+        let (mut hits, mut coarse, mut layers) = (0, 0, Vec::new());
         for i in 0..3000 {
             let origin = Vec3::new(rng.random(), rng.random(), rng.random()) * 20.0 - 10.0;
             let target = Vec3::new(rng.random(), rng.random(), rng.random()) * 3.0 - 1.5;
@@ -537,8 +566,12 @@ mod tests {
                 (None, None) => {}
                 (g, e) => panic!("ray {i}: {g:?} vs {e:?}"),
             }
-            let blocked = accel.occluded_cone(ray.origin, ray.dir, 12.0, None, ray.cone);
+            // Shadow rays (transmittance through opaque strands) and the multi-hit query see
+            // the same levels.
+            let blocked = accel.transmittance_cone(ray.origin, ray.dir, 12.0, None, ray.cone) == 0.0;
             assert_eq!(blocked, expected.is_some_and(|e| e.0 < 12.0), "ray {i}");
+            accel.intersect_k(&ray, 0.0, 3, &[], &mut layers);
+            assert_eq!(layers.first().map(|l| (l.hit.prim, l.hit.level)), expected.map(|e| (e.1, e.2)), "ray {i}");
         }
         assert!(hits > 300 && coarse > 50, "the test needs hits at coarse levels: {hits} {coarse}");
     }

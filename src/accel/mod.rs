@@ -1,15 +1,20 @@
 //! Acceleration: one BVH per object over its primitives, and a top-level BVH over objects.
-//! Answers closest-hit and any-hit (shadow) queries for the integrators. A strand set with
-//! level of detail has a BVH per pruning group instead of one ([`lod`]).
+//! Answers closest-hit and any-hit (shadow) queries for the integrators, and multi-hit
+//! queries for semi-transparent hair ([`Accel::intersect_k`], [`Accel::transmittance`]).
+//! A strand set with level of detail has a BVH per pruning group instead of one ([`lod`]);
+//! every query sees it at the level of its ray's cone ([`Object::traverse`]).
 
 pub mod bvh;
+mod layers;
 pub mod lod;
+
+pub use layers::{LayerHit, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray, RayCone};
 use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
-use lod::{LodParams, StrandLod};
+use lod::{LodParams, LodRay, StrandLod, Widen};
 use rayon::prelude::*;
 
 /// The geometry of one object.
@@ -79,6 +84,36 @@ impl Object {
         match self.lod {
             Some(_) => Bvh::build(build_items(&self.shape)).memory_bytes(),
             None => self.bvh.memory_bytes(),
+        }
+    }
+
+    /// Factor the radius of a strand hit at `level` was widened by (1 without level of detail).
+    pub fn radius_scale(&self, level: u32) -> f32 {
+        self.lod.as_ref().map_or(1.0, |l| l.radius_scale(level))
+    }
+
+    /// Visits the leaves of the object's BVH (or of its pruning groups' BVHs, the groups
+    /// the ray sees) that `test` enters before `*tmax`. `leaf(prims, widen, tmax)` tests a
+    /// leaf's primitives, widening segments by `widen` for the ray's level, shortens
+    /// `*tmax` on a hit and returns true to stop; so does this function.
+    #[inline]
+    pub(crate) fn traverse(
+        &self,
+        test: &RayBoxTest,
+        ray: &LodRay,
+        tmax: &mut f32,
+        mut leaf: impl FnMut(&[u32], Widen, &mut f32) -> bool,
+    ) -> bool {
+        match &self.lod {
+            Some(lod) => lod.traverse(test, ray, tmax, leaf),
+            None => {
+                let mut stop = false;
+                self.bvh.traverse(test, tmax, |prims, t| {
+                    stop = leaf(prims, None, t);
+                    stop
+                });
+                stop
+            }
         }
     }
 
@@ -188,25 +223,18 @@ impl Accel {
     /// Strand sets with level of detail use the level of `ray.cone` at each distance.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let test = RayBoxTest::new(ray.origin, ray.dir);
-        let jitter = lod::ray_jitter(ray.origin, ray.dir);
+        let lod_ray = LodRay::new(ray.origin, ray.dir, ray.cone);
         let mut tmax = ray.tmax;
         let mut best = None;
         self.top.traverse(&test, &mut tmax, |objects, tmax| {
             for &object in objects {
                 let o = &self.objects[object as usize];
-                if let (Some(lod), Shape::Strands(s)) = (&o.lod, &o.shape) {
-                    let levels = lod.ray_levels(ray.cone, jitter);
+                o.traverse(&test, &lod_ray, tmax, |prims, widen, tmax| {
                     if let Some((prim, t, kind, level)) =
-                        lod.intersect(s, &test, ray.origin, ray.dir, &levels, tmax, None, false)
+                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false, widen)
                     {
-                        best = Some(Hit { t, object, prim, kind, level, radius_scale: lod.radius_scale(level) });
-                    }
-                    continue;
-                }
-                o.bvh.traverse(&test, tmax, |prims, tmax| {
-                    if let Some((prim, t, kind)) = intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None) {
                         *tmax = t;
-                        best = Some(Hit { t, object, prim, kind, level: 0, radius_scale: 1.0 });
+                        best = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
                     }
                     false
                 });
@@ -219,33 +247,16 @@ impl Accel {
     /// True when anything (but the skipped primitives) lies on the segment from `origin`
     /// along unit `dir` up to distance `tmax`, with strands at full detail.
     pub fn occluded(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> bool {
-        self.occluded_cone(origin, dir, tmax, skip, RayCone::default())
-    }
-
-    /// Like [`Accel::occluded`], for a ray with footprint `cone`: strand sets with level of
-    /// detail are pruned as a ray with that cone sees them (thesis section 2.2.2: shadow
-    /// rays need a level too).
-    pub fn occluded_cone(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>, cone: RayCone) -> bool {
         let test = RayBoxTest::new(origin, dir);
-        let jitter = lod::ray_jitter(origin, dir);
+        let lod_ray = LodRay::new(origin, dir, RayCone::default());
         let mut t = tmax;
         let mut blocked = false;
         self.top.traverse(&test, &mut t, |objects, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
                 let skip = skip.filter(|s| s.object == object);
-                if let (Some(lod), Shape::Strands(s)) = (&o.lod, &o.shape) {
-                    let levels = lod.ray_levels(cone, jitter);
-                    let mut limit = *t;
-                    if lod.intersect(s, &test, origin, dir, &levels, &mut limit, skip, true).is_some() {
-                        blocked = true;
-                        return true;
-                    }
-                    continue;
-                }
-                o.bvh.traverse(&test, t, |prims, t| {
-                    blocked = intersect_leaf(&o.shape, prims, origin, dir, *t, skip).is_some();
-                    blocked
+                blocked = o.traverse(&test, &lod_ray, t, |prims, widen, t| {
+                    intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true, widen).is_some()
                 });
                 if blocked {
                     return true;
@@ -277,7 +288,9 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
 }
 
 /// The nearest hit among a leaf's primitives before `tmax`, ignoring `skip`: (primitive,
-/// distance, where). Segments are tested four at a time.
+/// distance, where, level); with `any`, the first hit found. Segments are tested four at a
+/// time, their radii widened for the ray's level of detail by `widen`.
+#[allow(clippy::too_many_arguments)]
 #[inline]
 fn intersect_leaf(
     shape: &Shape,
@@ -286,7 +299,9 @@ fn intersect_leaf(
     dir: Vec3,
     tmax: f32,
     skip: Option<Skip>,
-) -> Option<(u32, f32, HitKind)> {
+    any: bool,
+    widen: Widen,
+) -> Option<(u32, f32, HitKind, u32)> {
     let mut best = None;
     let mut tmax = tmax;
     match shape {
@@ -294,16 +309,62 @@ fn intersect_leaf(
             for &p in prims {
                 if let Some(h) = triangle::intersect_triangle(origin, dir, 0.0, tmax, m.corners(p)) {
                     tmax = h.t;
-                    best = Some((p, h.t, HitKind::Triangle { b1: h.b1, b2: h.b2 }));
+                    best = Some((p, h.t, HitKind::Triangle { b1: h.b1, b2: h.b2 }, 0));
+                    if any {
+                        break;
+                    }
                 }
             }
         }
         Shape::Strands(s) => {
-            best = intersect_strands(s, prims, origin, dir, tmax, skip, |_, _| (1.0, 0))
-                .map(|(p, t, kind, _)| (p, t, kind));
+            for chunk in prims.chunks(4) {
+                let (p0, p1, levels) = segments4(s, chunk, skip, widen);
+                let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
+                if any && hits.mask != 0 {
+                    // Any lane's hit will do: skip forming the normal.
+                    let lane = hits.mask.trailing_zeros() as usize;
+                    let kind = HitKind::Segment { s: 0.0, normal: Vec3::ZERO };
+                    return Some((chunk[lane], hits.t()[lane], kind, levels[lane]));
+                }
+                if let Some(lane) = hits.nearest() {
+                    if let Some(h) = hits.hit(lane) {
+                        tmax = h.t;
+                        best = Some((chunk[lane], h.t, HitKind::Segment { s: h.s, normal: h.normal }, levels[lane]));
+                    }
+                }
+            }
         }
     }
     best
+}
+
+/// Up to four segments of `s` (`chunk`, at most four first points) for the 4-wide test:
+/// their end points with radii widened for the ray's level of detail, and each lane's
+/// level. Skipped and missing lanes stay zero, which never hits.
+#[inline(always)]
+fn segments4(
+    s: &StrandSet,
+    chunk: &[u32],
+    skip: Option<Skip>,
+    widen: Widen,
+) -> ([[f32; 4]; 4], [[f32; 4]; 4], [u32; 4]) {
+    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
+    let (mut p0, mut p1, mut levels) = ([[0.0; 4]; 4], [[0.0; 4]; 4], [0u32; 4]);
+    for (lane, &p) in chunk.iter().enumerate() {
+        if !skipped(p) {
+            let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
+            match widen {
+                None => (p0[lane], p1[lane]) = (a, b),
+                Some(group) => {
+                    let (scale, level) = group.widen(a, b);
+                    p0[lane] = [a[0], a[1], a[2], a[3] * scale];
+                    p1[lane] = [b[0], b[1], b[2], b[3] * scale];
+                    levels[lane] = level;
+                }
+            }
+        }
+    }
+    (p0, p1, levels)
 }
 
 /// The seed of the pruning ranks of object `object`.
@@ -311,48 +372,10 @@ fn lod_seed(object: usize) -> u32 {
     crate::math::rng::hash_combine(&[0x10d, object as u32])
 }
 
-/// The nearest hit among the segments `prims` of `s` before `tmax`, ignoring `skip`,
-/// four at a time: (segment, distance, where, level). `widen(p0, p1)` gives a segment's
-/// radius factor and level from its end points (level of detail; `(1.0, 0)` without).
-#[inline(always)]
-fn intersect_strands(
-    s: &StrandSet,
-    prims: &[u32],
-    origin: Vec3,
-    dir: Vec3,
-    mut tmax: f32,
-    skip: Option<Skip>,
-    widen: impl Fn(Vec3, Vec3) -> (f32, u32),
-) -> Option<(u32, f32, HitKind, u32)> {
-    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
-    let mut best = None;
-    for chunk in prims.chunks(4) {
-        let (mut p0, mut p1) = ([[0.0; 4]; 4], [[0.0; 4]; 4]);
-        let mut levels = [0u32; 4];
-        for (lane, &p) in chunk.iter().enumerate() {
-            if !skipped(p) {
-                let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
-                let (scale, level) = widen(Vec3::new(a[0], a[1], a[2]), Vec3::new(b[0], b[1], b[2]));
-                p0[lane] = [a[0], a[1], a[2], a[3] * scale];
-                p1[lane] = [b[0], b[1], b[2], b[3] * scale];
-                levels[lane] = level;
-            }
-        }
-        let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
-        if let Some(lane) = hits.nearest() {
-            if let Some(h) = hits.hit(lane) {
-                tmax = h.t;
-                best = Some((chunk[lane], h.t, HitKind::Segment { s: h.s, normal: h.normal }, levels[lane]));
-            }
-        }
-    }
-    best
-}
-
 /// One primitive's hit before `tmax`: (distance, where).
 #[cfg(test)]
 fn intersect_primitive(shape: &Shape, prim: u32, origin: Vec3, dir: Vec3, tmax: f32) -> Option<(f32, HitKind)> {
-    intersect_leaf(shape, &[prim], origin, dir, tmax, None).map(|(_, t, k)| (t, k))
+    intersect_leaf(shape, &[prim], origin, dir, tmax, None, false, None).map(|(_, t, k, _)| (t, k))
 }
 
 #[cfg(test)]

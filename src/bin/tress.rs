@@ -4,9 +4,16 @@ use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
 use tress::accel::Shape;
 use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_shadow, Memory};
+use tress::film::Region;
+use tress::partial::{fingerprint, Checkpointer, Partial};
+use tress::render::{render_tiles, Control, TiledFilm};
 use tress::scene::{prepare, Description, World};
+use tress::shading::Material;
 use tress::stats::{human_bytes, peak_memory_bytes};
 
 #[derive(Parser)]
@@ -20,7 +27,9 @@ struct Cli {
 enum Command {
     /// Render a scene file (or the built-in demo scene) to an image.
     Render {
-        /// Scene file (TOML); the built-in demo scene when omitted.
+        /// Scene file: TOML, Maya ASCII (.ma), pbrt-v4 (.pbrt) or USD text (.usda), or a
+        /// reference scene directory of shared/scenes/gen_scenes.py; the built-in demo scene
+        /// when omitted.
         scene: Option<PathBuf>,
         #[command(flatten)]
         overrides: Overrides,
@@ -30,25 +39,48 @@ enum Command {
         /// Do not show the progress bar.
         #[arg(long)]
         quiet: bool,
+        #[command(flatten)]
+        job: Job,
+    },
+    /// Assemble farm tiles (from `render --tile I/N`) into the whole image.
+    Merge {
+        /// The tile files, all N of them, in any order.
+        #[arg(required = true)]
+        tiles: Vec<PathBuf>,
+        /// Output image: .png or .exr, bit for bit what a single render would write.
+        #[arg(short, long)]
+        output: PathBuf,
     },
     /// Print the counts and memory of a scene (the demo scene when omitted).
     Info {
         /// Scene file (TOML).
         scene: Option<PathBuf>,
+        /// Animation frame (for scenes with camera keys or frame patterns).
+        #[arg(long)]
+        frame: Option<u32>,
         /// Strands in the demo scene.
         #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
         demo_strands: u32,
     },
     /// Write the scene's render strands (all strand sets, in world space) to a file.
     Export {
-        /// Scene file (TOML); the built-in demo scene when omitted.
+        /// Scene file (TOML, .ma, .pbrt or .usda); the built-in demo scene when omitted.
         scene: Option<PathBuf>,
-        /// Output file: a Cem Yuksel .hair file.
+        /// Output file: a Cem Yuksel .hair file (strands) or a USD text .usda file (strands
+        /// as linear BasisCurves and meshes).
         #[arg(short, long)]
         output: PathBuf,
+        /// Animation frame (for scenes with camera keys or frame patterns).
+        #[arg(long)]
+        frame: Option<u32>,
         /// Strands in the demo scene.
         #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
         demo_strands: u32,
+    },
+    /// Grow fur: export it, list the presets.
+    Fur {
+        #[command(subcommand)]
+        command: FurCommand,
     },
     /// Measure BVH build time, ray throughput and memory per hair segment.
     Bench {
@@ -67,8 +99,22 @@ enum Command {
     },
 }
 
+#[derive(Subcommand)]
+enum FurCommand {
+    /// Write the fur a scene grows (every [[fur]] entry, in world space) to a file.
+    Export {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Output file: a Cem Yuksel .hair file.
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+    /// List the fur presets by Maya's names.
+    Presets,
+}
+
 /// Settings that override the scene file's.
-#[derive(clap::Args)]
+#[derive(clap::Args, Default)]
 struct Overrides {
     /// Samples per pixel.
     #[arg(long)]
@@ -82,12 +128,43 @@ struct Overrides {
     /// Seed of every random decision.
     #[arg(long)]
     seed: Option<u32>,
+    /// Light transport: direct, final-gather or path.
+    #[arg(long, value_parser = parse_integrator)]
+    integrator: Option<tress::scene::Integrator>,
+    /// Partial hits collected per traversal through semi-transparent hair (1 re-traces
+    /// after every hit, the slow way).
+    #[arg(long)]
+    transparency_layers: Option<u32>,
     /// Strands in the demo scene (ignored for scene files).
     #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
     demo_strands: u32,
     /// Render every strand: turn level of detail off (`[render] lod = false`).
     #[arg(long)]
     no_lod: bool,
+    /// Animation frame: camera keys are interpolated at it and `#` runs in file names
+    /// become its number (see docs/scene-format.md).
+    #[arg(long)]
+    frame: Option<u32>,
+}
+
+/// How a render runs as a job: a farm tile, checkpoints, limits (see docs/render-farm.md).
+#[derive(clap::Args)]
+struct Job {
+    /// Render only tile I of N (bands of rows, I from 0) into an .exr tile file for
+    /// `tress merge`.
+    #[arg(long, value_name = "I/N", value_parser = tress::partial::parse_farm_tile)]
+    tile: Option<(u32, u32)>,
+    /// Checkpoint file (.exr): progress is saved there, and a render started again with the
+    /// same command resumes from it. Removed once the image is written.
+    #[arg(long, value_name = "PATH")]
+    checkpoint: Option<PathBuf>,
+    /// Minutes between checkpoints.
+    #[arg(long, value_name = "MINUTES", default_value_t = 10.0, requires = "checkpoint")]
+    checkpoint_every: f64,
+    /// Refuse, before loading anything, a scene whose estimated memory exceeds this
+    /// (bytes, or with a K, M, G or T suffix: powers of 1024).
+    #[arg(long, value_name = "SIZE", value_parser = tress::scene::parse_memory_size)]
+    memory_limit: Option<u64>,
 }
 
 fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
@@ -96,9 +173,25 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
     Ok((parse(w)?, parse(h)?))
 }
 
+fn parse_integrator(s: &str) -> Result<tress::scene::Integrator, String> {
+    tress::scene::Integrator::from_name(s).ok_or_else(|| format!("`{s}` is not direct, final-gather or path"))
+}
+
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     let mut desc = match scene {
-        Some(path) => tress::io::scene_file::read_scene(path)?,
+        // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
+        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
+        Some(path) => {
+            let (desc, warnings) = if tress::io::imported::is_imported(path) {
+                tress::io::imported::read_imported(path)?.into_description()
+            } else {
+                tress::io::scene_file::read_scene_frame_with_warnings(path, o.frame)?
+            };
+            for w in warnings {
+                eprintln!("warning: {}: {w}", path.display());
+            }
+            desc
+        }
         None => tress::demo::description(o.demo_strands, 1),
     };
     let s = &mut desc.settings;
@@ -117,6 +210,13 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     if o.no_lod {
         s.lod = false;
     }
+    if let Some(i) = o.integrator {
+        s.integrator = i;
+    }
+    if let Some(k) = o.transparency_layers {
+        s.transparency_layers = k;
+    }
+    desc.validate()?;
     Ok(desc)
 }
 
@@ -133,30 +233,31 @@ fn main() {
 
 fn run(cli: Cli) -> Result<()> {
     match cli.command {
-        Command::Render { scene, overrides, output, quiet } => render(scene.as_deref(), &overrides, &output, quiet),
-        Command::Info { scene, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands, no_lod: false };
+        Command::Render { scene, overrides, output, quiet, job } => {
+            render(scene.as_deref(), &overrides, &output, quiet, &job)
+        }
+        Command::Merge { tiles, output } => merge(&tiles, &output),
+        Command::Info { scene, demo_strands, frame } => {
+            let o = Overrides { demo_strands, frame, ..Default::default() };
             let desc = load(scene.as_deref(), &o)?;
             let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
             info(&world);
             println!("build: load {:.3} s, bvh {:.3} s", times.load.as_secs_f64(), times.build.as_secs_f64());
             Ok(())
         }
-        Command::Export { scene, output, demo_strands } => {
-            let o = Overrides { spp: None, threads: None, resolution: None, seed: None, demo_strands, no_lod: false };
-            let desc = load(scene.as_deref(), &o)?;
-            let geometry = tress::scene::load_geometry(&desc)?;
-            let mut all = tress::geometry::StrandSet::new();
-            for (shape, _) in &geometry.shapes {
-                if let Shape::Strands(s) = shape {
-                    all.append(s);
-                }
+        Command::Export { scene, output, demo_strands, frame } => {
+            let o = Overrides { demo_strands, frame, ..Default::default() };
+            export(scene.as_deref(), &o, &output, |_| true)
+        }
+        Command::Fur { command: FurCommand::Export { scene, output } } => {
+            let o = Overrides::default();
+            export(Some(&scene), &o, &output, |m| matches!(m, Material::Fur(_)))
+        }
+        Command::Fur { command: FurCommand::Presets } => {
+            // Each preset file opens with "# Name: what it looks like".
+            for (_, text) in tress::fur::presets::PRESETS {
+                println!("{}", text.lines().next().unwrap_or("").trim_start_matches('#').trim());
             }
-            if !output.extension().is_some_and(|e| e.eq_ignore_ascii_case("hair")) {
-                anyhow::bail!("{}: unsupported export format: use a .hair file name", output.display());
-            }
-            tress::io::hair::write_hair(&output, &all)?;
-            eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
             Ok(())
         }
         Command::Bench { scene, overrides, thread_counts, reps } => {
@@ -165,26 +266,148 @@ fn run(cli: Cli) -> Result<()> {
     }
 }
 
-fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Result<()> {
-    // Check the output before spending time on the render.
-    tress::film::check_output(output)?;
+/// Writes the shapes of a scene whose material passes `keep`, in world space: strand sets
+/// to a `.hair` file, or strand sets and meshes to a `.usda` file.
+fn export(scene: Option<&Path>, o: &Overrides, output: &Path, keep: impl Fn(&Material) -> bool) -> Result<()> {
+    let is = |ext: &str| output.extension().is_some_and(|e| e.eq_ignore_ascii_case(ext));
+    if !is("hair") && !is("usda") {
+        anyhow::bail!("{}: unsupported export format: use a .hair or .usda file name", output.display());
+    }
     let desc = load(scene, o)?;
+    let geometry = tress::scene::load_geometry(&desc)?;
+    if is("usda") {
+        let materials = &geometry.materials;
+        let shapes: Vec<_> = geometry.shapes.into_iter().filter(|(_, m)| keep(&materials[*m as usize])).collect();
+        tress::io::usd::write_usd(output, &shapes, materials)?;
+        eprintln!("wrote {} ({} shapes)", output.display(), shapes.len());
+        return Ok(());
+    }
+    let mut all = tress::geometry::StrandSet::new();
+    for (shape, material) in &geometry.shapes {
+        if let Shape::Strands(s) = shape {
+            if keep(&geometry.materials[*material as usize]) {
+                all.append(s);
+            }
+        }
+    }
+    tress::io::hair::write_hair(output, &all)?;
+    eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
+    Ok(())
+}
+
+fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: &Job) -> Result<()> {
+    // Check the outputs before spending time on the render.
+    tress::film::check_output(output)?;
+    let is_exr = |p: &Path| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("exr"));
+    if job.tile.is_some() && !is_exr(output) {
+        anyhow::bail!("{}: a tile (--tile) must be written to an .exr file", output.display());
+    }
+    if let Some(c) = &job.checkpoint {
+        tress::film::check_output(c)?;
+        if !is_exr(c) {
+            anyhow::bail!("{}: a checkpoint must be an .exr file", c.display());
+        }
+    }
+    if !(job.checkpoint_every.is_finite() && job.checkpoint_every > 0.0) {
+        anyhow::bail!("--checkpoint-every must be a positive number of minutes");
+    }
+    let desc = load(scene, o)?;
+    if let Some(limit) = job.memory_limit {
+        let e = tress::scene::estimate_memory(&desc)?;
+        if e.total() > limit {
+            anyhow::bail!(
+                "the scene needs an estimated {} (geometry {}, BVH {}, image {}), more than the memory limit of {}",
+                human_bytes(e.total()),
+                human_bytes(e.geometry),
+                human_bytes(e.bvh),
+                human_bytes(e.image),
+                human_bytes(limit)
+            );
+        }
+    }
+    let interrupt = Interrupt::install()?;
     let pool = pool(desc.settings.threads)?;
     let (world, times) = pool.install(|| prepare(&desc))?;
+    for w in &world.warnings {
+        eprintln!("warning: {w}");
+    }
     let s = &world.settings;
-    let tiles = tress::render::tile_count(s.width, s.height);
-    let bar = if quiet { ProgressBar::hidden() } else { ProgressBar::new(tiles) };
+    let full = (s.width, s.height);
+    let region = match job.tile {
+        Some((i, n)) => Region::band(s.width, s.height, i, n).map_err(anyhow::Error::msg)?,
+        None => Region::full(s.width, s.height),
+    };
+    let template =
+        Partial { state: TiledFilm::new(region), full, fingerprint: fingerprint(&world), farm_tile: job.tile };
+    let state = match &job.checkpoint {
+        Some(path) if path.exists() => resume(path, &template)?,
+        _ => template.state.clone(),
+    };
+    let checkpointer = job.checkpoint.as_ref().map(|path| {
+        Checkpointer::new(path.clone(), Duration::from_secs_f64(job.checkpoint_every * 60.0), template.clone())
+    });
+    if let Some(sig) = interrupt.signal() {
+        eprintln!("interrupted by signal {sig} before rendering started; nothing written");
+        std::process::exit(128 + sig);
+    }
+
+    let bar = if quiet { ProgressBar::hidden() } else { ProgressBar::new(u64::from(state.done.len())) };
     bar.set_style(
         ProgressStyle::with_template("{spinner} [{elapsed_precise}] {wide_bar} {percent}% ETA {eta}")
             .expect("static template"),
     );
-    let (film, stats) = pool.install(|| tress::render::render(&world, Some(&bar)));
+    bar.set_position(u64::from(state.done.count()));
+    bar.reset_eta();
+    let after_tile = |shared: &std::sync::Mutex<TiledFilm>| {
+        if let Some(Err(e)) = checkpointer.as_ref().and_then(|c| c.maybe_save(shared)) {
+            bar.println(format!("warning: checkpoint not saved: {e}"));
+        }
+    };
+    let control = Control { progress: Some(&bar), cancel: Some(interrupt.flag()), after_tile: Some(&after_tile) };
+    let (state, stats) = pool.install(|| render_tiles(&world, state, &control));
     bar.finish_and_clear();
-    tress::film::write_image(output, &film)?;
+
+    let part = Partial { state, ..template };
+    if !part.is_complete() {
+        // Interrupted: keep what is done and stop with the signal's status, so a scheduler
+        // sees the job did not finish.
+        let sig = interrupt.signal().unwrap_or(libc::SIGINT);
+        if let Some(c) = &checkpointer {
+            c.save(part.state.clone())?;
+            eprintln!("saved checkpoint {}", c.path().display());
+        }
+        if is_exr(output) {
+            part.save(output)?;
+        } else {
+            tress::film::write_image(output, &part.state.film)?;
+        }
+        eprintln!(
+            "interrupted by signal {sig}: wrote the partial image {} ({} of {} tiles done)",
+            output.display(),
+            part.state.done.count(),
+            part.state.done.len()
+        );
+        std::process::exit(128 + sig);
+    }
+    if job.tile.is_some() {
+        part.save(output)?;
+    } else {
+        tress::film::write_image(output, &part.state.film)?;
+    }
+    if let Some(c) = &checkpointer {
+        std::fs::remove_file(c.path()).or_else(|e| match e.kind() {
+            std::io::ErrorKind::NotFound => Ok(()),
+            _ => Err(e),
+        })?;
+    }
     let hair = Memory::of(&world.accel);
     let secs = stats.elapsed.as_secs_f64();
+    let part_of = match job.tile {
+        Some((i, n)) => format!("tile {i}/{n}: rows {} to {} of ", region.y, region.y + region.height - 1),
+        None => String::new(),
+    };
     eprintln!(
-        "wrote {} ({}x{}, {} spp, {} threads)",
+        "wrote {} ({part_of}{}x{}, {} spp, {} threads)",
         output.display(),
         s.width,
         s.height,
@@ -197,7 +420,7 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Re
         times.load.as_secs_f64(),
         times.build.as_secs_f64()
     );
-    eprintln!("render        {secs:.3} s");
+    eprintln!("render        {secs:.3} s ({:?} integrator)", s.integrator);
     eprintln!("rays          {} ({:.2} M rays/s)", stats.rays, stats.rays as f64 / secs / 1e6);
     if let Some(peak) = peak_memory_bytes() {
         eprintln!("peak memory   {}", human_bytes(peak));
@@ -209,6 +432,70 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool) -> Re
             hair.bytes_per_segment()
         );
     }
+    Ok(())
+}
+
+/// The state saved in a checkpoint, if it belongs to this render.
+fn resume(path: &Path, template: &Partial) -> Result<TiledFilm> {
+    let saved = Partial::load(path)?;
+    if saved.fingerprint != template.fingerprint
+        || saved.full != template.full
+        || saved.state.region != template.state.region
+        || saved.farm_tile != template.farm_tile
+    {
+        anyhow::bail!(
+            "{}: the checkpoint is of another render (scene, settings, frame or tile differ); delete it to start afresh",
+            path.display()
+        );
+    }
+    eprintln!(
+        "resuming from {}: {} of {} tiles done",
+        path.display(),
+        saved.state.done.count(),
+        saved.state.done.len()
+    );
+    Ok(saved.state)
+}
+
+/// SIGINT and SIGTERM (and SIGHUP) handling for renders: the first signal asks the render
+/// to stop and write what it has; a second one ends the process at once.
+struct Interrupt {
+    flag: Arc<AtomicBool>,
+    signal: Arc<AtomicUsize>,
+}
+
+impl Interrupt {
+    fn install() -> Result<Interrupt> {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        let interrupt = Interrupt { flag: Arc::new(AtomicBool::new(false)), signal: Arc::new(AtomicUsize::new(0)) };
+        for sig in [SIGINT, SIGTERM, SIGHUP] {
+            // Registered first, so it sees the flag as the previous signal left it.
+            signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, interrupt.flag.clone())?;
+            signal_hook::flag::register_usize(sig, interrupt.signal.clone(), sig as usize)?;
+            signal_hook::flag::register(sig, interrupt.flag.clone())?;
+        }
+        Ok(interrupt)
+    }
+
+    fn flag(&self) -> &AtomicBool {
+        &self.flag
+    }
+
+    /// The signal received, if any.
+    fn signal(&self) -> Option<i32> {
+        match self.signal.load(Ordering::SeqCst) {
+            0 => None,
+            s => Some(s as i32),
+        }
+    }
+}
+
+fn merge(tiles: &[PathBuf], output: &Path) -> Result<()> {
+    tress::film::check_output(output)?;
+    let parts = tiles.iter().map(|p| Ok((p.clone(), Partial::load(p)?))).collect::<Result<Vec<_>>>()?;
+    let film = tress::partial::merge(&parts)?;
+    tress::film::write_image(output, &film)?;
+    eprintln!("wrote {} ({}x{}, from {} tiles)", output.display(), film.width, film.height, parts.len());
     Ok(())
 }
 
@@ -281,17 +568,7 @@ fn lod_info(world: &World) {
 }
 
 fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usize) -> Result<()> {
-    // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
-    let mut desc = match scene {
-        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
-        _ => load(scene, o)?,
-    };
-    if let Some((w, h)) = o.resolution {
-        (desc.settings.width, desc.settings.height) = (w, h);
-    }
-    if let Some(spp) = o.spp {
-        desc.settings.spp = spp;
-    }
+    let desc = load(scene, o)?;
     let all = pool(0)?.current_num_threads();
     let median = |mut v: Vec<f64>| {
         v.sort_by(f64::total_cmp);

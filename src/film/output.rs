@@ -14,7 +14,8 @@
 //!     along the strand (0 root, 1 tip), its root's surface UV, its clump (guide) index and its
 //!     stable random value in [0, 1); `-1` where not applicable or unknown,
 //!   * `lodLevel`: on hair, the level of detail the hit used (0 at full detail); `-1` elsewhere,
-//!   * `coverage`: coverage again, as a single channel for tools that do not treat `A` as data.
+//!   * `coverage`: coverage again, as a single channel for tools that do not treat `A` as data,
+//!   * `samples`: camera samples the pixel took (varies with adaptive supersampling).
 //!
 //! Infinite depth is written as `+inf`: EXR stores IEEE 754 floats bit for bit, so it round-trips
 //! through the `exr` crate (and OpenEXR) unchanged, and it cannot be confused with a real distance.
@@ -140,8 +141,35 @@ pub fn write_image(path: &Path, film: &Film) -> Result<(), OutputError> {
 /// The file is replaced atomically: on error nothing is left at `path` (an existing file there
 /// is untouched).
 pub fn write_image_with(path: &Path, film: &Film, attributes: &[(&str, &str)]) -> Result<(), OutputError> {
+    write_image_part(path, film, (0, 0), (film.width, film.height), attributes)
+}
+
+/// Writes `film` as the part of a larger `full` = (width, height) image whose top-left pixel
+/// is at `at`, like [`write_image_with`] otherwise: in an EXR file the film is the data window
+/// and `full` the display window, the standard way to store a crop (a farm tile, a region).
+/// A PNG file can only hold a whole image.
+pub fn write_image_part(
+    path: &Path,
+    film: &Film,
+    at: (u32, u32),
+    full: (u32, u32),
+    attributes: &[(&str, &str)],
+) -> Result<(), OutputError> {
     let format = Format::of(path)?;
     check_film(path, film)?;
+    let part = Part { at, full };
+    let invalid = |reason: String| Err(OutputError::InvalidFilm { path: path.to_owned(), reason });
+    let fits = |at: u32, size: u32, full: u32| at.checked_add(size).is_some_and(|end| end <= full);
+    // EXR stores positions as i32.
+    if !fits(at.0, film.width, full.0) || !fits(at.1, film.height, full.1) || full.0.max(full.1) > i32::MAX as u32 {
+        return invalid(format!(
+            "a {}x{} film at ({}, {}) does not fit in a {}x{} image",
+            film.width, film.height, at.0, at.1, full.0, full.1
+        ));
+    }
+    if format == Format::Png && (at != (0, 0) || full != (film.width, film.height)) {
+        return invalid("a PNG file can only hold a whole image, not a part of one: use .exr".into());
+    }
     let directory = destination_directory(path)?;
     match format {
         Format::Png => {
@@ -158,7 +186,7 @@ pub fn write_image_with(path: &Path, film: &Film, attributes: &[(&str, &str)]) -
             })
         }
         Format::Exr => {
-            let image = exr_image(path, film, attributes)?;
+            let image = exr_image(path, film, &part, attributes)?;
             write_atomically(path, &directory, |file| {
                 image.write().to_buffered(file).map_err(|error| match error {
                     exr::error::Error::Io(error) => write_error(path, WRITING)(error),
@@ -174,6 +202,12 @@ pub fn write_image_with(path: &Path, film: &Film, attributes: &[(&str, &str)]) -
 pub fn check_output(path: &Path) -> Result<(), OutputError> {
     Format::of(path)?;
     destination_directory(path).map(|_| ())
+}
+
+/// Where a film lies in the image it is part of: its top-left pixel and the whole size.
+struct Part {
+    at: (u32, u32),
+    full: (u32, u32),
 }
 
 /// The file formats [`write_image`] can produce.
@@ -274,10 +308,12 @@ fn png_bytes(film: &Film) -> Vec<u8> {
     film.pixels.iter().flat_map(|p| [srgb_encode(p.color.x), srgb_encode(p.color.y), srgb_encode(p.color.z)]).collect()
 }
 
-/// The film as a single-layer EXR image with `attributes` in its header.
+/// The film as a single-layer EXR image with `attributes` in its header, its data window
+/// placed in the display window as `part` says.
 fn exr_image(
     path: &Path,
     film: &Film,
+    part: &Part,
     attributes: &[(&str, &str)],
 ) -> Result<Image<Layer<AnyChannels<FlatSamples>>>, OutputError> {
     let mut layer_attributes = LayerAttributes {
@@ -306,31 +342,15 @@ fn exr_image(
         }
     }
 
-    let channel = |name: &str, value: fn(&super::Pixel) -> f32| {
-        AnyChannel::new(name, FlatSamples::F32(film.pixels.iter().map(value).collect()))
-    };
-    let channels: SmallVec<[AnyChannel<FlatSamples>; 4]> = SmallVec::from_vec(vec![
-        channel("R", |p| p.color.x),
-        channel("G", |p| p.color.y),
-        channel("B", |p| p.color.z),
-        channel("A", |p| p.coverage),
-        channel("Z", |p| p.depth),
-        channel("N.X", |p| p.normal.x),
-        channel("N.Y", |p| p.normal.y),
-        channel("N.Z", |p| p.normal.z),
-        channel("objectId", |p| p.object_id),
-        channel("strandId", |p| p.strand_id),
-        channel("strandAlong", |p| p.strand_along),
-        channel("rootUV.U", |p| p.root_uv[0]),
-        channel("rootUV.V", |p| p.root_uv[1]),
-        channel("clumpId", |p| p.clump_id),
-        channel("strandRandom", |p| p.strand_random),
-        channel("lodLevel", |p| p.lod_level),
-        channel("coverage", |p| p.coverage),
-    ]);
+    let channels: SmallVec<[AnyChannel<FlatSamples>; 4]> = super::CHANNELS
+        .iter()
+        .map(|(name, get, _)| AnyChannel::new(*name, FlatSamples::F32(film.pixels.iter().map(get).collect())))
+        .collect();
     let size = (film.width as usize, film.height as usize);
+    layer_attributes.layer_position = exr::math::Vec2(part.at.0 as i32, part.at.1 as i32);
     let layer = Layer::new(size, layer_attributes, Encoding::SMALL_LOSSLESS, AnyChannels::sort(channels));
-    Ok(Image::from_layer(layer))
+    let display = exr::meta::attribute::IntegerBounds::from_dimensions((part.full.0 as usize, part.full.1 as usize));
+    Ok(Image::new(exr::meta::header::ImageAttributes::new(display), layer))
 }
 
 #[cfg(test)]
@@ -359,6 +379,7 @@ mod tests {
                     clump_id: (i / 2) as f32,
                     strand_random: 0.125 * (i % 8) as f32,
                     lod_level: (i % 5) as f32,
+                    samples: (i * 3) as f32,
                 };
             }
         }
@@ -466,7 +487,8 @@ mod tests {
         expect("strandRandom", |p| p.strand_random);
         expect("lodLevel", |p| p.lod_level);
         expect("coverage", |p| p.coverage);
-        assert_eq!(layer.channel_data.list.len(), 17);
+        expect("samples", |p| p.samples);
+        assert_eq!(layer.channel_data.list.len(), 18);
         assert_eq!(channel("Z")[0], f32::INFINITY);
 
         let attribute = |name: &str| match layer.attributes.other.get(&Text::from(name)) {

@@ -65,6 +65,17 @@ impl TriangleMesh {
         }
     }
 
+    /// Removes the triangles with a corner that is missing, not finite or beyond
+    /// [`super::MAX_COORDINATE`] (positions pushed past the float range by a transform);
+    /// returns how many.
+    pub fn remove_unusable_triangles(&mut self) -> usize {
+        let before = self.indices.len();
+        let positions = &self.positions;
+        let usable = |p: &Vec3| p.is_finite() && p.abs().max_element() <= super::MAX_COORDINATE;
+        self.indices.retain(|t| t.iter().all(|&v| positions.get(v as usize).is_some_and(usable)));
+        before - self.indices.len()
+    }
+
     /// Checks indices are in range and positions finite; returns a description of the
     /// first problem found.
     pub fn validate(&self) -> Result<(), String> {
@@ -155,6 +166,68 @@ impl TriangleMesh {
         mesh
     }
 
+    /// A pillow: a square cushion of side `size` in the xz-plane, centred on the origin,
+    /// whose top and bottom faces bulge to `thickness / 2` above and below it from a seam
+    /// around the edge, as `(1 - x^2)^0.3 (1 - z^2)^0.3` over the square `[-1, 1]^2`.
+    /// `n` steps a side; UVs run 0..1 along x and z on both faces; normals are the
+    /// area-weighted face normals, so along the seam they point outward.
+    pub fn pillow(size: f32, thickness: f32, n: u32) -> TriangleMesh {
+        let n = n.max(2);
+        let h = 0.5 * size;
+        let bulge = |t: f32| (1.0 - t * t).max(0.0).powf(0.3);
+        let mut mesh = TriangleMesh::default();
+        let mut uvs = Vec::new();
+        let coord = |i: u32| 2.0 * i as f32 / n as f32 - 1.0;
+        let row = n + 1;
+        // Top face: the full grid. Bottom face: its interior, sharing the seam vertices.
+        for j in 0..=n {
+            for i in 0..=n {
+                let (x, z) = (coord(i), coord(j));
+                mesh.positions.push(Vec3::new(x * h, 0.5 * thickness * bulge(x) * bulge(z), z * h));
+                uvs.push([i as f32 / n as f32, j as f32 / n as f32]);
+            }
+        }
+        let interior = |i: u32, j: u32| i > 0 && j > 0 && i < n && j < n;
+        let mut bottom = vec![0u32; (row * row) as usize];
+        for j in 0..=n {
+            for i in 0..=n {
+                let top = j * row + i;
+                bottom[top as usize] = if interior(i, j) {
+                    let p = mesh.positions[top as usize];
+                    mesh.positions.push(Vec3::new(p.x, -p.y, p.z));
+                    uvs.push(uvs[top as usize]);
+                    mesh.positions.len() as u32 - 1
+                } else {
+                    top
+                };
+            }
+        }
+        for j in 0..n {
+            for i in 0..n {
+                let (a, b, c, d) = (j * row + i, j * row + i + 1, (j + 1) * row + i + 1, (j + 1) * row + i);
+                // Diagonals point to the centre, so no corner triangle lies wholly on the
+                // seam (a flat flap shared by both faces).
+                let quad = if (i < n / 2) == (j < n / 2) { [[a, c, b], [a, d, c]] } else { [[a, d, b], [b, d, c]] };
+                for [p, q, r] in quad {
+                    mesh.indices.push([p, q, r]);
+                    mesh.indices.push([r, q, p].map(|v| bottom[v as usize]));
+                }
+            }
+        }
+        let mut normals = vec![Vec3::ZERO; mesh.positions.len()];
+        for t in 0..mesh.indices.len() as u32 {
+            let [a, b, c] = mesh.corners(t);
+            // The cross product's length is twice the area: an area-weighted sum.
+            let face = (b - a).cross(c - a);
+            for v in mesh.indices[t as usize] {
+                normals[v as usize] += face;
+            }
+        }
+        mesh.normals = Some(normals.into_iter().map(|n| n.normalize_or(Vec3::Y)).collect());
+        mesh.uvs = Some(uvs);
+        mesh
+    }
+
     /// A square of side `size` in the xz-plane, centred on the origin, facing +y.
     pub fn plane(size: f32) -> TriangleMesh {
         let h = 0.5 * size;
@@ -184,8 +257,14 @@ mod tests {
         assert!((total(&sphere) - 16.0 * PI).abs() < 0.01 * 16.0 * PI);
         let plane = TriangleMesh::plane(3.0);
         assert!((total(&plane) - 9.0).abs() < 1e-5);
+        let pillow = TriangleMesh::pillow(2.0, 0.6, 40);
+        pillow.validate().unwrap();
+        // Two faces of at least the square's area each, closed along the seam.
+        assert!(total(&pillow) > 8.0 && total(&pillow) < 10.0, "{}", total(&pillow));
+        let top = pillow.positions.iter().map(|p| p.y).fold(0.0f32, f32::max);
+        assert!((top - 0.3).abs() < 1e-6);
         // Triangles face outward along the given normals.
-        for m in [&torus, &sphere, &plane] {
+        for m in [&torus, &sphere, &plane, &pillow] {
             for i in 0..m.indices.len() as u32 {
                 let [a, b, c] = m.corners(i);
                 let ng = (b - a).cross(c - a);

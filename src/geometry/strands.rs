@@ -100,8 +100,12 @@ impl StrandSet {
     /// Unit tangent at point `i` by central differences inside the strand, one-sided at
     /// its ends (thesis fig. 2.2). Falls back to the nearest non-degenerate difference.
     pub fn point_tangent(&self, i: u32) -> Vec3 {
-        let s = self.strand_of(i) as usize;
-        let (first, last) = (self.offsets[s], self.offsets[s + 1] - 1);
+        self.tangent_in(i, self.strand_of(i) as usize)
+    }
+
+    /// [`StrandSet::point_tangent`] of point `i` of strand `strand`.
+    fn tangent_in(&self, i: u32, strand: usize) -> Vec3 {
+        let (first, last) = (self.offsets[strand], self.offsets[strand + 1] - 1);
         let prev = self.position(i.saturating_sub(1).max(first));
         let next = self.position((i + 1).min(last));
         (next - prev).try_normalize().unwrap_or(Vec3::Y)
@@ -110,8 +114,9 @@ impl StrandSet {
     /// Shading tangent at parameter `s` in [0, 1] along the segment starting at point `i`:
     /// the point tangents interpolated, so shading is smooth across segment joints.
     pub fn tangent(&self, i: u32, s: f32) -> Vec3 {
-        let t0 = self.point_tangent(i);
-        let t1 = self.point_tangent(i + 1);
+        let strand = self.strand_of(i) as usize;
+        let t0 = self.tangent_in(i, strand);
+        let t1 = self.tangent_in(i + 1, strand);
         t0.lerp(t1, s).try_normalize().unwrap_or(t0)
     }
 
@@ -186,6 +191,48 @@ impl StrandSet {
         self.offsets.extend(other.offsets.iter().skip(1).map(|o| o + base));
     }
 
+    /// Removes the strands that cannot be rendered: a coordinate or radius that is not
+    /// finite or beyond [`super::MAX_COORDINATE`], or a negative radius (from a transform
+    /// past the float range, or a generator's NaN); such numbers would poison BVH bounds and
+    /// intersections. Returns how many.
+    pub fn remove_unusable_strands(&mut self) -> usize {
+        // Written so that NaN fails every comparison.
+        let usable = |p: &[f32; 4]| {
+            p[..3].iter().all(|c| c.abs() <= super::MAX_COORDINATE) && (0.0..=super::MAX_COORDINATE).contains(&p[3])
+        };
+        let keep: Vec<bool> =
+            self.offsets.windows(2).map(|w| self.points[w[0] as usize..w[1] as usize].iter().all(usable)).collect();
+        let removed = keep.iter().filter(|k| !**k).count();
+        if removed == 0 {
+            return 0;
+        }
+        let mut out = StrandSet::new();
+        for (w, _) in self.offsets.windows(2).zip(&keep).filter(|(_, k)| **k) {
+            out.points.extend_from_slice(&self.points[w[0] as usize..w[1] as usize]);
+            out.offsets.push(out.points.len() as u32);
+        }
+        // Per-point arrays keep the points of kept strands; per-strand arrays the kept strands.
+        fn kept_points<T: Copy>(offsets: &[u32], keep: &[bool], all: &[T]) -> Vec<T> {
+            offsets
+                .windows(2)
+                .zip(keep)
+                .filter(|(_, k)| **k)
+                .flat_map(|(w, _)| all[w[0] as usize..w[1] as usize].iter().copied())
+                .collect()
+        }
+        fn kept<T: Copy>(keep: &[bool], all: &[T]) -> Vec<T> {
+            all.iter().zip(keep).filter(|(_, k)| **k).map(|(x, _)| *x).collect()
+        }
+        out.colors = self.colors.as_ref().map(|c| kept_points(&self.offsets, &keep, c));
+        out.opacity = self.opacity.as_ref().map(|o| kept_points(&self.offsets, &keep, o));
+        out.strand_info = self
+            .strand_info
+            .as_ref()
+            .map(|info| StrandInfo { root_uv: kept(&keep, &info.root_uv), clump: kept(&keep, &info.clump) });
+        *self = out;
+        removed
+    }
+
     /// Applies an affine transform to positions; radii scale by the cube root of the
     /// determinant (the mean scale), so a uniformly scaled strand keeps its proportions.
     pub fn transform(&mut self, m: &glam::Affine3A) {
@@ -220,6 +267,19 @@ mod tests {
     }
 
     #[test]
+    fn along_counts_segments_from_root_to_tip() {
+        let mut s = set(1, None); // 3 points: 2 segments
+        s.push_strand((0..5).map(|i| (Vec3::new(0.0, i as f32, 0.0), 0.1)));
+        let at = |i, t| {
+            let p = s.strand_point(i, t);
+            (p.strand, p.along)
+        };
+        assert_eq!(at(0, 0.0), (0, 0.0));
+        assert_eq!(at(1, 1.0), (0, 1.0));
+        assert_eq!(at(4, 0.5), (1, 0.375));
+    }
+
+    #[test]
     fn tangents_are_central_differences_and_one_sided_at_ends() {
         let mut s = StrandSet::new();
         s.push_strand([(Vec3::ZERO, 0.1), (Vec3::X, 0.1), (Vec3::new(1.0, 1.0, 0.0), 0.1)]);
@@ -241,6 +301,23 @@ mod tests {
         s.strand_info = Some(StrandInfo { root_uv: vec![[0.1, 0.2], [0.3, 0.4], [0.5, 0.6]], clump: vec![0, 0, 1] });
         let p = s.strand_point(6, 0.0);
         assert_eq!((p.strand, p.along, p.root_uv, p.clump), (2, 0.0, Some([0.5, 0.6]), Some(1)));
+    }
+
+    #[test]
+    fn unusable_strands_are_removed_with_their_data() {
+        let mut s = set(4, Some([0.5; 3]));
+        s.opacity = Some((0..12).map(|i| i as f32 / 12.0).collect());
+        s.strand_info =
+            Some(StrandInfo { root_uv: (0..4).map(|i| [i as f32, 0.0]).collect(), clump: vec![0, 1, 2, 3] });
+        s.points[4][1] = f32::NAN; // strand 1
+        s.points[9][3] = -1.0; // strand 3
+        assert_eq!(s.remove_unusable_strands(), 2);
+        assert_eq!(s.offsets, vec![0, 3, 6]);
+        assert_eq!(s.points[3][0], 2.0, "strand 2 moved into second place");
+        assert_eq!(s.opacity.as_ref().unwrap()[3], 6.0 / 12.0);
+        assert_eq!(s.colors.as_ref().unwrap().len(), 6);
+        assert_eq!(s.strand_info.as_ref().unwrap().clump, vec![0, 2]);
+        assert_eq!(s.remove_unusable_strands(), 0);
     }
 
     #[test]

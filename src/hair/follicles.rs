@@ -198,6 +198,18 @@ pub fn grow_guides(mesh: &TriangleMesh, params: &FollicleParams, seed: u32) -> R
     Ok(Guides { curves: set, root_uv })
 }
 
+/// The follicle at each of `uvs` on `mesh` (world space, as the mesh is), with the
+/// triangle it lies on; `None` where no triangle covers the UV. Maya's follicles are placed
+/// this way, by `parameterU` and `parameterV` (shared/spec/maya-fur-hair.md section 5.4).
+pub fn follicles_at_uvs(mesh: &TriangleMesh, uvs: &[[f32; 2]]) -> Result<Vec<Option<(Follicle, u32)>>, String> {
+    let mesh_uvs = mesh.uvs.as_ref().ok_or("placing follicles by UV needs a mesh with UVs")?;
+    if mesh.indices.is_empty() {
+        return Err("the mesh has no triangles".into());
+    }
+    let lookup = UvLookup::new(mesh, mesh_uvs);
+    Ok(uvs.iter().map(|&uv| lookup.find(uv).map(|(t, b1, b2)| (follicle_at(mesh, t, b1, b2), t))).collect())
+}
+
 fn in_region(uv: [f32; 2], p: &FollicleParams) -> bool {
     (p.uv_min[0]..=p.uv_max[0]).contains(&uv[0]) && (p.uv_min[1]..=p.uv_max[1]).contains(&uv[1])
 }

@@ -41,7 +41,6 @@
 //! allocated, so a forged header cannot make the reader allocate more than the file's size
 //! justifies.
 
-use std::io::Write;
 use std::path::Path;
 
 use super::error::LoadError;
@@ -290,6 +289,37 @@ pub fn parse_hair(bytes: &[u8], path: &Path) -> Result<StrandSet, LoadError> {
     Ok(StrandSet { points, offsets, colors, opacity, strand_info: None })
 }
 
+/// What a `.hair` file's header says the file holds, for estimates made before reading it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HairCounts {
+    /// Number of strands.
+    pub strands: u32,
+    /// Number of points.
+    pub points: u32,
+    /// Whether the file has per-point colours.
+    pub colors: bool,
+    /// Whether reading it gives per-point opacity.
+    pub opacity: bool,
+}
+
+/// Reads only the 128-byte header of a `.hair` file (the rest is checked when it is read).
+pub fn read_hair_counts(path: &Path) -> Result<HairCounts, LoadError> {
+    use std::io::Read;
+    let mut bytes = [0u8; HEADER_SIZE];
+    let mut file = std::fs::File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    file.read_exact(&mut bytes).map_err(|e| LoadError::io(path, "read the hair header", e))?;
+    if &bytes[..4] != SIGNATURE {
+        return Err(LoadError::format(path, "not a hair file: it does not start with the \"HAIR\" signature"));
+    }
+    let h = Header::decode(&bytes);
+    Ok(HairCounts {
+        strands: h.strands,
+        points: h.points,
+        colors: h.has(HAS_COLOR),
+        opacity: h.has(HAS_TRANSPARENCY) || h.default_transparency != 0.0,
+    })
+}
+
 /// Checks the data length against what the header requires, before anything is allocated.
 fn check_length(header: &Header, len: u64) -> Result<(), String> {
     let need = header.file_size();
@@ -516,25 +546,7 @@ pub fn write_hair(path: &Path, strands: &StrandSet) -> Result<(), LoadError> {
     if let Some(problem) = structure_problem(strands).or_else(|| value_problem(strands)) {
         return Err(LoadError::invalid(path, format!("cannot write these strands: {problem}")));
     }
-    let bytes = encode_hair(strands);
-    // The temporary file must be on the same file system for the final rename to be atomic.
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(".tress-").suffix(".hair.tmp");
-    // Temporary files are private by default; the result should get the usual permissions.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        builder.permissions(std::fs::Permissions::from_mode(0o666));
-    }
-    let mut tmp =
-        builder.tempfile_in(dir).map_err(|e| LoadError::io(path, "create a temporary file next to the file", e))?;
-    tmp.write_all(&bytes).map_err(|e| LoadError::io(path, "write the file", e))?;
-    tmp.as_file().sync_all().map_err(|e| LoadError::io(path, "write the file", e))?;
-    tmp.persist(path).map_err(|e| LoadError::io(path, "replace the file", e.error))?;
+    super::write_atomically(path, &encode_hair(strands))?;
     Ok(())
 }
 

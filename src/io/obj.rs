@@ -9,7 +9,7 @@
 //! (`mtllib`, `usemtl`) are ignored: shading comes from the scene description.
 
 use std::fs::File;
-use std::io::BufReader;
+use std::io::{BufRead, BufReader};
 use std::path::Path;
 
 use glam::Vec3;
@@ -23,7 +23,47 @@ use crate::geometry::TriangleMesh;
 /// range, holds a non-finite position, normal or texture coordinate, or has no triangles.
 pub fn read_obj(path: &Path) -> Result<TriangleMesh, LoadError> {
     let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
-    let mut reader = BufReader::new(file);
+    // tobj drops the underlying error of a failed read; the usual cause is text that is not
+    // UTF-8, so look for it in the file to tell the user.
+    let cause = || match std::fs::read(path) {
+        Err(e) => e.to_string(),
+        Ok(bytes) => not_utf8(&bytes),
+    };
+    load(&mut BufReader::new(file), path, cause)
+}
+
+/// Counts the vertices (`v` lines) and the triangles the faces (`f` lines) make, without
+/// parsing the numbers, for estimates made before reading the file.
+pub fn count_obj(path: &Path) -> Result<(u64, u64), LoadError> {
+    let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    let (mut vertices, mut triangles) = (0u64, 0u64);
+    for line in BufReader::new(file).split(b'\n') {
+        let line = line.map_err(|e| LoadError::io(path, "read the file", e))?;
+        let mut words = line.split(|b| b.is_ascii_whitespace()).filter(|w| !w.is_empty());
+        match words.next() {
+            Some(b"v") => vertices += 1,
+            Some(b"f") => triangles += (words.count() as u64).saturating_sub(2),
+            _ => {}
+        }
+    }
+    Ok((vertices, triangles))
+}
+
+/// Decodes the bytes of an OBJ file like [`read_obj`]; `path` is used only in messages.
+pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<TriangleMesh, LoadError> {
+    load(&mut std::io::Cursor::new(bytes), path, || not_utf8(bytes))
+}
+
+/// Why tobj could not read `bytes`, for its `ReadError`.
+fn not_utf8(bytes: &[u8]) -> String {
+    match std::str::from_utf8(bytes) {
+        Err(e) => format!("it is not utf-8 text (invalid byte at offset {})", e.valid_up_to()),
+        Ok(_) => "read error".to_string(),
+    }
+}
+
+/// Parses OBJ text from `reader` and validates the mesh; `cause` explains a read error.
+fn load(reader: &mut impl BufRead, path: &Path, cause: impl FnOnce() -> String) -> Result<TriangleMesh, LoadError> {
     // `..Default::default()` although every field is set: tobj has more fields behind cargo
     // features that another crate in the build could enable.
     #[allow(clippy::needless_update)]
@@ -40,22 +80,12 @@ pub fn read_obj(path: &Path) -> Result<TriangleMesh, LoadError> {
     // tobj does unchecked index arithmetic on some malformed face indices (e.g. a normal
     // index near isize::MAX), which can panic in builds with overflow checks; a bad file
     // must give an error, not bring down the program.
-    let loaded = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        tobj::load_obj_buf(&mut reader, &options, no_materials)
-    }));
+    let loaded =
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| tobj::load_obj_buf(reader, &options, no_materials)));
     let models = match loaded {
         Ok(Ok((models, _materials))) => models,
         Ok(Err(tobj::LoadError::ReadError)) => {
-            // tobj drops the underlying error; the usual cause is text that is not UTF-8 (a
-            // binary file, or an old Latin-1 export), so look for it to tell the user.
-            let cause = match std::fs::read(path) {
-                Err(e) => e.to_string(),
-                Ok(bytes) => match std::str::from_utf8(&bytes) {
-                    Err(e) => format!("it is not utf-8 text (invalid byte at offset {})", e.valid_up_to()),
-                    Ok(_) => "read error".to_string(),
-                },
-            };
-            return Err(LoadError::format(path, format!("could not read the obj file: {cause}")));
+            return Err(LoadError::format(path, format!("could not read the obj file: {}", cause())));
         }
         Ok(Err(e)) => return Err(LoadError::format(path, format!("malformed obj file: {e}"))),
         Err(_) => return Err(LoadError::format(path, "malformed obj file: a face index is out of any usable range")),

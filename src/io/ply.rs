@@ -164,7 +164,32 @@ impl PropertyAccess for Skip {
 pub fn read_ply(path: &Path) -> Result<TriangleMesh, LoadError> {
     let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
     let file_len = file.metadata().map_err(|e| LoadError::io(path, "read the file", e))?.len();
+    load(Reader::new(BufReader::new(file)), file_len, path)
+}
+
+/// Reads only the header of a PLY file: its numbers of vertices and faces, for estimates
+/// made before reading it.
+pub fn read_ply_counts(path: &Path) -> Result<(u64, u64), LoadError> {
+    let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
     let mut reader = Reader::new(BufReader::new(file));
+    let start = reader.get_mut().fill_buf().map_err(|e| LoadError::io(path, "read the file", e))?;
+    if !start.starts_with(b"ply") {
+        return Err(LoadError::format(path, "not a ply file: it does not start with the line 'ply'"));
+    }
+    let header = Parser::<Skip>::new()
+        .read_header(&mut reader)
+        .map_err(|e| LoadError::format(path, format!("malformed ply file: {}", tidy(&e))))?;
+    let count = |name: &str| header.elements.get(name).map_or(0, |e| e.count as u64);
+    Ok((count("vertex"), count("face")))
+}
+
+/// Decodes the bytes of a PLY file like [`read_ply`]; `path` is used only in messages.
+pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, LoadError> {
+    load(Reader::new(std::io::Cursor::new(bytes)), bytes.len() as u64, path)
+}
+
+/// Parses a PLY file of `file_len` bytes from `reader` and validates the mesh.
+fn load<R: BufRead + Seek>(mut reader: Reader<R>, file_len: u64, path: &Path) -> Result<TriangleMesh, LoadError> {
     let malformed = |e: ParseError| LoadError::format(path, format!("malformed ply file: {}", tidy(&e)));
 
     // The library's own message for a wrong signature is a parser-state dump; say it plainly.

@@ -1,13 +1,18 @@
 //! Scene files in TOML (documented in `docs/scene-format.md`), read into a
 //! [`Description`]. Unknown keys and wrong types are errors naming the file, line and key.
+//!
+//! An animated scene (camera keys, or file names with `#` runs standing for the frame
+//! number) is read at one frame: the camera is interpolated and the frame substituted.
 
 use crate::accel::lod::LodParams;
+use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPlacement};
 use crate::geometry::TriangleMesh;
 use crate::hair::ramp::RampValue;
 use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
 use crate::scene::{
-    CameraDesc, Description, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, RenderSettings,
+    Adaptive, CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, Integrator,
+    MeshEntry, MeshSource, RenderSettings,
 };
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use crate::shading::{tube::Tube, Material};
@@ -60,17 +65,48 @@ struct SceneToml {
     hair: Vec<HairToml>,
     #[serde(default)]
     hair_system: Vec<HairSystemToml>,
+    #[serde(default)]
+    fur: Vec<FurToml>,
+    #[serde(default)]
+    import: Vec<ImportToml>,
+}
+
+/// An `[[import]]` entry: the meshes, hair and hair systems of a Maya ASCII, pbrt-v4 or
+/// USD text file, optionally moved, optionally with its lights.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ImportToml {
+    file: PathBuf,
+    #[serde(default)]
+    transform: TransformToml,
+    #[serde(default)]
+    lights: bool,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct CameraToml {
-    eye: V3,
-    target: V3,
+    /// Required unless there are keys.
+    eye: Option<V3>,
+    /// Required unless there are keys.
+    target: Option<V3>,
     #[serde(default = "default_up")]
     up: V3,
     #[serde(default = "default_vfov")]
     vfov: f32,
+    /// A camera path: keys at frames, interpolated linearly between them.
+    #[serde(default)]
+    key: Vec<CameraKeyToml>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CameraKeyToml {
+    frame: u32,
+    eye: V3,
+    target: V3,
+    /// Defaults to the camera's `vfov`.
+    vfov: Option<f32>,
 }
 
 fn default_up() -> V3 {
@@ -95,6 +131,28 @@ struct RenderToml {
     threads: usize,
     #[serde(default = "default_true")]
     lod: bool,
+    /// `direct`, `final-gather` or `path`.
+    #[serde(default)]
+    integrator: Option<String>,
+    #[serde(default)]
+    transparency_layers: Option<u32>,
+    #[serde(default)]
+    gather_rays: Option<u32>,
+    #[serde(default)]
+    adaptive: Option<AdaptiveToml>,
+}
+
+/// `adaptive = { min_spp = 4, max_spp = 64, threshold = 0.05 }`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AdaptiveToml {
+    min_spp: u32,
+    max_spp: u32,
+    #[serde(default = "default_threshold")]
+    threshold: f32,
+}
+fn default_threshold() -> f32 {
+    0.05
 }
 
 impl Default for RenderToml {
@@ -107,6 +165,10 @@ impl Default for RenderToml {
             max_depth: d.max_depth,
             threads: 0,
             lod: d.lod,
+            integrator: None,
+            transparency_layers: None,
+            gather_rays: None,
+            adaptive: None,
         }
     }
 }
@@ -127,6 +189,9 @@ enum LightToml {
     Distant {
         direction: V3,
         irradiance: V3,
+        /// Degrees; 0 is a sharp light.
+        #[serde(default)]
+        angular_diameter: f32,
     },
     Point {
         position: V3,
@@ -272,6 +337,15 @@ enum ShapeToml {
         #[serde(default = "default_size")]
         size: f32,
     },
+    Pillow {
+        #[serde(default = "default_size")]
+        size: f32,
+        #[serde(default = "default_thickness")]
+        thickness: f32,
+    },
+}
+fn default_thickness() -> f32 {
+    0.3
 }
 fn default_major() -> f32 {
     1.0
@@ -565,14 +639,138 @@ fn follicles(f: &FolliclesToml) -> Result<FollicleParams, String> {
     Ok(params)
 }
 
+/// A `[[fur]]` entry: its own keys, and every other key a fur attribute.
+#[derive(Deserialize)]
+struct FurToml {
+    /// 1-based, as messages count meshes.
+    mesh: i64,
+    preset: Option<String>,
+    #[serde(default)]
+    seed: u32,
+    #[serde(default)]
+    placement: PlacementToml,
+    guides: Option<PathBuf>,
+    attractors: Option<AttractorsToml>,
+    lod: Option<LodToml>,
+    #[serde(flatten)]
+    attributes: toml::Table,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+enum PlacementToml {
+    #[default]
+    Area,
+    Uv,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AttractorsToml {
+    model: Option<AttractorModelToml>,
+    curves_per_fur: Option<u32>,
+    global_scale: Option<f32>,
+    radius: Option<f32>,
+    power: Option<f32>,
+    influence: Option<f32>,
+    threshold_length: Option<f32>,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum AttractorModelToml {
+    Local,
+    Global,
+}
+
+fn fur(f: &FurToml, meshes: usize, base: &Path) -> Result<FurEntry, String> {
+    if f.mesh < 1 || f.mesh as usize > meshes {
+        return Err(format!("`mesh` = {} names no mesh (give 1 to {meshes}, the [[mesh]] entries in order)", f.mesh));
+    }
+    let mut description = match &f.preset {
+        Some(name) => crate::fur::presets::preset(name)?,
+        None => FurDescription::default(),
+    };
+    description.apply_table(&f.attributes, base)?;
+    let guides = match (&f.guides, &f.attractors) {
+        (Some(file), a) => {
+            let d = Attractors::default();
+            let a = a.as_ref();
+            let attractors = Attractors {
+                model: match a.and_then(|a| a.model.as_ref()) {
+                    Some(AttractorModelToml::Global) => AttractorModel::Global,
+                    Some(AttractorModelToml::Local) => AttractorModel::Local,
+                    None => d.model,
+                },
+                curves_per_fur: a.and_then(|a| a.curves_per_fur).unwrap_or(d.curves_per_fur),
+                global_scale: a.and_then(|a| a.global_scale).unwrap_or(d.global_scale),
+                radius: a.and_then(|a| a.radius).unwrap_or(d.radius),
+                power: a.and_then(|a| a.power).unwrap_or(d.power),
+                influence: a.and_then(|a| a.influence).unwrap_or(d.influence),
+                threshold_length: a.and_then(|a| a.threshold_length).unwrap_or(d.threshold_length),
+            };
+            attractors.validate()?;
+            Some((HairSource::File(base.join(file)), attractors))
+        }
+        (None, Some(_)) => return Err("`attractors` needs `guides`".into()),
+        (None, None) => None,
+    };
+    Ok(FurEntry {
+        mesh: f.mesh as usize - 1,
+        description,
+        placement: match f.placement {
+            PlacementToml::Area => FurPlacement::Area,
+            PlacementToml::Uv => FurPlacement::Uv,
+        },
+        seed: f.seed,
+        guides,
+        lod: f.lod.as_ref().map(LodToml::params).transpose()?,
+    })
+}
+
 /// Reads a scene file. Relative paths inside it are relative to its directory.
 pub fn read_scene(path: &Path) -> Result<Description, SceneFileError> {
     let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
     parse_scene(&text, path)
 }
 
+/// Reads a scene file and returns with it the warnings of its `[[import]]`s (what the
+/// imported files hold that tress skipped).
+pub fn read_scene_with_warnings(path: &Path) -> Result<(Description, Vec<String>), SceneFileError> {
+    read_scene_frame_with_warnings(path, None)
+}
+
 /// Parses scene text; `path` names the file in messages and anchors relative paths.
+/// An animated scene is an error here: read it with [`read_scene_frame`]. The warnings of
+/// `[[import]]`s are dropped: [`parse_scene_frame`] returns them.
 pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileError> {
+    parse_scene_frame(text, path, None).map(|(d, _)| d)
+}
+
+/// Reads a scene file at animation frame `frame` (see [`parse_scene_frame`]).
+pub fn read_scene_frame(path: &Path, frame: Option<u32>) -> Result<Description, SceneFileError> {
+    read_scene_frame_with_warnings(path, frame).map(|(d, _)| d)
+}
+
+/// [`read_scene_frame`], with the warnings of the scene's `[[import]]`s.
+pub fn read_scene_frame_with_warnings(
+    path: &Path,
+    frame: Option<u32>,
+) -> Result<(Description, Vec<String>), SceneFileError> {
+    let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
+    parse_scene_frame(&text, path, frame)
+}
+
+/// Parses scene text at animation frame `frame`: the camera keys are interpolated at it
+/// and every run of `#` in a file name becomes the frame number, zero-padded to the run's
+/// length (`hair.####.hair` at frame 7 is `hair.0007.hair`). A scene with keys or
+/// patterns needs a frame; a frame given to a scene with neither changes nothing.
+/// Returns the warnings of the scene's `[[import]]`s with it.
+pub fn parse_scene_frame(
+    text: &str,
+    path: &Path,
+    frame: Option<u32>,
+) -> Result<(Description, Vec<String>), SceneFileError> {
     let syntax = |e: toml::de::Error| SceneFileError::Syntax { path: path.to_owned(), message: e.to_string() };
     let invalid = |message: String| SceneFileError::Invalid { path: path.to_owned(), message };
     let scene: SceneToml = toml::from_str(text).map_err(syntax)?;
@@ -584,8 +782,31 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
         }
     };
     let c = &scene.camera;
-    finite("camera", &[c.eye, c.target, c.up].concat())?;
+    let animated = !c.key.is_empty()
+        || scene
+            .mesh
+            .iter()
+            .filter_map(|m| m.file.as_ref())
+            .chain(scene.hair.iter().map(|h| &h.file))
+            .any(|f| has_pattern(f));
+    let frame = match (frame, animated) {
+        (None, true) => {
+            return Err(invalid(
+                "the scene is animated (camera keys or `#` frame patterns in file names): give a frame (--frame F)"
+                    .into(),
+            ))
+        }
+        (frame, _) => frame.unwrap_or(0),
+    };
+    let (eye, target, vfov) = camera_at(c, frame).map_err(|m| invalid(format!("camera: {m}")))?;
+    finite("camera", &[eye, target, c.up, [vfov, 0.0, 0.0]].concat())?;
     let r = &scene.render;
+    let defaults = RenderSettings::default();
+    let integrator = match r.integrator.as_deref() {
+        None => defaults.integrator,
+        Some(name) => Integrator::from_name(name)
+            .ok_or_else(|| invalid(format!("render: unknown `integrator` `{name}` (direct, final-gather or path)")))?,
+    };
     let settings = RenderSettings {
         width: r.resolution[0],
         height: r.resolution[1],
@@ -594,6 +815,14 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
         max_depth: r.max_depth,
         threads: r.threads,
         lod: r.lod,
+        integrator,
+        transparency_layers: r.transparency_layers.unwrap_or(defaults.transparency_layers),
+        gather_rays: r.gather_rays.unwrap_or(defaults.gather_rays),
+        adaptive: r.adaptive.as_ref().map(|a| Adaptive {
+            min_spp: a.min_spp,
+            max_spp: a.max_spp,
+            threshold: a.threshold,
+        }),
     };
     let mut lights = Vec::new();
     for (i, l) in scene.light.iter().enumerate() {
@@ -603,7 +832,7 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
     for (i, m) in scene.mesh.iter().enumerate() {
         let what = |m: String| invalid(format!("mesh {}: {m}", i + 1));
         let source = match (&m.file, &m.shape) {
-            (Some(file), None) => MeshSource::File(base.join(file)),
+            (Some(file), None) => MeshSource::File(base.join(at_frame(file, frame))),
             (None, Some(shape)) => MeshSource::Inline(procedural(shape).map_err(what)?),
             _ => return Err(what("give exactly one of `file` and `shape`".into())),
         };
@@ -617,7 +846,7 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
     for (i, h) in scene.hair.iter().enumerate() {
         let what = |m: String| invalid(format!("hair {}: {m}", i + 1));
         hair.push(HairEntry {
-            source: HairSource::File(base.join(&h.file)),
+            source: HairSource::File(base.join(at_frame(&h.file, frame))),
             material: material(&h.material).map_err(what)?,
             transform: transform(&h.transform).map_err(what)?,
             radius_scale: h.radius_scale,
@@ -630,16 +859,98 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<Description, SceneFileErro
         let entry = hair_system(h, base, meshes.len()).map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
         hair_systems.push(entry);
     }
+    let mut furs = Vec::new();
+    for (i, f) in scene.fur.iter().enumerate() {
+        furs.push(fur(f, meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?);
+    }
+    // Imported entries come after the file's own, so `[[mesh]]` numbers stay as written.
+    let mut warnings = Vec::new();
+    for (i, imp) in scene.import.iter().enumerate() {
+        let what = |m: String| invalid(format!("import {}: {m}", i + 1));
+        let file = base.join(&imp.file);
+        let mut imported = crate::io::imported::read_imported(&file).map_err(|e| what(e.to_string()))?;
+        imported.transform(&transform(&imp.transform).map_err(what)?);
+        warnings.extend(imported.warnings.iter().map(|w| format!("{}: {w}", file.display())));
+        if imp.lights {
+            lights.append(&mut imported.lights);
+        }
+        // Imported fur grows on imported meshes: their numbers move by the meshes before.
+        furs.extend(imported.fur.drain(..).map(|f| FurEntry { mesh: f.mesh + meshes.len(), ..f }));
+        meshes.append(&mut imported.meshes);
+        hair.append(&mut imported.hair);
+        hair_systems.append(&mut imported.hair_systems);
+    }
     let desc = Description {
-        camera: CameraDesc { eye: c.eye.into(), target: c.target.into(), up: c.up.into(), vfov: c.vfov },
+        camera: CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov },
         settings,
         lights,
         meshes,
         hair,
         hair_systems,
+        fur: furs,
     };
     desc.validate().map_err(|e| invalid(e.to_string()))?;
-    Ok(desc)
+    Ok((desc, warnings))
+}
+
+/// Eye, target and field of view at `frame`: the fixed camera, or the keys interpolated
+/// linearly (held before the first key and after the last).
+fn camera_at(c: &CameraToml, frame: u32) -> Result<(V3, V3, f32), String> {
+    let (first, last) = match (c.key.first(), c.key.last()) {
+        (None, _) | (_, None) => {
+            return match (c.eye, c.target) {
+                (Some(eye), Some(target)) => Ok((eye, target, c.vfov)),
+                _ => Err("give `eye` and `target`, or camera keys".into()),
+            }
+        }
+        (Some(first), Some(last)) => (first, last),
+    };
+    if c.eye.is_some() || c.target.is_some() {
+        return Err("give either `eye` and `target` or camera keys, not both".into());
+    }
+    if let Some(w) = c.key.windows(2).find(|w| w[0].frame >= w[1].frame) {
+        return Err(format!("key frames must increase: frame {} comes after frame {}", w[1].frame, w[0].frame));
+    }
+    let vfov = |k: &CameraKeyToml| k.vfov.unwrap_or(c.vfov);
+    let key = |k: &CameraKeyToml| (k.eye, k.target, vfov(k));
+    if frame <= first.frame {
+        return Ok(key(first));
+    }
+    if frame >= last.frame {
+        return Ok(key(last));
+    }
+    let after = c.key.partition_point(|k| k.frame <= frame);
+    let (a, b) = (&c.key[after - 1], &c.key[after]);
+    let t = (frame - a.frame) as f32 / (b.frame - a.frame) as f32;
+    let lerp3 = |p: V3, q: V3| std::array::from_fn(|i| p[i] + (q[i] - p[i]) * t);
+    Ok((lerp3(a.eye, b.eye), lerp3(a.target, b.target), vfov(a) + (vfov(b) - vfov(a)) * t))
+}
+
+/// True when a file name holds a `#` frame pattern.
+fn has_pattern(file: &Path) -> bool {
+    file.file_name().is_some_and(|n| n.to_string_lossy().contains('#'))
+}
+
+/// The file name with every run of `#` replaced by `frame`, zero-padded to the run's length.
+fn at_frame(file: &Path, frame: u32) -> PathBuf {
+    let Some(name) = file.file_name().map(|n| n.to_string_lossy().into_owned()) else { return file.to_owned() };
+    if !name.contains('#') {
+        return file.to_owned();
+    }
+    let mut out = String::new();
+    let mut chars = name.chars().peekable();
+    while let Some(ch) = chars.next() {
+        if ch != '#' {
+            out.push(ch);
+            continue;
+        }
+        let mut width = 1;
+        while chars.next_if_eq(&'#').is_some() {
+            width += 1;
+        }
+        out.push_str(&format!("{frame:0width$}"));
+    }
+    file.with_file_name(out)
 }
 
 fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
@@ -653,11 +964,14 @@ fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
 fn light(l: &LightToml) -> Result<Light, String> {
     const ANY: f32 = f32::NEG_INFINITY;
     Ok(match *l {
-        LightToml::Distant { direction, irradiance } => {
+        LightToml::Distant { direction, irradiance, angular_diameter } => {
             check("direction", &direction, ANY)?;
             check("irradiance", &irradiance, 0.0)?;
+            if !(0.0..=180.0).contains(&angular_diameter) {
+                return Err("`angular_diameter` must be between 0 and 180 degrees".into());
+            }
             let direction = Vec3::from(direction).try_normalize().ok_or("`direction` is zero")?;
-            Light::Distant { direction, irradiance: irradiance.into() }
+            Light::distant(direction, irradiance.into(), angular_diameter.to_radians())
         }
         LightToml::Point { position, intensity } => {
             check("position", &position, ANY)?;
@@ -800,6 +1114,10 @@ fn procedural(s: &ShapeToml) -> Result<TriangleMesh, String> {
         ShapeToml::Plane { size } => {
             check("size", &[size], 0.0)?;
             TriangleMesh::plane(size)
+        }
+        ShapeToml::Pillow { size, thickness } => {
+            check("size and thickness", &[size, thickness], 0.0)?;
+            TriangleMesh::pillow(size, thickness, 64)
         }
     })
 }
@@ -1036,6 +1354,107 @@ seed = 7
         }
         let e = hair("eumelanin = 1.0, roughness = 0.3").unwrap_err().to_string();
         assert!(e.contains("roughness"), "{e}");
+    }
+
+    const MESH: &str = "[[mesh]]\nshape = { type = \"torus\" }\nmaterial = { type = \"diffuse\", color = [1, 1, 1] }\n";
+
+    #[test]
+    fn fur_entries_take_a_preset_overrides_maps_and_guides() {
+        use crate::fur::{presets::preset, MapSource, Scalar};
+        let d = parse(&format!(
+            "{MESH}{MESH}[[fur]]\nmesh = 2\npreset = \"Squirrel\"\nseed = 9\nplacement = \"uv\"\nlength = 0.5\n\
+             dbw = 0.02\nlength_map = \"len.png\"\nguides = \"g.hair\"\nattractors = {{ model = \"global\", radius = 2.0 }}\n"
+        ))
+        .unwrap();
+        let f = &d.fur[0];
+        assert_eq!((f.mesh, f.seed, f.placement), (1, 9, FurPlacement::Uv));
+        let mut expected = preset("Squirrel").unwrap();
+        expected[Scalar::Length].value = 0.5;
+        expected[Scalar::BaseWidth].value = 0.02;
+        expected[Scalar::Length].map = Some(MapSource::Image(PathBuf::from("dir/len.png")));
+        assert_eq!(f.description, expected);
+        let (source, a) = f.guides.as_ref().unwrap();
+        assert_eq!(source, &HairSource::File(PathBuf::from("dir/g.hair")));
+        assert_eq!((a.model, a.radius, a.power), (AttractorModel::Global, 2.0, 1.0));
+        // Without a preset: Maya's node defaults.
+        let d = parse(&format!("{MESH}[[fur]]\nmesh = 1\n")).unwrap();
+        assert_eq!(d.fur[0].description, FurDescription::default());
+    }
+
+    #[test]
+    fn bad_fur_entries_are_errors_naming_the_entry_and_key() {
+        for (entry, needles) in [
+            ("mesh = 2", &["fur 1", "mesh"][..]),
+            ("mesh = 0", &["fur 1", "mesh"]),
+            ("mesh = 1\ndensity = -5", &["fur 1", "density", "-5"]),
+            ("mesh = 1\nlength = nan", &["fur 1", "length", "finite"]),
+            ("mesh = 1\nbaldness = 2", &["fur 1", "baldness", "0 to 1"]),
+            ("mesh = 1\nfluffiness = 2", &["fur 1", "fluffiness"]),
+            ("mesh = 1\npreset = \"Chinchilla\"", &["fur 1", "Chinchilla", "Duckling"]),
+            ("mesh = 1\nattractors = { radius = 1.0 }", &["fur 1", "guides"]),
+            ("mesh = 1\nguides = \"g.hair\"\nattractors = { radius = -1.0 }", &["fur 1", "radius"]),
+            ("mesh = 1\nguides = \"g.hair\"\nattractors = { pull = 1.0 }", &["pull"]),
+            ("mesh = 1\nplacement = \"random\"", &["random"]),
+        ] {
+            let e = parse(&format!("{MESH}[[fur]]\n{entry}\n")).unwrap_err().to_string();
+            assert!(e.contains("dir/test.toml"), "{e}");
+            for n in needles {
+                assert!(e.contains(n), "{entry}: `{e}` lacks `{n}`");
+            }
+        }
+    }
+
+    const KEYS: &str = r#"
+[camera]
+vfov = 40.0
+[[camera.key]]
+frame = 10
+eye = [0.0, 0.0, 10.0]
+target = [0.0, 0.0, 0.0]
+[[camera.key]]
+frame = 20
+eye = [10.0, 0.0, 0.0]
+target = [0.0, 2.0, 0.0]
+vfov = 20.0
+[[hair]]
+file = "sim/hair.####.hair"
+material = { type = "diffuse", color = [1, 1, 1] }
+[[mesh]]
+file = "ground_#.obj"
+material = { type = "diffuse", color = [1, 1, 1] }
+"#;
+
+    #[test]
+    fn camera_keys_interpolate_and_frame_patterns_substitute() {
+        let path = Path::new("dir/anim.toml");
+        let at = |f| parse_scene_frame(KEYS, path, Some(f)).unwrap().0;
+        let d = at(15);
+        assert_eq!(d.camera.eye, Vec3::new(5.0, 0.0, 5.0));
+        assert_eq!(d.camera.target, Vec3::new(0.0, 1.0, 0.0));
+        assert_eq!(d.camera.vfov, 30.0);
+        assert_eq!(d.hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.0015.hair")));
+        assert_eq!(d.meshes[0].source, MeshSource::File(PathBuf::from("dir/ground_15.obj")));
+        // Held before the first key and after the last.
+        assert_eq!((at(0).camera.eye, at(0).camera.vfov), (Vec3::new(0.0, 0.0, 10.0), 40.0));
+        assert_eq!((at(99).camera.eye, at(99).camera.vfov), (Vec3::new(10.0, 0.0, 0.0), 20.0));
+        assert_eq!(at(12345).hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.12345.hair")));
+        let e = parse_scene(KEYS, path).unwrap_err().to_string();
+        assert!(e.contains("dir/anim.toml") && e.contains("--frame"), "{e}");
+        // A still scene ignores the frame.
+        assert_eq!(parse_scene_frame(MINIMAL, path, Some(3)).unwrap().0, parse_scene(MINIMAL, path).unwrap());
+    }
+
+    #[test]
+    fn bad_camera_paths_are_errors() {
+        let path = Path::new("a.toml");
+        let both = KEYS.replace("vfov = 40.0", "vfov = 40.0\neye = [1, 1, 1]");
+        assert!(parse_scene_frame(&both, path, Some(1)).unwrap_err().to_string().contains("not both"));
+        let order = KEYS.replace("frame = 20", "frame = 10");
+        assert!(parse_scene_frame(&order, path, Some(1)).unwrap_err().to_string().contains("must increase"));
+        let e = parse_scene_frame("[camera]\nvfov = 3.0\n", path, None).unwrap_err().to_string();
+        assert!(e.contains("give `eye` and `target`"), "{e}");
+        let nan = KEYS.replace("target = [0.0, 2.0, 0.0]", "target = [0.0, nan, 0.0]");
+        assert!(parse_scene_frame(&nan, path, Some(15)).unwrap_err().to_string().contains("camera"));
     }
 
     #[test]

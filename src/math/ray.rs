@@ -25,6 +25,18 @@ impl RayCone {
     pub fn propagate(&self, t: f32, surface_spread: f32) -> RayCone {
         RayCone { width: self.width_at(t), spread: self.spread + surface_spread }
     }
+
+    /// The cone of one of `n` rays scattered from a hit at distance `t`, its direction drawn
+    /// with solid-angle density `pdf`: each ray stands for a solid angle `1 / (n pdf)`, a
+    /// cone of full angle `sqrt(4 / (pi n pdf))` (path differentials from the sampling
+    /// density, Suykens and Willems 2001). A specular (infinite `pdf`) ray keeps this
+    /// cone's spread; a scattered cone never narrows.
+    #[inline]
+    pub fn scattered(&self, t: f32, pdf: f32, n: u32) -> RayCone {
+        let spread = (4.0 / (std::f32::consts::PI * n.max(1) as f32 * pdf)).sqrt();
+        let spread = if spread.is_finite() { spread.max(self.spread) } else { self.spread };
+        RayCone { width: self.width_at(t), spread }
+    }
 }
 
 /// A ray with its valid interval and its cone.

@@ -1,11 +1,13 @@
-//! The direct-lighting (Whitted) integrator: lights with hard shadows, the environment as
-//! an ambient term, and mirror reflection and refraction up to the maximum depth.
+//! The direct-lighting (Whitted) integrator: lights with hard or soft shadows (partial
+//! through semi-transparent hair), the environment as an ambient term, mirror reflection
+//! and refraction up to the maximum depth, and semi-transparent hair blended in layers.
+//! The final gather reuses it with an indirect term ([`Indirect`]).
 
-use crate::accel::{Hit, HitKind, Shape, Skip};
+use crate::accel::{Hit, HitKind, Object, Shape, Skip, NEGLIGIBLE_TRANSMITTANCE};
 use crate::geometry::StrandPoint;
 use crate::light::{Light, LightSample};
 use crate::math::rng::PixelSampler;
-use crate::math::{offset_origin, Color, Ray};
+use crate::math::{offset_origin, Color, Ray, RayCone};
 use crate::scene::World;
 use crate::shading::{Material, ShadingPoint};
 use glam::Vec3;
@@ -35,18 +37,18 @@ pub struct FirstHit {
 }
 
 /// Where a shadow or secondary ray starts and which primitives it must ignore.
-struct Departure {
-    origin: Vec3,
-    skip: Option<Skip>,
+pub(super) struct Departure {
+    pub origin: Vec3,
+    pub skip: Option<Skip>,
 }
 
 /// Hit details the integrator needs beyond the shading point.
-struct Surface {
-    sp: ShadingPoint,
+pub(super) struct Surface {
+    pub sp: ShadingPoint,
     /// For hair: axis point, radius and axis direction at the hit.
-    hair: Option<(Vec3, f32, Vec3)>,
+    pub hair: Option<(Vec3, f32, Vec3)>,
     /// Unit geometric normal facing the incoming ray.
-    geometric: Vec3,
+    pub geometric: Vec3,
 }
 
 /// Radiance arriving along `ray`, and the first hit for AOVs.
@@ -57,22 +59,140 @@ pub fn trace(
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    counters.rays += 1;
-    let hit = world.accel.intersect(ray);
-    let t_hit = hit.map_or(ray.tmax, |h| h.t);
-    // Area lights are not in the BVH; a ray sees one if it meets it before any geometry.
-    let seen_light =
-        world.lights.iter().filter_map(|l| l.emitted(ray.origin, ray.dir, t_hit)).min_by(|a, b| a.0.total_cmp(&b.0));
-    if let Some((_, radiance)) = seen_light {
-        return (radiance, None);
+    trace_with(world, ray, depth, sampler, counters, &Whitted { see_emitters: true }, true)
+}
+
+/// What an integrator adds to direct light at a hit; the direct integrator and the final
+/// gather differ only here.
+pub(super) trait Indirect {
+    /// Radiance arriving along a specular (mirror, glass) ray, `depth` bounces deep.
+    fn specular(
+        &self,
+        world: &World,
+        ray: &Ray,
+        depth: u32,
+        sampler: &mut PixelSampler,
+        counters: &mut Counters,
+    ) -> Color;
+    /// Indirect light reflected towards `-ray.dir` at a hit, besides the specular rays.
+    fn diffuse(&self, world: &World, at: &At, depth: u32, sampler: &mut PixelSampler, counters: &mut Counters)
+        -> Color;
+}
+
+/// A hit being shaded, as [`Indirect::diffuse`] sees it.
+pub(super) struct At<'a> {
+    pub surface: &'a Surface,
+    pub hit: &'a Hit,
+    pub material: &'a Material,
+    pub wo: Vec3,
+    /// The footprint of the ray that made the hit (gathered rays continue it).
+    pub cone: RayCone,
+}
+
+/// The direct integrator adds specular rays only. Without `see_emitters` (light gathered
+/// by the final gather), specular rays do not see lights either: no caustics, whose few
+/// bright samples would be fireflies.
+pub(super) struct Whitted {
+    pub see_emitters: bool,
+}
+
+impl Indirect for Whitted {
+    fn specular(
+        &self,
+        world: &World,
+        ray: &Ray,
+        depth: u32,
+        sampler: &mut PixelSampler,
+        counters: &mut Counters,
+    ) -> Color {
+        trace_with(world, ray, depth, sampler, counters, self, self.see_emitters).0
     }
-    let Some(hit) = hit else {
-        return (world.background, None);
+    fn diffuse(&self, _: &World, _: &At, _: u32, _: &mut PixelSampler, _: &mut Counters) -> Color {
+        Color::ZERO
+    }
+}
+
+/// Radiance along `ray` and its first hit, shading each hit with direct light plus what
+/// `indirect` adds. Without `see_emitters`, lights and the environment seen along the ray
+/// itself count nothing (a gathered ray, whose origin already sampled them).
+///
+/// Semi-transparent hair (thesis section 2.2.8, fast transparency): one traversal collects
+/// the `transparency_layers` nearest hits; they are shaded front to back and blended by
+/// their opacity, `C = sum_i T_i a_i C_i` with `T_{i+1} = T_i (1 - a_i)`, stopping at an
+/// opaque hit or a negligible `T`; only when every collected hit let enough light through
+/// does the ray continue past them with another traversal.
+pub(super) fn trace_with(
+    world: &World,
+    ray: &Ray,
+    depth: u32,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+    indirect: &impl Indirect,
+    see_emitters: bool,
+) -> (Color, Option<FirstHit>) {
+    counters.rays += 1;
+    // Area lights are not in the BVH; a ray sees one if it meets it before any geometry.
+    let seen_light = |tmax: f32| {
+        world.lights.iter().filter_map(|l| l.emitted(ray.origin, ray.dir, tmax)).min_by(|a, b| a.0.total_cmp(&b.0))
     };
+    let emitted = |c: Color| if see_emitters { c } else { Color::ZERO };
+    if !world.accel.has_transparency() {
+        let hit = world.accel.intersect(ray);
+        if let Some((_, radiance)) = seen_light(hit.map_or(ray.tmax, |h| h.t)) {
+            return (emitted(radiance), None);
+        }
+        let Some(hit) = hit else {
+            return (emitted(world.background), None);
+        };
+        let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect);
+        return (color, Some(first));
+    }
+    let k = world.settings.transparency_layers as usize;
+    let (mut layers, mut seen) = (Vec::with_capacity(k), Vec::new());
+    let (mut color, mut transmitted, mut first, mut tmin) = (Color::ZERO, 1.0f32, None, 0.0);
+    loop {
+        world.accel.intersect_k(ray, tmin, k, &seen, &mut layers);
+        // Lights count up to where the collected hits may hide what lies behind them.
+        let light = match layers.last() {
+            Some(l) if layers.len() == k || l.opacity >= 1.0 => seen_light(l.hit.t),
+            _ => seen_light(ray.tmax),
+        };
+        for layer in layers.iter().take_while(|l| light.is_none_or(|(t, _)| l.hit.t < t)) {
+            let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect);
+            first.get_or_insert(f);
+            color += transmitted * layer.opacity * c;
+            transmitted *= 1.0 - layer.opacity;
+            if transmitted < NEGLIGIBLE_TRANSMITTANCE {
+                return (color, first);
+            }
+        }
+        if let Some((_, radiance)) = light {
+            return (color + transmitted * emitted(radiance), first);
+        }
+        if layers.len() < k {
+            return (color + transmitted * emitted(world.background), first);
+        }
+        // Every hit collected let light through: continue behind the farthest.
+        tmin = layers[k - 1].hit.t;
+        seen.extend_from_slice(&layers);
+        counters.rays += 1;
+    }
+}
+
+/// Direct light at one hit, the specular rays and what `indirect` adds; and the hit's
+/// description for the AOVs.
+fn shade(
+    world: &World,
+    ray: &Ray,
+    hit: &Hit,
+    depth: u32,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+    indirect: &impl Indirect,
+) -> (Color, FirstHit) {
     let object = &world.accel.objects[hit.object as usize];
     let material = &world.materials[object.material as usize];
-    let mut surface = surface_at(&object.shape, &hit, ray);
-    surface.sp.color = object.lod_color(hit.level, surface.sp.color);
+    let surface = surface_at(object, hit, ray);
     let sp = &surface.sp;
     let wo = -ray.dir;
     let first = FirstHit {
@@ -111,32 +231,38 @@ pub fn trace(
         if f.max_element() <= 0.0 {
             continue;
         }
-        let d = departure(&surface, &hit, ls.dir, matches!(material, Material::Tube(_)));
+        let d = departure(&surface, hit, ls.dir, material.shades_whole_circle());
         counters.rays += 1;
         // Stop short of the light by a relative margin so its own surface does not block.
         let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
-        // The shadow ray starts with the camera ray's footprint at the hit (level of detail).
-        if !world.accel.occluded_cone(d.origin, ls.dir, tmax, d.skip, ray.cone.propagate(hit.t, 0.0)) {
-            color += f * ls.value;
+        // Hair lets light through by its opacity; meshes and opaque strands block it. The
+        // shadow ray starts with the camera ray's footprint at the hit (level of detail).
+        let cone = ray.cone.propagate(hit.t, 0.0);
+        let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone);
+        if transmitted > 0.0 {
+            color += f * ls.value * transmitted;
         }
     }
 
     if depth < world.settings.max_depth {
         for r in material.specular(sp, wo).into_iter().flatten() {
-            let d = departure(&surface, &hit, r.dir, false);
+            let d = departure(&surface, hit, r.dir, false);
             let mut next = Ray::new(d.origin, r.dir);
             // Planar approximation: curvature would widen the cone (Akenine-Moller et al.
             // 2021 add it from the normal's screen-space derivatives; we have none yet).
             next.cone = ray.cone.propagate(hit.t, 0.0);
-            color += r.weight * trace(world, &next, depth + 1, sampler, counters).0;
+            color += r.weight * indirect.specular(world, &next, depth + 1, sampler, counters);
         }
     }
-    (color, Some(first))
+    let at = At { surface: &surface, hit, material, wo, cone: ray.cone };
+    color += indirect.diffuse(world, &at, depth, sampler, counters);
+    (color, first)
 }
 
-/// Builds the shading point from a hit.
-fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
-    match (shape, hit.kind) {
+/// Builds the shading point from a hit on `object`, with the strand colour its level of
+/// detail gives.
+pub(super) fn surface_at(object: &Object, hit: &Hit, ray: &Ray) -> Surface {
+    match (&object.shape, hit.kind) {
         (Shape::Mesh(mesh), HitKind::Triangle { b1, b2 }) => {
             let [a, b, c] = mesh.corners(hit.prim);
             // Interpolating the corners is more precise than origin + t * dir far away.
@@ -152,7 +278,7 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
                 // An interpolated normal may face away at grazing angles; keep it usable.
                 normal = geometric;
             }
-            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface };
+            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface, strand: None };
             Surface { sp, hair: None, geometric }
         }
         (Shape::Strands(strands), HitKind::Segment { s, normal }) => {
@@ -167,8 +293,17 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
             // relative to the segment's coordinates, not to the ray's length.
             let p = axis_point + normal * radius;
             let tangent = strands.tangent(hit.prim, s);
-            let sp =
-                ShadingPoint { p, normal, tangent: Some(tangent), color: strands.color(hit.prim, s), backface: false };
+            let sp = ShadingPoint {
+                p,
+                normal,
+                tangent: Some(tangent),
+                color: object.lod_color(hit.level, strands.color(hit.prim, s)),
+                backface: false,
+                strand: Some({
+                    let at = strands.strand_point(hit.prim, s);
+                    (at.strand, at.along)
+                }),
+            };
             Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal }
         }
         _ => unreachable!("hit kinds match their shapes"),
@@ -184,7 +319,7 @@ fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
 ///   joints). For tube shading the point faces `dir` across the axis, since the model
 ///   shades the whole circle alike; for surface models it is the hit itself. No fixed
 ///   epsilon: radius 1e-4 strands seen from 1e3 units stay acne-free.
-fn departure(surface: &Surface, hit: &Hit, dir: Vec3, tube: bool) -> Departure {
+pub(super) fn departure(surface: &Surface, hit: &Hit, dir: Vec3, tube: bool) -> Departure {
     match surface.hair {
         None => {
             let n = if surface.geometric.dot(dir) >= 0.0 { surface.geometric } else { -surface.geometric };

@@ -3,16 +3,21 @@
 //! Random numbers come from (pixel, sample, dimension) only ([`PixelSampler`]), and each
 //! pixel is written by exactly one task, so the image is bit-identical for any thread count.
 
+mod adaptive;
 mod direct;
+mod final_gather;
+mod path;
+mod tiled;
 
-pub use direct::{trace, Counters};
+pub use direct::{trace, Counters, FirstHit};
+pub use tiled::{render_tiles, tile_count_of, AfterTile, Control, TileMask, TiledFilm};
 
 use crate::film::{Film, Pixel};
 use crate::math::rng::PixelSampler;
-use crate::scene::World;
+use crate::math::{Color, Ray};
+use crate::scene::{Integrator, World};
 use glam::Vec3;
-use rayon::prelude::*;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// Side of the square image tiles rendered as one task.
 pub const TILE: u32 = 16;
@@ -45,72 +50,73 @@ pub fn tile_count(width: u32, height: u32) -> u64 {
 
 /// Renders the world on the current rayon thread pool.
 pub fn render(world: &World, progress: Option<&dyn Progress>) -> (Film, RenderStats) {
-    let start = Instant::now();
-    let (w, h) = (world.settings.width, world.settings.height);
-    let tiles_x = w.div_ceil(TILE);
-    let tiles = tile_count(w, h) as u32;
-    let results: Vec<(Vec<Pixel>, u64)> = (0..tiles)
-        .into_par_iter()
-        .map(|tile| {
-            let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
-            let mut counters = Counters::default();
-            let mut pixels = Vec::with_capacity((TILE * TILE) as usize);
-            for y in y0..(y0 + TILE).min(h) {
-                for x in x0..(x0 + TILE).min(w) {
-                    pixels.push(render_pixel(world, x, y, &mut counters));
-                }
-            }
-            if let Some(p) = progress {
-                p.advance(1);
-            }
-            (pixels, counters.rays)
-        })
-        .collect();
-    let mut film = Film::new(w, h);
-    let mut rays = 0;
-    for (tile, (pixels, tile_rays)) in results.into_iter().enumerate() {
-        let tile = tile as u32;
-        let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
-        let tw = (x0 + TILE).min(w) - x0;
-        for (i, p) in pixels.into_iter().enumerate() {
-            let (x, y) = (x0 + i as u32 % tw, y0 + i as u32 / tw);
-            film.pixels[(y * w + x) as usize] = p;
-        }
-        rays += tile_rays;
+    let full = crate::film::Region::full(world.settings.width, world.settings.height);
+    let (state, stats) = render_tiles(world, TiledFilm::new(full), &Control { progress, ..Control::default() });
+    (state.film, stats)
+}
+
+/// Radiance along a camera ray by the world's integrator, and the first hit.
+pub fn trace_camera(
+    world: &World,
+    ray: &Ray,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+) -> (Color, Option<FirstHit>) {
+    match world.settings.integrator {
+        Integrator::Direct => trace(world, ray, 0, sampler, counters),
+        Integrator::FinalGather => final_gather::trace(world, ray, sampler, counters),
+        Integrator::Path => path::trace(world, ray, sampler, counters),
     }
-    (film, RenderStats { rays, elapsed: start.elapsed() })
 }
 
 /// All samples of one pixel, box-filtered; the AOVs come from the first sample that hit.
+/// With adaptive sampling the pixel takes `min_spp` samples, then more in batches of
+/// `min_spp` while they disagree ([`adaptive::Spread`]), up to `max_spp`; sample `s` is
+/// the same whatever the batches, so a pixel refined to `n` samples equals a fixed-rate
+/// render at `n`.
 fn render_pixel(world: &World, x: u32, y: u32, counters: &mut Counters) -> Pixel {
-    let spp = world.settings.spp;
+    let (min, max, threshold) = match world.settings.adaptive {
+        Some(a) => (a.min_spp, a.max_spp, Some(a.threshold)),
+        None => (world.settings.spp, world.settings.spp, None),
+    };
     let mut pixel = Film::new(1, 1).pixels[0];
     let mut sum = Vec3::ZERO;
     let mut hits = 0u32;
-    for s in 0..spp {
-        let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
-        let (jx, jy) = sampler.next_2d();
-        let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
-        let (color, first) = trace(world, &ray, 0, &mut sampler, counters);
-        sum += color;
-        if let Some(f) = first {
-            if hits == 0 {
-                pixel.depth = f.t;
-                pixel.normal = f.normal;
-                pixel.object_id = f.object as f32;
-                pixel.strand_id = f.strand.map_or(-1.0, |s| s as f32);
-                if let Some(sp) = f.strand_point {
-                    pixel.strand_along = sp.along;
-                    pixel.root_uv = sp.root_uv.unwrap_or([-1.0, -1.0]);
-                    pixel.clump_id = sp.clump.map_or(-1.0, |c| c as f32);
-                    pixel.strand_random = sp.random;
+    let mut spread = adaptive::Spread::default();
+    let mut taken = 0;
+    while taken < max {
+        let batch = min.min(max - taken);
+        for s in taken..taken + batch {
+            let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
+            let (jx, jy) = sampler.next_2d();
+            let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
+            let (color, first) = trace_camera(world, &ray, &mut sampler, counters);
+            sum += color;
+            spread.add(color, first.map(|f| (f.object, f.strand)));
+            if let Some(f) = first {
+                if hits == 0 {
+                    pixel.depth = f.t;
+                    pixel.normal = f.normal;
+                    pixel.object_id = f.object as f32;
+                    pixel.strand_id = f.strand.map_or(-1.0, |s| s as f32);
+                    if let Some(sp) = f.strand_point {
+                        pixel.strand_along = sp.along;
+                        pixel.root_uv = sp.root_uv.unwrap_or([-1.0, -1.0]);
+                        pixel.clump_id = sp.clump.map_or(-1.0, |c| c as f32);
+                        pixel.strand_random = sp.random;
+                    }
+                    pixel.lod_level = f.lod_level.map_or(-1.0, |l| l as f32);
                 }
-                pixel.lod_level = f.lod_level.map_or(-1.0, |l| l as f32);
+                hits += 1;
             }
-            hits += 1;
+        }
+        taken += batch;
+        if !threshold.is_some_and(|t| spread.needs_more(t)) {
+            break;
         }
     }
-    pixel.color = sum / spp as f32;
-    pixel.coverage = hits as f32 / spp as f32;
+    pixel.color = sum / taken as f32;
+    pixel.coverage = hits as f32 / taken as f32;
+    pixel.samples = taken as f32;
     pixel
 }

@@ -2,6 +2,10 @@
 //! (plain data the renderer reads). [`prepare`] turns one into the other: it loads the
 //! files a description names, applies transforms and builds the acceleration structures.
 
+mod estimate;
+
+pub use estimate::{estimate_memory, parse_memory_size, MemoryEstimate};
+
 use crate::accel::lod::LodParams;
 use crate::accel::{Accel, Shape};
 use crate::camera::{Camera, CameraError};
@@ -45,11 +49,76 @@ pub struct RenderSettings {
     pub threads: usize,
     /// Level of detail for the strand sets that ask for it; `false` renders every strand.
     pub lod: bool,
+    /// How light is transported: which integrator renders.
+    pub integrator: Integrator,
+    /// Partial hits collected per traversal for semi-transparent hair (the K of thesis
+    /// section 2.2.8's fast transparency); 1 re-traces the ray after every hit.
+    pub transparency_layers: u32,
+    /// Adaptive supersampling; `None` takes `spp` samples in every pixel.
+    pub adaptive: Option<Adaptive>,
+    /// Rays gathered per camera sample at the first diffuse hit by the final gather.
+    pub gather_rays: u32,
+}
+
+/// The light-transport algorithm.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Integrator {
+    /// Direct light with hard or soft shadows, and mirror and glass recursion (Whitted).
+    #[default]
+    Direct,
+    /// Direct light plus one gathered bounce of indirect light (Turtle's final gather).
+    FinalGather,
+    /// Unbiased path tracing with next-event estimation and multiple importance sampling.
+    Path,
+}
+
+impl Integrator {
+    /// The integrator named `name` (`direct`, `final-gather` or `path`).
+    pub fn from_name(name: &str) -> Option<Integrator> {
+        match name {
+            "direct" => Some(Integrator::Direct),
+            "final-gather" | "final_gather" => Some(Integrator::FinalGather),
+            "path" => Some(Integrator::Path),
+            _ => None,
+        }
+    }
+}
+
+/// Adaptive supersampling: every pixel takes `min_spp` samples, then more in batches of
+/// `min_spp` while its samples differ by more than `threshold` in contrast or hit
+/// different objects or strands, up to `max_spp`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Adaptive {
+    /// Samples every pixel takes.
+    pub min_spp: u32,
+    /// Most samples a pixel takes.
+    pub max_spp: u32,
+    /// Contrast `(max - min) / (max + min)` of a colour channel above which a pixel is refined.
+    pub threshold: f32,
+}
+
+impl Default for CameraDesc {
+    /// Looking at the origin from 5 units along +z, y up, 35 degrees.
+    fn default() -> Self {
+        CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 35.0 }
+    }
 }
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, spp: 16, seed: 0, max_depth: 5, threads: 0, lod: true }
+        RenderSettings {
+            width: 640,
+            height: 480,
+            spp: 16,
+            seed: 0,
+            max_depth: 5,
+            threads: 0,
+            integrator: Integrator::Direct,
+            transparency_layers: 8,
+            adaptive: None,
+            gather_rays: 8,
+            lod: true,
+        }
     }
 }
 
@@ -135,8 +204,27 @@ pub struct HairSystemEntry {
     pub lod: Option<LodParams>,
 }
 
-/// Everything a scene says, before any file is read.
+/// Fur grown on one of the scene's meshes (Maya Fur, [`crate::fur`]).
 #[derive(Clone, Debug, PartialEq)]
+pub struct FurEntry {
+    /// Index of the mesh it grows on, into [`Description::meshes`]; it grows on the mesh
+    /// as placed in the world (after the mesh's transform).
+    pub mesh: usize,
+    /// The fur description (a preset with overrides).
+    pub description: crate::fur::FurDescription,
+    /// Root placement by area or by UV area.
+    pub placement: crate::fur::Placement,
+    /// Seed of every random decision of the fur.
+    pub seed: u32,
+    /// Guide curves (world space) that attract the fur, and how.
+    pub guides: Option<(HairSource, crate::fur::Attractors)>,
+    /// Level of detail (stochastic pruning), when wanted.
+    pub lod: Option<LodParams>,
+}
+
+/// Everything a scene says, before any file is read. The default is an empty scene seen
+/// by [`CameraDesc::default`].
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Description {
     /// Camera placement.
     pub camera: CameraDesc,
@@ -150,6 +238,8 @@ pub struct Description {
     pub hair: Vec<HairEntry>,
     /// Hair systems.
     pub hair_systems: Vec<HairSystemEntry>,
+    /// Fur grown on meshes.
+    pub fur: Vec<FurEntry>,
 }
 
 /// The prepared scene: geometry with its BVHs, materials, lights and camera.
@@ -167,6 +257,8 @@ pub struct World {
     pub accel: Accel,
     /// Sum of the environment lights' radiance (what unblocked rays see).
     pub background: Color,
+    /// What was skipped while preparing (strands or triangles with unusable numbers).
+    pub warnings: Vec<String>,
 }
 
 /// Why a description cannot be prepared.
@@ -207,14 +299,38 @@ impl Description {
         if s.spp == 0 || s.spp > 1 << 20 {
             return Err(PrepareError::Invalid(format!("spp {} is out of range (1 to 1048576)", s.spp)));
         }
+        if s.transparency_layers == 0 || s.transparency_layers > 64 {
+            return Err(PrepareError::Invalid(format!(
+                "transparency_layers {} is out of range (1 to 64)",
+                s.transparency_layers
+            )));
+        }
+        if s.gather_rays == 0 || s.gather_rays > 4096 {
+            return Err(PrepareError::Invalid(format!("gather_rays {} is out of range (1 to 4096)", s.gather_rays)));
+        }
+        if let Some(a) = s.adaptive {
+            if a.min_spp == 0 || a.min_spp > a.max_spp || a.max_spp > 1 << 20 {
+                return Err(PrepareError::Invalid(format!(
+                    "adaptive sampling needs 1 <= min_spp <= max_spp <= 1048576 (got {} and {})",
+                    a.min_spp, a.max_spp
+                )));
+            }
+            if !(a.threshold.is_finite() && a.threshold >= 0.0) {
+                return Err(PrepareError::Invalid(format!(
+                    "adaptive threshold {} must be finite and >= 0",
+                    a.threshold
+                )));
+            }
+        }
         if s.max_depth > 64 {
             return Err(PrepareError::Invalid(format!("max_depth {} is out of range (0 to 64)", s.max_depth)));
         }
-        for (i, p) in self.hair.iter().map(|h| h.lod).chain(self.hair_systems.iter().map(|h| h.lod)).enumerate() {
+        let lods = (self.hair.iter().map(|h| ("hair", h.lod)).enumerate())
+            .chain(self.hair_systems.iter().map(|h| ("hair_system", h.lod)).enumerate())
+            .chain(self.fur.iter().map(|f| ("fur", f.lod)).enumerate());
+        for (i, (kind, p)) in lods {
             if let Some(p) = p {
-                let n = self.hair.len();
-                let name = if i < n { format!("hair {}", i + 1) } else { format!("hair_system {}", i - n + 1) };
-                p.validate().map_err(|e| PrepareError::Invalid(format!("{name}: {e}")))?;
+                p.validate().map_err(|e| PrepareError::Invalid(format!("{kind} {}: {e}", i + 1)))?;
             }
         }
         for h in &self.hair {
@@ -239,6 +355,16 @@ impl Description {
                 }
             }
         }
+        for (i, f) in self.fur.iter().enumerate() {
+            let what = |e: String| PrepareError::Invalid(format!("fur {}: {e}", i + 1));
+            if f.mesh >= self.meshes.len() {
+                return Err(what(format!("`mesh` = {} names no mesh (there are {})", f.mesh + 1, self.meshes.len())));
+            }
+            f.description.validate().map_err(what)?;
+            if let Some((_, a)) = &f.guides {
+                a.validate().map_err(what)?;
+            }
+        }
         Ok(())
     }
 }
@@ -251,20 +377,32 @@ pub struct LoadedGeometry {
     pub materials: Vec<Material>,
     /// Level of detail per shape (meshes and strand sets without it: `None`).
     pub lods: Vec<Option<LodParams>>,
+    /// What was skipped: strands or triangles whose numbers are not finite once
+    /// transformed (enormous coordinates scaled past the float range, NaN from a generator).
+    pub warnings: Vec<String>,
 }
 
 /// Loads every mesh and strand set a description names and applies its transform.
 pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError> {
     let mut materials = Vec::new();
     let mut shapes = Vec::new();
+    let mut warnings = Vec::new();
     let mut lods = Vec::new();
-    for m in &desc.meshes {
+    for (i, m) in desc.meshes.iter().enumerate() {
         let mut mesh = match &m.source {
             MeshSource::File(path) => io::read_mesh(path)?,
             MeshSource::Inline(mesh) => mesh.clone(),
         };
         mesh.transform(&m.transform);
         lods.push(None);
+        let dropped = mesh.remove_unusable_triangles();
+        if dropped > 0 {
+            warnings.push(format!(
+                "mesh {}: skipped {dropped} triangles with corners not finite or beyond ±{:e}",
+                i + 1,
+                crate::geometry::MAX_COORDINATE
+            ));
+        }
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
         materials.push(m.material.clone());
     }
@@ -294,6 +432,14 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
             }
         }
         lods.push(h.lod);
+        let dropped = strands.remove_unusable_strands();
+        if dropped > 0 {
+            warnings.push(format!(
+                "hair {}: skipped {dropped} strands with coordinates or radii negative, not finite or beyond ±{:e}",
+                i + 1,
+                crate::geometry::MAX_COORDINATE
+            ));
+        }
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
@@ -321,7 +467,31 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
-    Ok(LoadedGeometry { shapes, materials, lods })
+    for (i, f) in desc.fur.iter().enumerate() {
+        let what = |e: String| PrepareError::Invalid(format!("fur {}: {e}", i + 1));
+        // Meshes come first among the shapes, in order.
+        let Some((Shape::Mesh(mesh), _)) = shapes.get(f.mesh) else {
+            return Err(what(format!("there is no mesh {}", f.mesh + 1)));
+        };
+        let guides = match &f.guides {
+            Some((HairSource::File(path), attractors)) => Some((io::hair::read_hair(path)?, attractors)),
+            Some((HairSource::Inline(s), attractors)) => Some((s.clone(), attractors)),
+            None => None,
+        };
+        let options = crate::fur::GrowOptions {
+            placement: f.placement,
+            seed: f.seed,
+            guides: guides.as_ref().map(|(s, a)| (s, *a)),
+        };
+        let grown = crate::fur::grow(mesh, &f.description, options).map_err(|e| match e {
+            crate::fur::FurError::Load(e) => PrepareError::Load(e),
+            e => what(e.to_string()),
+        })?;
+        lods.push(f.lod);
+        shapes.push((Shape::Strands(grown.strands), materials.len() as u32));
+        materials.push(Material::Fur(grown.shading));
+    }
+    Ok(LoadedGeometry { shapes, materials, lods, warnings })
 }
 
 /// Loads geometry, applies transforms and builds the BVHs.
@@ -330,7 +500,7 @@ pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError
     let c = &desc.camera;
     let camera = Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height)?;
     let start = Instant::now();
-    let LoadedGeometry { shapes, materials, lods } = load_geometry(desc)?;
+    let LoadedGeometry { shapes, materials, lods, warnings } = load_geometry(desc)?;
     let load = start.elapsed();
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     // The global switch drops every strand set's level of detail.
@@ -339,7 +509,14 @@ pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = desc.lights.iter().map(Light::background).sum();
-    let world =
-        World { camera, settings: desc.settings.clone(), lights: desc.lights.clone(), materials, accel, background };
+    let world = World {
+        camera,
+        settings: desc.settings.clone(),
+        lights: desc.lights.clone(),
+        materials,
+        accel,
+        background,
+        warnings,
+    };
     Ok((world, PrepareTimes { load, build, build_cpu }))
 }

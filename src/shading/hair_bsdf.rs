@@ -235,8 +235,18 @@ impl PhysicalHair {
     }
 }
 
+impl PhysicalHair {
+    /// [`HairBsdf::pdf`] in world space (arguments as for [`PhysicalHair::response`]): the
+    /// density with which [`PhysicalHair::sample`] picks `wi`, for multiple importance sampling.
+    pub fn pdf(&self, strand_color: Option<Color>, tangent: Vec3, normal: Vec3, wo: Vec3, wi: Vec3) -> f32 {
+        let fr = FibreFrame::new(tangent, normal, wo);
+        self.at(self.sigma_a(strand_color), fr.h).pdf(fr.to_local(wo), fr.to_local(wi))
+    }
+}
+
 /// The denominator of Chiang §4.2's colour inversion: a fit of how much a colour darkens per unit of √σ_a.
-fn color_polynomial(beta_n: f32) -> f32 {
+/// Chiang §4.2's polynomial in β_n relating a colour to σ_a.
+pub fn color_polynomial(beta_n: f32) -> f32 {
     let b = beta_n;
     5.969 - 0.215 * b + 2.532 * b.powi(2) - 10.73 * b.powi(3) + 5.574 * b.powi(4) + 0.245 * b.powi(5)
 }

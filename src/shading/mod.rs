@@ -6,7 +6,9 @@
 //! hair). Mirror and glass answer through [`Material::specular`] instead, which the
 //! integrator follows recursively.
 
+pub mod fur;
 pub mod hair_bsdf;
+pub mod scatter;
 pub mod surface;
 pub mod tube;
 
@@ -47,6 +49,8 @@ pub enum Material {
     Tube(tube::Tube),
     /// The physically based hair BSDF of Chiang et al. 2016 ([`hair_bsdf`]).
     Physical(hair_bsdf::PhysicalHair),
+    /// The thesis' fur shading (section 2.1.8, eq. 2.4 to 2.7), root-to-tip colours.
+    Fur(fur::Fur),
 }
 
 /// Where and how a ray met a surface or a strand, as the materials need it.
@@ -64,6 +68,8 @@ pub struct ShadingPoint {
     pub color: Option<Color>,
     /// True when the ray hit the surface from its back (inside glass).
     pub backface: bool,
+    /// On hair: the strand index and the fraction of its length at the hit (0 root, 1 tip).
+    pub strand: Option<(u32, f32)>,
 }
 
 /// A ray a specular material continues with.
@@ -97,6 +103,11 @@ impl Material {
                 // On a surface: Lambert with the colour the absorption stands for.
                 None => surface::lambert(h.surface_color(sp.color), sp.normal, wi),
             },
+            Material::Fur(f) => match (sp.tangent, sp.strand) {
+                (Some(tangent), Some((strand, along))) => f.response(strand, along, sp.color, tangent, wo, wi),
+                // Fur shading on a surface: Lambert with the base colour.
+                _ => surface::lambert(sp.color.unwrap_or(f.diffuse[0]), sp.normal, wi),
+            },
         }
     }
 
@@ -114,10 +125,15 @@ impl Material {
     }
 
     /// Constant light the material reflects from the environment without sampling it:
-    /// the tube model's ambient colour times the environment radiance (thesis eq. 2.3).
+    /// the tube or fur model's ambient colour times the environment radiance (thesis
+    /// eq. 2.3 and 2.7).
     pub fn ambient(&self, sp: &ShadingPoint, environment: Color) -> Color {
         match self {
             Material::Tube(t) if sp.tangent.is_some() => t.ambient_color(sp.color) * environment,
+            Material::Fur(f) => match (sp.tangent, sp.strand) {
+                (Some(_), Some((strand, along))) => f.ambient_color(strand, along) * environment,
+                _ => Color::ZERO,
+            },
             _ => Color::ZERO,
         }
     }
@@ -125,7 +141,13 @@ impl Material {
     /// True when the material lights itself from the environment through [`Material::ambient`],
     /// so the integrator must not also sample the environment for it.
     pub fn has_ambient_term(&self, sp: &ShadingPoint) -> bool {
-        matches!(self, Material::Tube(_)) && sp.tangent.is_some()
+        self.shades_whole_circle() && sp.tangent.is_some()
+    }
+
+    /// True for the tangent-based hair models (tube, fur), which shade a strand's whole
+    /// circle alike: rays leaving a hit on hair start on the side facing their direction.
+    pub fn shades_whole_circle(&self) -> bool {
+        matches!(self, Material::Tube(_) | Material::Fur(_))
     }
 
     /// The specular rays to follow from this point for a ray arriving along `-wo`

@@ -1,0 +1,1180 @@
+//! Maya ASCII (`.ma`) scenes: meshes, NURBS curves, hair systems with their follicles,
+//! FurDescriptions, cameras and lights (shared/spec/maya-fur-hair.md section 6).
+//!
+//! [`parse`] turns the text into a node graph; this module reads the nodes tress knows
+//! into an [`Imported`] scene:
+//!
+//! - **mesh**: vertices (`.vt`, plus tweaks `.pt`), edges (`.ed`), faces (`.fc`, as edge
+//!   loops) and UV set 0 (`.uvst[0].uvsp`, per face corner), triangulated as fans and
+//!   placed by its DAG transforms (translate, rotate with its order, scale, pivots, rotate
+//!   axis). A mesh built by a `polySphere`, `polyPlane` or `polyTorus` node is rebuilt
+//!   from that node's attributes. Colour: the `lambert`/`blinn`/`phong` of its shading
+//!   group (`color × diffuse`), else Maya's default grey. Hidden and intermediate shapes
+//!   are skipped.
+//! - **nurbsCurve**: the `.cc` block (degree, spans, form, rational, knots, CVs), sampled
+//!   by de Boor's algorithm at its knots and [`SAMPLES_PER_SPAN`] points per span. A
+//!   follicle's start curve is a guide of its hair system; other open curves are drawn as
+//!   hairs [`FREE_CURVE_WIDTH`] wide; closed curves (rig controls) are skipped.
+//! - **hairSystem** with its **follicles** (`follicle.oha → hairSystem.ih[i]`): the render
+//!   attributes of spec section 5 by short or long name, ramps included, and one guide per
+//!   follicle with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
+//!   file does not store (it is computed by Maya from `.pu`, `.pv`) is placed on its
+//!   mesh, local X along the surface normal and Y along the U tangent.
+//! - **FurDescription**: its attributes (node defaults for those the file omits) become a
+//!   fur description grown on each mesh it is attached to (through a `FurFeedback`), see
+//!   [`fur`].
+//! - **camera**: the first renderable perspective camera other than the default `persp`
+//!   (else `persp`), field of view from focal length (`.fl`), film aperture (`.cap`) and
+//!   film fit (`.ff`); image size from `defaultResolution`.
+//! - **lights**: directional, point, spot, ambient and area lights, colour × intensity. A
+//!   Maya intensity `I` lights a white Lambert surface facing it to `I` (Maya's shading has
+//!   no 1/π), so tress's irradiance is `π I`.
+//!
+//! Every other node type is skipped, all of them together in one warning.
+
+pub mod fur;
+pub mod parse;
+
+use self::parse::{Face, Graph, Value};
+use super::imported::Imported;
+use super::LoadError;
+use crate::geometry::curve::Nurbs;
+use crate::geometry::{StrandSet, TriangleMesh};
+use crate::hair::{follicles::follicles_at_uvs, Guides, HairColors, HairSystem, Interp, NoiseMethod, Ramp, RampKey};
+use crate::light::Light;
+use crate::scene::{CameraDesc, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource};
+use crate::shading::Material;
+use glam::{Affine3A, DAffine3, DMat3, DVec3, Vec3, Vec4};
+use std::collections::{BTreeMap, HashMap};
+use std::f32::consts::PI;
+use std::path::Path;
+
+/// Linear pieces per span when sampling a curve of degree 2 or more.
+pub const SAMPLES_PER_SPAN: usize = 8;
+/// Diameter of the hairs drawn for curves that belong to no hair system: Maya's default
+/// `hairWidth`.
+pub const FREE_CURVE_WIDTH: f32 = 0.01;
+/// Most control points one curve may have.
+const MAX_CVS: usize = 1 << 22;
+
+/// Reads a `.ma` file.
+pub fn read_maya(path: &Path) -> Result<Imported, LoadError> {
+    let bytes = std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))?;
+    // Maya writes files in the system code page; anything not UTF-8 is replaced, which can
+    // only touch names and strings.
+    parse_maya(&String::from_utf8_lossy(&bytes), path)
+}
+
+/// Reads `.ma` text; `path` names the file in messages.
+pub fn parse_maya(text: &str, path: &Path) -> Result<Imported, LoadError> {
+    let at = |(line, msg): (u32, String)| LoadError::format(path, format!("line {line}: {msg}"));
+    let g = parse::parse(text).map_err(at)?;
+    Reader::new(&g).read().map_err(at)
+}
+
+type Res<T> = Result<T, (u32, String)>;
+
+/// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
+/// reading; anything else is reported once.
+const KNOWN: [&str; 42] = [
+    "transform",
+    "mesh",
+    "nurbsCurve",
+    "hairSystem",
+    "follicle",
+    "camera",
+    "directionalLight",
+    "pointLight",
+    "spotLight",
+    "ambientLight",
+    "areaLight",
+    "FurDescription",
+    "FurFeedback",
+    "FurGlobals",
+    "shadingEngine",
+    "lambert",
+    "blinn",
+    "phong",
+    "phongE",
+    "surfaceShader",
+    "polySphere",
+    "polyPlane",
+    "polyTorus",
+    "materialInfo",
+    "partition",
+    "lightLinker",
+    "displayLayer",
+    "displayLayerManager",
+    "renderLayer",
+    "renderLayerManager",
+    "script",
+    "nodeGraphEditorInfo",
+    "shapeEditorManager",
+    "poseInterpolatorManager",
+    "groupId",
+    "groupParts",
+    "pfxHair",
+    "nucleus",
+    "time",
+    "objectSet",
+    "dagPose",
+    "",
+];
+
+struct Reader<'g> {
+    g: &'g Graph,
+    out: Imported,
+    /// World matrices by node, filled lazily; follicle transforms Maya computes are put
+    /// here before any curve is read.
+    world: HashMap<usize, DAffine3>,
+    /// Mesh index in `out.meshes` and the world-space mesh, by mesh node.
+    meshes: HashMap<usize, (usize, TriangleMesh)>,
+}
+
+impl<'g> Reader<'g> {
+    fn new(g: &'g Graph) -> Reader<'g> {
+        Reader { g, out: Imported::default(), world: HashMap::new(), meshes: HashMap::new() }
+    }
+
+    fn kind(&self, n: usize) -> &str {
+        &self.g.nodes[n].kind
+    }
+
+    fn of_kind(&self, kind: &'g str) -> impl Iterator<Item = usize> + 'g {
+        let g = self.g;
+        (0..g.nodes.len()).filter(move |&i| g.nodes[i].kind == kind)
+    }
+
+    fn read(mut self) -> Res<Imported> {
+        let g = self.g;
+        // Malformed transform channels are errors even on transforms nothing renders under.
+        for n in self.of_kind("transform") {
+            self.local(n)?;
+        }
+        for n in self.of_kind("mesh").collect::<Vec<_>>() {
+            self.mesh(n)?;
+        }
+        for n in self.of_kind("follicle").collect::<Vec<_>>() {
+            self.place_follicle(n)?;
+        }
+        let mut used_curves = vec![false; g.nodes.len()];
+        for n in self.of_kind("hairSystem").collect::<Vec<_>>() {
+            self.hair_system(n, &mut used_curves)?;
+        }
+        for c in &g.connections {
+            // Output and rest curves of follicles are Maya's results, not extra hair.
+            if self.kind(c.src) == "follicle" && self.kind(c.dst) == "nurbsCurve" {
+                used_curves[c.dst] = true;
+            }
+        }
+        self.free_curves(&used_curves)?;
+        let mut furs = Vec::new();
+        for n in self.of_kind("FurDescription").collect::<Vec<_>>() {
+            let mut f = fur::read_fur(g, n)?;
+            f.meshes = self.fur_meshes(n);
+            furs.push(f);
+        }
+        let (entries, warnings) = fur::fur_entries(&furs)?;
+        self.out.fur = entries;
+        self.out.warnings.extend(warnings);
+        self.camera()?;
+        self.lights()?;
+        if let Some(r) = g.find("defaultResolution") {
+            let w = scalar(g, r, &["w", "width"], 640.0)?;
+            let h = scalar(g, r, &["h", "height"], 480.0)?;
+            if !(1.0..=65536.0).contains(&w) || !(1.0..=65536.0).contains(&h) {
+                return Err((g.nodes[r].line, format!("defaultResolution {w}x{h} is out of range")));
+            }
+            self.out.resolution = Some([w as u32, h as u32]);
+        }
+        let mut unknown: BTreeMap<&str, usize> = BTreeMap::new();
+        for n in &g.nodes {
+            if !KNOWN.contains(&n.kind.as_str()) {
+                *unknown.entry(&n.kind).or_default() += 1;
+            }
+        }
+        if !unknown.is_empty() {
+            let total: usize = unknown.values().sum();
+            let list: Vec<String> = unknown.iter().map(|(k, n)| format!("{k} ({n})")).collect();
+            self.out
+                .warnings
+                .push(format!("skipped {total} node(s) of types tress does not read: {}", list.join(", ")));
+        }
+        Ok(self.out)
+    }
+
+    // ----- DAG -----
+
+    /// The node's local matrix (a transform's channels; identity for shapes).
+    fn local(&self, n: usize) -> Res<DAffine3> {
+        let g = self.g;
+        let node = &g.nodes[n];
+        if node.attrs.is_empty() {
+            return Ok(DAffine3::IDENTITY);
+        }
+        let a = g.angle_to_radians;
+        let t =
+            vec3(g, n, &["t", "translate"], &[["tx", "translateX"], ["ty", "translateY"], ["tz", "translateZ"]], 0.0)?;
+        let r = vec3(g, n, &["r", "rotate"], &[["rx", "rotateX"], ["ry", "rotateY"], ["rz", "rotateZ"]], 0.0)? * a;
+        let s = vec3(g, n, &["s", "scale"], &[["sx", "scaleX"], ["sy", "scaleY"], ["sz", "scaleZ"]], 1.0)?;
+        let ra = vec3(
+            g,
+            n,
+            &["ra", "rotateAxis"],
+            &[["rax", "rotateAxisX"], ["ray", "rotateAxisY"], ["raz", "rotateAxisZ"]],
+            0.0,
+        )? * a;
+        let rp = vec3(
+            g,
+            n,
+            &["rp", "rotatePivot"],
+            &[["rpx", "rotatePivotX"], ["rpy", "rotatePivotY"], ["rpz", "rotatePivotZ"]],
+            0.0,
+        )?;
+        let sp = vec3(
+            g,
+            n,
+            &["sp", "scalePivot"],
+            &[["spx", "scalePivotX"], ["spy", "scalePivotY"], ["spz", "scalePivotZ"]],
+            0.0,
+        )?;
+        let rpt = vec3(
+            g,
+            n,
+            &["rpt", "rotatePivotTranslate"],
+            &[["rptx", "rotatePivotTranslateX"], ["rpty", "rotatePivotTranslateY"], ["rptz", "rotatePivotTranslateZ"]],
+            0.0,
+        )?;
+        let spt = vec3(
+            g,
+            n,
+            &["spt", "scalePivotTranslate"],
+            &[["sptx", "scalePivotTranslateX"], ["spty", "scalePivotTranslateY"], ["sptz", "scalePivotTranslateZ"]],
+            0.0,
+        )?;
+        let order = scalar(g, n, &["ro", "rotateOrder"], 0.0)? as i64;
+        if s.x * s.y * s.z == 0.0 {
+            return Err((node.line, format!("{}: scale {s} has a zero component", node.name)));
+        }
+        let rot = euler(r, order).ok_or((node.line, format!("{}: rotate order {order} is not 0 to 5", node.name)))?;
+        let rot_axis = euler(ra, 0).expect("order 0 exists");
+        let tr = DAffine3::from_translation;
+        // Maya's transform matrix (column vectors): T · RPT · RP · R · RA · RP⁻¹ · SPT · SP · S · SP⁻¹.
+        Ok(tr(t + rpt + rp)
+            * DAffine3::from_mat3(rot * rot_axis)
+            * tr(-rp + spt + sp)
+            * DAffine3::from_scale(s)
+            * tr(-sp))
+    }
+
+    /// The node's world matrix: its local matrix under its parents'.
+    fn world(&mut self, n: usize) -> Res<DAffine3> {
+        let mut chain = Vec::new();
+        let mut cur = Some(n);
+        while let Some(c) = cur {
+            if let Some(m) = self.world.get(&c) {
+                let mut m = *m;
+                for &d in chain.iter().rev() {
+                    m *= self.local(d)?;
+                    self.world.insert(d, m);
+                }
+                return Ok(m);
+            }
+            if chain.len() > self.g.nodes.len() {
+                return Err((self.g.nodes[n].line, format!("{}: its parents form a cycle", self.g.nodes[n].name)));
+            }
+            chain.push(c);
+            let inherits = scalar(self.g, c, &["it", "inheritsTransform"], 1.0)? != 0.0;
+            cur = if inherits { self.g.parent(c) } else { None };
+        }
+        let mut m = DAffine3::IDENTITY;
+        for &d in chain.iter().rev() {
+            m *= self.local(d)?;
+            self.world.insert(d, m);
+        }
+        Ok(m)
+    }
+
+    /// True when the node or a parent is hidden (`.v no`), or the node is an intermediate
+    /// object (`.io yes`, e.g. a deformer's original shape).
+    fn hidden(&self, n: usize) -> Res<bool> {
+        if scalar(self.g, n, &["io", "intermediateObject"], 0.0)? != 0.0 {
+            return Ok(true);
+        }
+        let mut cur = Some(n);
+        let mut steps = 0;
+        while let Some(c) = cur {
+            if scalar(self.g, c, &["v", "visibility"], 1.0)? == 0.0 {
+                return Ok(true);
+            }
+            steps += 1;
+            cur = if steps > self.g.nodes.len() { None } else { self.g.parent(c) };
+        }
+        Ok(false)
+    }
+
+    /// Sources connected into `n`'s attribute named by one of `attrs` (with or without an
+    /// index).
+    fn inputs(&self, n: usize, attrs: &[&str]) -> Vec<usize> {
+        self.g
+            .connections
+            .iter()
+            .filter(|c| c.dst == n && attrs.contains(&plug_base(&c.dst_attr)))
+            .map(|c| c.src)
+            .collect()
+    }
+
+    // ----- meshes -----
+
+    fn mesh(&mut self, n: usize) -> Res<()> {
+        let g = self.g;
+        let node = &g.nodes[n];
+        if self.hidden(n)? {
+            return Ok(());
+        }
+        let history = self.inputs(n, &["i", "inMesh"]);
+        let mesh = match history.first() {
+            Some(&src) if !node.attrs.iter().any(|a| a.name.starts_with("vt")) => match self.procedural(src)? {
+                Some(m) => m,
+                None => {
+                    self.out.warnings.push(format!(
+                        "mesh {} is built by a `{}` node, which tress cannot evaluate: skipped",
+                        node.name,
+                        self.kind(src)
+                    ));
+                    return Ok(());
+                }
+            },
+            _ => match stored_mesh(g, n)? {
+                Some(m) => m,
+                None => return Ok(()),
+            },
+        };
+        mesh.validate().map_err(|e| (node.line, format!("mesh {}: {e}", node.name)))?;
+        let world = self.world(n)?;
+        let material = Material::Diffuse { color: self.mesh_color(n)? };
+        let mut placed = mesh.clone();
+        let transform = finite_affine(g, n, &world)?;
+        placed.transform(&transform);
+        self.meshes.insert(n, (self.out.meshes.len(), placed));
+        self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+        Ok(())
+    }
+
+    /// A mesh built by a primitive node, from that node's attributes (Maya's defaults when
+    /// unset); `None` for other history.
+    fn procedural(&self, src: usize) -> Res<Option<TriangleMesh>> {
+        let g = self.g;
+        let check = |v: f64, what: &str| -> Res<f32> {
+            match v.is_finite() && v > 0.0 && v < 1e12 {
+                true => Ok(v as f32),
+                false => Err((g.nodes[src].line, format!("{}: `{what}` = {v} must be positive", g.nodes[src].name))),
+            }
+        };
+        let divisions = |names: &[&str], default: f64| -> Res<u32> {
+            Ok(scalar(g, src, names, default)?.clamp(3.0, 1000.0) as u32)
+        };
+        Ok(match self.kind(src) {
+            "polySphere" => Some(TriangleMesh::sphere(
+                check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
+                divisions(&["sh", "subdivisionsHeight"], 20.0)?,
+            )),
+            "polyTorus" => Some(TriangleMesh::torus(
+                check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
+                check(scalar(g, src, &["sr", "sectionRadius"], 0.5)?, "sectionRadius")?,
+                divisions(&["sa", "subdivisionsAxis"], 20.0)?,
+                divisions(&["sh", "subdivisionsHeight"], 20.0)?,
+            )),
+            "polyPlane" => {
+                let w = check(scalar(g, src, &["w", "width"], 1.0)?, "width")?;
+                let h = check(scalar(g, src, &["h", "height"], 1.0)?, "height")?;
+                let mut m = TriangleMesh::plane(1.0);
+                m.transform(&Affine3A::from_scale(Vec3::new(w, 1.0, h)));
+                Some(m)
+            }
+            _ => None,
+        })
+    }
+
+    /// `color × diffuse` of the Lambert-family shader of the mesh's shading group; Maya's
+    /// default `lambert1` (0.5 grey, diffuse 0.8) when there is none.
+    fn mesh_color(&self, n: usize) -> Res<Vec3> {
+        let g = self.g;
+        let default = Vec3::splat(0.5 * 0.8);
+        let Some(sg) = g.connections.iter().find_map(|c| {
+            (c.src == n
+                && matches!(plug_base(&c.src_attr), "iog" | "instObjGroups")
+                && self.kind(c.dst) == "shadingEngine")
+                .then_some(c.dst)
+        }) else {
+            return Ok(default);
+        };
+        let Some(&shader) = self.inputs(sg, &["ss", "surfaceShader"]).first() else { return Ok(default) };
+        let color = |names: &[&str], comps: &[[&str; 2]; 3], d: f64| vec3(g, shader, names, comps, d);
+        Ok(match self.kind(shader) {
+            "lambert" | "blinn" | "phong" | "phongE" => {
+                let c = color(&["c", "color"], &[["cr", "colorR"], ["cg", "colorG"], ["cb", "colorB"]], 0.5)?;
+                (c * scalar(g, shader, &["dc", "diffuse"], 0.8)?).as_vec3()
+            }
+            "surfaceShader" => {
+                color(&["oc", "outColor"], &[["ocr", "outColorR"], ["ocg", "outColorG"], ["ocb", "outColorB"]], 0.0)?
+                    .as_vec3()
+            }
+            _ => default,
+        }
+        .max(Vec3::ZERO))
+    }
+
+    // ----- follicles and hair systems -----
+
+    /// Places the transform of follicle `f` on its mesh when the file does not store it
+    /// (Maya computes it from the follicle's `.ot` and `.or`).
+    fn place_follicle(&mut self, f: usize) -> Res<()> {
+        let g = self.g;
+        let Some(xf) = g.parent(f) else { return Ok(()) };
+        let stored =
+            g.nodes[xf].attrs.iter().any(|a| matches!(a.name.as_str(), "t" | "translate" | "tx" | "translateX"));
+        let Some(&mesh_node) = self.inputs(f, &["inm", "inputMesh"]).first() else { return Ok(()) };
+        if stored {
+            return Ok(());
+        }
+        let Some((_, mesh)) = self.meshes.get(&mesh_node) else { return Ok(()) };
+        let uv = [scalar(g, f, &["pu", "parameterU"], 0.0)? as f32, scalar(g, f, &["pv", "parameterV"], 0.0)? as f32];
+        let node = &g.nodes[f];
+        let found = follicles_at_uvs(mesh, &[uv]).map_err(|e| (node.line, format!("follicle {}: {e}", node.name)))?;
+        let Some((fol, tri)) = found[0] else {
+            return Err((
+                node.line,
+                format!("follicle {}: no face of its mesh has UV ({}, {})", node.name, uv[0], uv[1]),
+            ));
+        };
+        // Local X along the normal, Y along the surface's U direction (the follicle's
+        // tangent U), Z completing a right-handed frame.
+        let x = fol.normal;
+        let y = tangent_u(mesh, tri)
+            .map(|t| t - x * t.dot(x))
+            .and_then(Vec3::try_normalize)
+            .unwrap_or(crate::math::frame(x).0);
+        let z = x.cross(y);
+        let m = DAffine3::from_mat3_translation(
+            DMat3::from_cols(x.as_dvec3(), y.as_dvec3(), z.as_dvec3()),
+            fol.position.as_dvec3(),
+        );
+        self.world.insert(xf, m);
+        Ok(())
+    }
+
+    fn hair_system(&mut self, n: usize, used: &mut [bool]) -> Res<()> {
+        let g = self.g;
+        let node = &g.nodes[n];
+        let system = hair_attributes(g, n)?;
+        system.validate().map_err(|e| (node.line, format!("hair system {}: {e}", node.name)))?;
+        let mut follicles: Vec<(usize, usize)> = Vec::new();
+        for c in &g.connections {
+            let (follicle, index) = if c.dst == n && self.kind(c.src) == "follicle" {
+                (c.src, plug_index(&c.dst_attr))
+            } else if c.src == n && self.kind(c.dst) == "follicle" {
+                (c.dst, plug_index(&c.src_attr))
+            } else {
+                continue;
+            };
+            if !follicles.iter().any(|&(_, f)| f == follicle) {
+                follicles.push((index.unwrap_or(usize::MAX), follicle));
+            }
+        }
+        follicles.sort();
+        let mut curves = StrandSet::new();
+        let mut root_uv = Vec::new();
+        let mut missing = 0;
+        for &(_, f) in &follicles {
+            let curve = self
+                .inputs(f, &["sp", "startPosition"])
+                .into_iter()
+                .chain(self.inputs(f, &["rp", "restPosition"]))
+                .find(|&c| self.kind(c) == "nurbsCurve");
+            let points = match curve {
+                Some(c) => {
+                    used[c] = true;
+                    self.curve_points(c)?
+                }
+                None => None,
+            };
+            match points {
+                Some(p) if p.len() >= 2 => {
+                    curves.push_strand(p.into_iter().map(|q| (q, 0.0)));
+                    let u = scalar(g, f, &["pu", "parameterU"], 0.0)? as f32;
+                    let v = scalar(g, f, &["pv", "parameterV"], 0.0)? as f32;
+                    root_uv.push([u, v]);
+                }
+                _ => missing += 1,
+            }
+        }
+        if missing > 0 {
+            self.out.warnings.push(format!("{}: {missing} follicle(s) without a start curve give no hair", node.name));
+        }
+        if curves.strand_count() == 0 {
+            self.out.warnings.push(format!("{}: no follicle with a curve: the hair system gives no hair", node.name));
+            return Ok(());
+        }
+        let material = Material::Tube(system.tube());
+        self.out.hair_systems.push(HairSystemEntry {
+            guides: GuideSource::Inline(Guides { curves, root_uv: Some(root_uv) }),
+            system,
+            material,
+            colors: HairColors::System,
+            transform: Affine3A::IDENTITY,
+            seed: 0,
+            lod: None,
+        });
+        Ok(())
+    }
+
+    // ----- curves -----
+
+    /// The world-space samples of a curve node with a `.cc` block; `None` for a hidden curve
+    /// or one Maya builds from history.
+    fn curve_points(&mut self, n: usize) -> Res<Option<Vec<Vec3>>> {
+        let g = self.g;
+        let node = &g.nodes[n];
+        let Some(a) = node.attrs.iter().rev().find(|a| a.name == "cc" || a.name == "cached") else { return Ok(None) };
+        let Value::Curve(words) = &a.value else {
+            return Err((a.line, format!("curve {}: `.cc` must have -type \"nurbsCurve\"", node.name)));
+        };
+        let curve = nurbs_block(words).map_err(|e| (a.line, format!("curve {}: {e}", node.name)))?;
+        let world = self.world(n)?;
+        let m = finite_affine(g, n, &world)?;
+        let points: Vec<Vec3> = curve.sample(SAMPLES_PER_SPAN).into_iter().map(|p| m.transform_point3(p)).collect();
+        if points.iter().any(|p| !p.is_finite()) {
+            return Err((a.line, format!("curve {}: its points overflow single precision", node.name)));
+        }
+        Ok(Some(points))
+    }
+
+    fn free_curves(&mut self, used: &[bool]) -> Res<()> {
+        let mut set = StrandSet::new();
+        let mut closed = 0;
+        for n in self.of_kind("nurbsCurve").collect::<Vec<_>>() {
+            if used[n] || self.hidden(n)? {
+                continue;
+            }
+            let form = match self.g.nodes[n].attrs.iter().rev().find(|a| a.name == "cc").map(|a| &a.value) {
+                Some(Value::Curve(w)) => w.get(2).copied().unwrap_or(0.0),
+                _ => continue,
+            };
+            if form != 0.0 {
+                closed += 1;
+                continue;
+            }
+            if let Some(p) = self.curve_points(n)? {
+                set.push_strand(p.into_iter().map(|q| (q, 0.5 * FREE_CURVE_WIDTH)));
+            }
+        }
+        if closed > 0 {
+            self.out.warnings.push(format!("skipped {closed} closed or periodic curve(s) (rig controls, not hair)"));
+        }
+        if set.strand_count() > 0 {
+            let material = Material::Tube(HairSystem::default().tube());
+            self.out.hair.push(HairEntry {
+                source: HairSource::Inline(set),
+                material,
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: true,
+                lod: None,
+            });
+        }
+        Ok(())
+    }
+
+    // ----- fur -----
+
+    /// Meshes a FurDescription is attached to: through the FurFeedback nodes it is
+    /// connected with (their input mesh), or directly.
+    fn fur_meshes(&self, n: usize) -> Vec<usize> {
+        let g = self.g;
+        let mut out = Vec::new();
+        let mut add = |mesh: usize| {
+            if let Some(&(i, _)) = self.meshes.get(&mesh) {
+                if !out.contains(&i) {
+                    out.push(i);
+                }
+            }
+        };
+        for c in &g.connections {
+            let other = match (c.src == n, c.dst == n) {
+                (true, _) => c.dst,
+                (_, true) => c.src,
+                _ => continue,
+            };
+            match self.kind(other) {
+                "mesh" => add(other),
+                "FurFeedback" => {
+                    for m in self.inputs(other, &["imsh", "inputMesh", "is", "inputSurface"]) {
+                        add(m);
+                    }
+                }
+                _ => {}
+            }
+        }
+        out
+    }
+
+    // ----- camera and lights -----
+
+    fn camera(&mut self) -> Res<()> {
+        let g = self.g;
+        let cameras: Vec<usize> = self
+            .of_kind("camera")
+            .filter(|&c| {
+                scalar(g, c, &["o", "orthographic"], 0.0).is_ok_and(|o| o == 0.0)
+                    && scalar(g, c, &["rnd", "renderable"], 1.0).is_ok_and(|r| r != 0.0)
+            })
+            .collect();
+        let Some(&cam) = cameras.iter().find(|&&c| g.nodes[c].name != "perspShape").or(cameras.first()) else {
+            return Ok(());
+        };
+        let m = self.world(cam)?;
+        finite_affine(g, cam, &m)?;
+        let eye = m.transform_point3(DVec3::ZERO).as_vec3();
+        let forward = m.transform_vector3(DVec3::NEG_Z).as_vec3().normalize_or(Vec3::NEG_Z);
+        let up = m.transform_vector3(DVec3::Y).as_vec3().normalize_or(Vec3::Y);
+        let coi = scalar(g, cam, &["coi", "centerOfInterest"], 5.0)?.max(1e-3) as f32;
+        let focal = scalar(g, cam, &["fl", "focalLength"], 35.0)?;
+        let aperture = match attr(g, cam, &["cap", "cameraAperture"]) {
+            Some(a) => match &a.value {
+                Value::Numbers(v) if v.len() == 2 => [v[0], v[1]],
+                _ => return Err((a.line, "camera aperture must be two numbers".into())),
+            },
+            None => [
+                scalar(g, cam, &["hfa", "horizontalFilmAperture"], 1.41732)?,
+                scalar(g, cam, &["vfa", "verticalFilmAperture"], 0.94488)?,
+            ],
+        };
+        let node = &g.nodes[cam];
+        if !(focal > 0.0 && aperture[0] > 0.0 && aperture[1] > 0.0) {
+            return Err((node.line, format!("camera {}: focal length and aperture must be positive", node.name)));
+        }
+        let [w, h] = self.out.resolution.unwrap_or([640, 480]).map(|x| x as f64);
+        // Film fit: 0 fill, 1 horizontal (the node default), 2 vertical, 3 overscan.
+        let fit = scalar(g, cam, &["ff", "filmFit"], 1.0)? as i64;
+        let (film_aspect, image_aspect) = (aperture[0] / aperture[1], w / h);
+        let horizontal = match fit {
+            0 => image_aspect > film_aspect,
+            2 => false,
+            3 => image_aspect < film_aspect,
+            _ => true,
+        };
+        // Aperture in inches, focal length in millimetres.
+        let half_tan = match horizontal {
+            true => aperture[0] * 25.4 / (2.0 * focal) / image_aspect,
+            false => aperture[1] * 25.4 / (2.0 * focal),
+        };
+        let vfov = (2.0 * half_tan.atan()).to_degrees() as f32;
+        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov });
+        Ok(())
+    }
+
+    fn lights(&mut self) -> Res<()> {
+        let g = self.g;
+        for n in 0..g.nodes.len() {
+            let kind = g.nodes[n].kind.as_str();
+            if !matches!(kind, "directionalLight" | "pointLight" | "spotLight" | "ambientLight" | "areaLight") {
+                continue;
+            }
+            if self.hidden(n)? {
+                continue;
+            }
+            let node = &g.nodes[n];
+            let color = vec3(g, n, &["cl", "color"], &[["cr", "colorR"], ["cg", "colorG"], ["cb", "colorB"]], 1.0)?;
+            let intensity = scalar(g, n, &["in", "intensity"], 1.0)?;
+            let power = (color * intensity).as_vec3();
+            if !(power.is_finite() && power.min_element() >= 0.0) {
+                return Err((
+                    node.line,
+                    format!("light {}: colour × intensity must be finite and not negative", node.name),
+                ));
+            }
+            let m = self.world(n)?;
+            finite_affine(g, n, &m)?;
+            let position = m.transform_point3(DVec3::ZERO).as_vec3();
+            // Maya lights shine along their local −Z.
+            let along = m.transform_vector3(DVec3::NEG_Z).as_vec3().normalize_or(Vec3::NEG_Y);
+            let light = match kind {
+                "directionalLight" => Light::Distant { direction: -along, irradiance: power * PI },
+                "ambientLight" => Light::Environment { radiance: power },
+                "pointLight" | "spotLight" => {
+                    if scalar(g, n, &["de", "decayRate"], 0.0)? != 2.0 {
+                        self.out.warnings.push(format!(
+                            "light {}: Maya's decay rate is not quadratic; tress's point lights always fall off as 1/d²",
+                            node.name
+                        ));
+                    }
+                    if kind == "pointLight" {
+                        Light::Point { position, intensity: power * PI }
+                    } else {
+                        let cone = scalar(g, n, &["ca", "coneAngle"], 40.0)?.clamp(0.0, 180.0);
+                        let penumbra = scalar(g, n, &["pa", "penumbraAngle"], 0.0)?.clamp(-90.0, 90.0);
+                        let half = 0.5 * cone;
+                        let (inner, outer) =
+                            ((half + penumbra.min(0.0)).max(0.0), (half + penumbra.max(0.0)).min(180.0));
+                        Light::Spot {
+                            position,
+                            direction: along,
+                            intensity: power * PI,
+                            cos_inner: (inner as f32).to_radians().cos(),
+                            cos_outer: (outer as f32).to_radians().cos(),
+                        }
+                    }
+                }
+                _ => {
+                    // An area light is the square −1..1 in its local XY plane.
+                    let corner = m.transform_point3(DVec3::new(-1.0, -1.0, 0.0)).as_vec3();
+                    let edge_u = m.transform_vector3(DVec3::new(2.0, 0.0, 0.0)).as_vec3();
+                    let edge_v = m.transform_vector3(DVec3::new(0.0, 2.0, 0.0)).as_vec3();
+                    // The quad emits towards edge_u × edge_v; Maya's area light towards −Z.
+                    Light::Quad { corner: corner + edge_v, edge_u, edge_v: -edge_v, radiance: power }
+                }
+            };
+            self.out.lights.push(light);
+        }
+        Ok(())
+    }
+}
+
+// ----- attribute access -----
+
+/// The last `setAttr` of node `n` named one of `names` exactly.
+fn attr<'a>(g: &'a Graph, n: usize, names: &[&str]) -> Option<&'a parse::Attr> {
+    g.nodes[n].attrs.iter().rev().find(|a| names.contains(&a.name.as_str()))
+}
+
+/// A number attribute, `default` when unset.
+fn scalar(g: &Graph, n: usize, names: &[&str], default: f64) -> Res<f64> {
+    match attr(g, n, names) {
+        None => Ok(default),
+        Some(a) => match &a.value {
+            Value::Numbers(v) if v.len() == 1 => Ok(v[0]),
+            _ => Err((a.line, format!("{}: `{}` must be one number", g.nodes[n].name, a.name))),
+        },
+    }
+}
+
+/// A three-component attribute set whole (`.t`) or by component (`.tx`), in file order.
+fn vec3(g: &Graph, n: usize, whole: &[&str], parts: &[[&str; 2]; 3], default: f64) -> Res<DVec3> {
+    let mut v = DVec3::splat(default);
+    for a in &g.nodes[n].attrs {
+        let k = parts.iter().position(|p| p.contains(&a.name.as_str()));
+        if k.is_none() && !whole.contains(&a.name.as_str()) {
+            continue;
+        }
+        let bad = || (a.line, format!("{}: `{}` has the wrong number of values", g.nodes[n].name, a.name));
+        let Value::Numbers(x) = &a.value else { return Err(bad()) };
+        match (k, x.as_slice()) {
+            (Some(k), [x]) => v[k] = *x,
+            (None, [x, y, z]) => v = DVec3::new(*x, *y, *z),
+            _ => return Err(bad()),
+        }
+    }
+    Ok(v)
+}
+
+/// The attribute name of a plug without its index: `ih[0]` → `ih`.
+fn plug_base(plug: &str) -> &str {
+    plug.split(['[', '.']).next().unwrap_or(plug)
+}
+
+/// The index of a plug like `ih[3]`.
+fn plug_index(plug: &str) -> Option<usize> {
+    let (_, rest) = plug.split_once('[')?;
+    rest.split(']').next()?.parse().ok()
+}
+
+/// The element range an attribute name covers under `base`: `base[a:b]`, `base[a]` or
+/// `base` alone (from 0, as many as the values fill).
+fn element_range(name: &str, base: &str) -> Option<(usize, Option<usize>)> {
+    let rest = name.strip_prefix(base)?;
+    if rest.is_empty() {
+        return Some((0, None));
+    }
+    let inner = rest.strip_prefix('[')?.strip_suffix(']')?;
+    match inner.split_once(':') {
+        Some((a, b)) => Some((a.parse().ok()?, Some(b.parse().ok()?))),
+        None => {
+            let a = inner.parse().ok()?;
+            Some((a, Some(a)))
+        }
+    }
+}
+
+/// Elements of `k` numbers of an array attribute (written in chunks like `vt[0:99]`),
+/// by index.
+fn elements(g: &Graph, n: usize, bases: &[&str], k: usize) -> Res<BTreeMap<usize, Vec<f64>>> {
+    let mut out = BTreeMap::new();
+    for a in &g.nodes[n].attrs {
+        let Some((start, end)) = bases.iter().find_map(|b| element_range(&a.name, b)) else { continue };
+        let Value::Numbers(v) = &a.value else {
+            return Err((a.line, format!("{}: `{}` must be numbers", g.nodes[n].name, a.name)));
+        };
+        let count = match end {
+            Some(e) if e >= start => (e - start).saturating_add(1),
+            Some(_) => return Err((a.line, format!("{}: `{}` is an empty range", g.nodes[n].name, a.name))),
+            None => v.len() / k,
+        };
+        if Some(v.len()) != count.checked_mul(k) {
+            return Err((
+                a.line,
+                format!("{}: `{}` has {} values for {count} elements of {k}", g.nodes[n].name, a.name, v.len()),
+            ));
+        }
+        for (i, chunk) in v.chunks(k).enumerate() {
+            out.insert(start + i, chunk.to_vec());
+        }
+    }
+    Ok(out)
+}
+
+/// The elements `0..len` with none missing.
+fn dense(g: &Graph, n: usize, what: &str, map: BTreeMap<usize, Vec<f64>>) -> Res<Vec<Vec<f64>>> {
+    let len = map.len();
+    if let Some((i, _)) = map.iter().enumerate().find(|(i, (k, _))| *i != **k) {
+        return Err((g.nodes[n].line, format!("{}: {what} {i} is missing", g.nodes[n].name)));
+    }
+    let out: Vec<Vec<f64>> = map.into_values().collect();
+    debug_assert_eq!(out.len(), len);
+    Ok(out)
+}
+
+// ----- geometry -----
+
+fn euler(r: DVec3, order: i64) -> Option<DMat3> {
+    let (x, y, z) = (DMat3::from_rotation_x(r.x), DMat3::from_rotation_y(r.y), DMat3::from_rotation_z(r.z));
+    // The order names the first rotation applied first: xyz is z · y · x for column vectors.
+    Some(match order {
+        0 => z * y * x,
+        1 => x * z * y,
+        2 => y * x * z,
+        3 => y * z * x,
+        4 => z * x * y,
+        5 => x * y * z,
+        _ => return None,
+    })
+}
+
+fn to_affine(m: &DAffine3) -> Affine3A {
+    Affine3A::from_cols_array(&m.to_cols_array().map(|x| x as f32))
+}
+
+/// The world matrix of node `n` in single precision, refused when it does not fit.
+fn finite_affine(g: &Graph, n: usize, m: &DAffine3) -> Res<Affine3A> {
+    let a = to_affine(m);
+    match a.is_finite() {
+        true => Ok(a),
+        false => Err((g.nodes[n].line, format!("{}: its transforms overflow single precision", g.nodes[n].name))),
+    }
+}
+
+/// The direction of increasing U across triangle `t` (from its UV gradient).
+fn tangent_u(mesh: &TriangleMesh, t: u32) -> Option<Vec3> {
+    let uvs = mesh.uvs.as_ref()?;
+    let [a, b, c] = mesh.corners(t);
+    let [ta, tb, tc] = mesh.indices[t as usize].map(|i| uvs[i as usize]);
+    let (e1, e2) = (b - a, c - a);
+    let (du1, dv1, du2, dv2) = (tb[0] - ta[0], tb[1] - ta[1], tc[0] - ta[0], tc[1] - ta[1]);
+    let det = du1 * dv2 - du2 * dv1;
+    (det != 0.0).then(|| (e1 * dv2 - e2 * dv1) / det)
+}
+
+/// The mesh a `mesh` node stores (`None` when it stores no faces).
+fn stored_mesh(g: &Graph, n: usize) -> Res<Option<TriangleMesh>> {
+    let node = &g.nodes[n];
+    let vt = dense(g, n, "vertex", elements(g, n, &["vt", "vrts"], 3)?)?;
+    let tweaks = elements(g, n, &["pt", "pnts"], 3)?;
+    let edges = dense(g, n, "edge", elements(g, n, &["ed", "edge"], 3)?)?;
+    let uvs = dense(g, n, "uv", elements(g, n, &["uvst[0].uvsp", "uvSet[0].uvSetPoints"], 2)?)?;
+    let mut chunks: Vec<(usize, u32, &Vec<Face>)> = Vec::new();
+    for a in &node.attrs {
+        if let Some((start, _)) = element_range(&a.name, "fc").or_else(|| element_range(&a.name, "face")) {
+            match &a.value {
+                Value::Faces(f) => chunks.push((start, a.line, f)),
+                _ => return Err((a.line, format!("{}: `{}` must have -type \"polyFaces\"", node.name, a.name))),
+            }
+        }
+    }
+    if chunks.is_empty() {
+        return Ok(None);
+    }
+    chunks.sort_by_key(|c| c.0);
+    let mut positions: Vec<Vec3> = vt.iter().map(|v| DVec3::new(v[0], v[1], v[2]).as_vec3()).collect();
+    for (i, d) in tweaks {
+        if let Some(p) = positions.get_mut(i) {
+            *p += DVec3::new(d[0], d[1], d[2]).as_vec3();
+        }
+    }
+    let has_uvs = !uvs.is_empty();
+    let mut mesh = TriangleMesh::default();
+    let mut uv_out: Vec<[f32; 2]> = Vec::new();
+    let mut original: Vec<u32> = Vec::new();
+    let mut corners: HashMap<(u32, i64), u32> = HashMap::new();
+    for (_, line, faces) in chunks {
+        for f in faces {
+            let mut loop_: Vec<u32> = Vec::with_capacity(f.edges.len());
+            for &e in &f.edges {
+                let (index, end) = if e >= 0 { (e as usize, 0) } else { ((-e - 1) as usize, 1) };
+                let edge = edges
+                    .get(index)
+                    .ok_or((line, format!("{}: a face uses edge {index} of {}", node.name, edges.len())))?;
+                let v = edge[end];
+                if !(v >= 0.0 && (v as usize) < positions.len()) {
+                    return Err((line, format!("{}: edge {index} uses vertex {v} of {}", node.name, positions.len())));
+                }
+                loop_.push(v as u32);
+            }
+            let face_uvs = f.uvs.as_ref().filter(|u| has_uvs && u.len() == loop_.len());
+            let mut ids = Vec::with_capacity(loop_.len());
+            for (k, &v) in loop_.iter().enumerate() {
+                let uv = face_uvs.map_or(-1, |u| u[k]);
+                if uv >= 0 && uv as usize >= uvs.len() {
+                    return Err((line, format!("{}: a face uses UV {uv} of {}", node.name, uvs.len())));
+                }
+                let id = *corners.entry((v, uv)).or_insert_with(|| {
+                    mesh.positions.push(positions[v as usize]);
+                    uv_out.push(if uv >= 0 {
+                        [uvs[uv as usize][0] as f32, uvs[uv as usize][1] as f32]
+                    } else {
+                        [0.0; 2]
+                    });
+                    original.push(v);
+                    (mesh.positions.len() - 1) as u32
+                });
+                ids.push(id);
+            }
+            for k in 1..ids.len().saturating_sub(1) {
+                mesh.indices.push([ids[0], ids[k], ids[k + 1]]);
+            }
+        }
+    }
+    if has_uvs {
+        mesh.uvs = Some(uv_out);
+    }
+    // Edges flagged smooth (third value 1) mean Maya shades with vertex normals.
+    let smooth = edges.iter().filter(|e| e[2] != 0.0).count();
+    if smooth * 2 >= edges.len() && !edges.is_empty() {
+        let mut sum = vec![Vec3::ZERO; positions.len()];
+        for t in &mesh.indices {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+            let area_normal = (b - a).cross(c - a);
+            for &i in t {
+                sum[original[i as usize] as usize] += area_normal;
+            }
+        }
+        mesh.normals = Some(original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect());
+    }
+    Ok(Some(mesh))
+}
+
+/// Reads a `.cc` block: `degree spans form rational dimension`, the knot count and knots
+/// (Maya leaves out the first and last knot of the full vector), the CV count and CVs.
+fn nurbs_block(w: &[f64]) -> Result<Nurbs, String> {
+    let int = |i: usize, what: &str| -> Result<usize, String> {
+        let v = *w.get(i).ok_or_else(|| format!("the block ends before the {what}"))?;
+        match v >= 0.0 && v.fract() == 0.0 && v <= MAX_CVS as f64 {
+            true => Ok(v as usize),
+            false => Err(format!("{what} {v} is not a count")),
+        }
+    };
+    let degree = int(0, "degree")?;
+    let spans = int(1, "span count")?;
+    let rational = w.get(3).copied().unwrap_or(0.0) != 0.0;
+    let dim = int(4, "dimension")?;
+    if !(1..=7).contains(&degree) || !(2..=3).contains(&dim) {
+        return Err(format!("degree {degree} (1 to 7) or dimension {dim} (2 or 3) not supported"));
+    }
+    let knots = int(5, "knot count")?;
+    let cv_at = 6 + knots;
+    let cvs = int(cv_at, "CV count")?;
+    if cvs != spans + degree || knots != cvs + degree - 1 {
+        return Err(format!(
+            "{cvs} CVs and {knots} knots do not fit {spans} spans of degree {degree} (expected {} and {})",
+            spans + degree,
+            spans + 2 * degree - 1
+        ));
+    }
+    let per = dim + usize::from(rational);
+    let end = cv_at + 1 + cvs * per;
+    if w.len() != end {
+        return Err(format!("{} numbers where the header promises {end}", w.len()));
+    }
+    let inner = &w[6..cv_at];
+    let mut full = Vec::with_capacity(knots + 2);
+    full.push(inner[0]);
+    full.extend_from_slice(inner);
+    full.push(inner[knots - 1]);
+    let cvs = w[cv_at + 1..]
+        .chunks(per)
+        .map(|c| {
+            let (x, y, z) = (c[0] as f32, c[1] as f32, if dim == 3 { c[2] as f32 } else { 0.0 });
+            let wt = if rational { c[per - 1] as f32 } else { 1.0 };
+            Vec4::new(x * wt, y * wt, z * wt, wt)
+        })
+        .collect();
+    let curve = Nurbs { degree, knots: full, cvs };
+    curve.validate()?;
+    Ok(curve)
+}
+
+// ----- hair system attributes -----
+
+/// A hairSystem's render attributes (spec section 5), from the node defaults.
+fn hair_attributes(g: &Graph, n: usize) -> Res<HairSystem> {
+    let mut s = HairSystem::default();
+    let f = |names: &[&str], d: f32| -> Res<f32> { Ok(scalar(g, n, names, d as f64)? as f32) };
+    let count = |names: &[&str], d: u32| -> Res<u32> {
+        let v = scalar(g, n, names, d as f64)?;
+        match v >= 0.0 && v <= u32::MAX as f64 {
+            true => Ok(v as u32),
+            false => Err((attr(g, n, names).map_or(0, |a| a.line), format!("`{}` = {v} is not a count", names[1]))),
+        }
+    };
+    s.hairs_per_clump = count(&["hpc", "hairsPerClump"], s.hairs_per_clump)?;
+    s.sub_segments = count(&["ssg", "subSegments"], s.sub_segments)?;
+    s.thinning = f(&["thn", "thinning"], s.thinning)?;
+    s.clump_width = f(&["cwd", "clumpWidth"], s.clump_width)?;
+    s.clump_twist = f(&["ctw", "clumpTwist"], s.clump_twist)?;
+    s.bend_follow = f(&["bnf", "bendFollow"], s.bend_follow)?;
+    s.hair_width = f(&["hwd", "hairWidth"], s.hair_width)?;
+    s.curl = f(&["crl", "curl"], s.curl)?;
+    s.curl_frequency = f(&["crf", "curlFrequency"], s.curl_frequency)?;
+    s.noise = f(&["noi", "noise"], s.noise)?;
+    s.noise_frequency = f(&["nof", "noiseFrequency"], s.noise_frequency)?;
+    s.noise_frequency_u = f(&["nfu", "noiseFrequencyU"], s.noise_frequency_u)?;
+    s.noise_frequency_v = f(&["nfv", "noiseFrequencyV"], s.noise_frequency_v)?;
+    s.noise_frequency_w = f(&["nfw", "noiseFrequencyW"], s.noise_frequency_w)?;
+    s.opacity = f(&["opc", "opacity"], s.opacity)?;
+    s.translucence = f(&["tlc", "translucence"], s.translucence)?;
+    s.specular_power = f(&["spp", "specularPower"], s.specular_power)?;
+    s.diffuse_rand = f(&["dfr", "diffuseRand"], s.diffuse_rand)?;
+    s.specular_rand = f(&["sra", "specularRand"], s.specular_rand)?;
+    s.hue_rand = f(&["chr", "hueRand"], s.hue_rand)?;
+    s.sat_rand = f(&["csr", "satRand"], s.sat_rand)?;
+    s.val_rand = f(&["cvr", "valRand"], s.val_rand)?;
+    let color = |names: &[&str], parts: &[[&str; 2]; 3], d: Vec3| -> Res<Vec3> {
+        let mut v = vec3(g, n, names, parts, f64::NAN)?;
+        for k in 0..3 {
+            if v[k].is_nan() {
+                v[k] = d[k] as f64;
+            }
+        }
+        Ok(v.as_vec3())
+    };
+    s.hair_color = color(
+        &["hcl", "hairColor"],
+        &[["hcr", "hairColorR"], ["hcg", "hairColorG"], ["hcb", "hairColorB"]],
+        s.hair_color,
+    )?;
+    s.specular_color = color(
+        &["spc", "specularColor"],
+        &[["spr", "specularColorR"], ["spg", "specularColorG"], ["spb", "specularColorB"]],
+        s.specular_color,
+    )?;
+    s.noise_method = match scalar(g, n, &["nmt", "noiseMethod"], 0.0)? as i64 {
+        0 => NoiseMethod::Random,
+        1 => NoiseMethod::SurfaceUv,
+        2 => NoiseMethod::ClumpUv,
+        m => {
+            return Err((
+                attr(g, n, &["nmt", "noiseMethod"]).map_or(0, |a| a.line),
+                format!("noise method {m} is not 0 to 2"),
+            ))
+        }
+    };
+    for (short, long, field) in [
+        ("cws", "clumpWidthScale", &mut s.clump_width_scale),
+        ("clc", "clumpCurl", &mut s.clump_curl),
+        ("cfl", "clumpFlatness", &mut s.clump_flatness),
+        ("hws", "hairWidthScale", &mut s.hair_width_scale),
+        ("dsc", "displacementScale", &mut s.displacement_scale),
+    ] {
+        if let Some(keys) = ramp_keys(g, n, short, long, 1)? {
+            *field = build_ramp(g, n, long, keys, |v| v[0] as f32)?;
+        }
+    }
+    if let Some(keys) = ramp_keys(g, n, "hcs", "hairColorScale", 3)? {
+        s.hair_color_scale = build_ramp(g, n, "hairColorScale", keys, |v| DVec3::new(v[0], v[1], v[2]).as_vec3())?;
+    }
+    Ok(s)
+}
+
+/// One ramp key as read: position, value components, interpolation enum.
+type RawKey = (Option<f64>, Option<Vec<f64>>, Option<f64>);
+
+/// Reads a ramp attribute's keys by index, written whole (`.cws[0:1] 0 1 3 1 0.2 3`:
+/// position, value, interpolation) or by child (`.cws[0].cwsp`, `.cwsfv` or `.hcsc`,
+/// `.cwsi`, or the long names `clumpWidthScale[0].clumpWidthScale_Position`, ...).
+fn ramp_keys(g: &Graph, n: usize, short: &str, long: &str, k: usize) -> Res<Option<BTreeMap<usize, (RawKey, u32)>>> {
+    let mut keys: BTreeMap<usize, (RawKey, u32)> = BTreeMap::new();
+    let node = &g.nodes[n];
+    let value_children =
+        [format!("{short}fv"), format!("{short}c"), format!("{long}_FloatValue"), format!("{long}_Color")];
+    for a in &node.attrs {
+        let Some(base) = [short, long].into_iter().find(|b| a.name.starts_with(&format!("{b}["))) else { continue };
+        let Some(close) = a.name.find(']') else { continue };
+        let range = &a.name[..=close];
+        let child = a.name[close + 1..].strip_prefix('.');
+        let Some((start, end)) = element_range(range, base) else { continue };
+        let bad = |m: &str| (a.line, format!("{}: `{}` {m}", node.name, a.name));
+        let Value::Numbers(v) = &a.value else { return Err(bad("must be numbers")) };
+        match child {
+            None => {
+                let count = end.map_or(1, |e| e.saturating_sub(start).saturating_add(1));
+                if Some(v.len()) != count.checked_mul(k + 2) {
+                    return Err(bad(&format!("needs {} numbers per key (position, value, interpolation)", k + 2)));
+                }
+                for (i, c) in v.chunks(k + 2).enumerate() {
+                    keys.insert(start + i, ((Some(c[0]), Some(c[1..=k].to_vec()), Some(c[k + 1])), a.line));
+                }
+            }
+            Some(child) => {
+                let entry = &mut keys.entry(start).or_insert(((None, None, None), a.line)).0;
+                if child == format!("{short}p") || child == format!("{long}_Position") {
+                    entry.0 = Some(*v.first().ok_or_else(|| bad("has no value"))?);
+                } else if value_children.iter().any(|c| c == child) {
+                    if v.len() != k {
+                        return Err(bad(&format!("needs {k} number(s)")));
+                    }
+                    entry.1 = Some(v.clone());
+                } else if child == format!("{short}i") || child == format!("{long}_Interp") {
+                    entry.2 = Some(*v.first().ok_or_else(|| bad("has no value"))?);
+                }
+            }
+        }
+    }
+    Ok((!keys.is_empty()).then_some(keys))
+}
+
+fn build_ramp<T: crate::hair::ramp::RampValue>(
+    g: &Graph,
+    n: usize,
+    name: &str,
+    keys: BTreeMap<usize, (RawKey, u32)>,
+    value: impl Fn(&[f64]) -> T,
+) -> Res<Ramp<T>> {
+    let mut out = Vec::new();
+    let mut line = g.nodes[n].line;
+    for (i, ((pos, val, interp), l)) in keys {
+        line = l;
+        let bad = |m: String| (l, format!("{}: `{name}` key {i}: {m}", g.nodes[n].name));
+        let val = val.ok_or_else(|| bad("no value".into()))?;
+        let interp = match interp.unwrap_or(1.0) as i64 {
+            0 => Interp::None,
+            1 => Interp::Linear,
+            2 => Interp::Smooth,
+            3 => Interp::Spline,
+            m => return Err(bad(format!("interpolation {m} is not 0 to 3"))),
+        };
+        out.push(RampKey { position: pos.unwrap_or(0.0) as f32, value: value(&val), interp });
+    }
+    Ramp::new(out).map_err(|e| (line, format!("{}: `{name}` {e}", g.nodes[n].name)))
+}
+
+#[cfg(test)]
+mod tests;

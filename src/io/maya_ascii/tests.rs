@@ -1,0 +1,336 @@
+//! Maya ASCII import against a small scene written as Maya writes them: counts, attribute
+//! values, node defaults, curve knots, line-numbered errors, and random or mutated input.
+
+use super::*;
+use crate::fur::{ColorAttr, FurDescription, Scalar};
+use proptest::prelude::*;
+
+/// A small scene as Maya writes it: a 2 × 1 quad plane with UVs under a moved transform,
+/// a hair system with three follicles (two with stored transforms and start curves of
+/// degree 3 and 1, one placed by Maya from its UV), a FurDescription on the plane through
+/// a FurFeedback, a camera, a light, a rig control circle and an unknown node.
+const SCENE: &str = r#"//Maya ASCII 2020 scene
+requires maya "2020";
+currentUnit -l centimeter -a degree -t film;
+createNode transform -n "plane1";
+	setAttr ".t" -type "double3" 0 1 0 ;
+createNode mesh -n "planeShape1" -p "plane1";
+	setAttr -k off ".v";
+	setAttr ".uvst[0].uvsn" -type "string" "map1";
+	setAttr -s 6 ".uvst[0].uvsp[0:5]" -type "float2" 0 0 0.5 0 1 0 0 1 0.5 1 1 1;
+	setAttr -s 6 ".vt[0:5]"  -2 0 1 0 0 1 2 0 1 -2 0 -1 0 0 -1 2 0 -1;
+	setAttr -s 7 ".ed[0:6]"  0 1 0 1 2 0 3 4 0 4 5 0 0 3 0 1 4 0 2 5 0;
+	setAttr -s 2 -ch 8 ".fc[0:1]" -type "polyFaces"
+		f 4 0 5 -3 -5
+		mu 0 4 0 1 4 3
+		f 4 1 6 -4 -6
+		mu 0 4 1 2 5 4 ;
+createNode transform -n "hairSystem1";
+createNode hairSystem -n "hairSystemShape1" -p "hairSystem1";
+	setAttr ".hpc" 16;
+	setAttr ".cwd" 0.2;
+	setAttr ".hwd" 0.03;
+	setAttr ".ssg" 2;
+	setAttr -s 2 ".cws[0:1]"  0 1 3 1 0.2 3;
+	setAttr ".clc[0]"  0 0.6 1;
+	setAttr ".hcl" -type "float3" 0.5 0.3 0.1 ;
+	setAttr ".hcs[0].hcsp" 0;
+	setAttr ".hcs[0].hcsc" -type "float3" 0.5 0.5 0.5 ;
+	setAttr ".hcs[0].hcsi" 1;
+	setAttr ".hcs[1].hcsp" 1;
+	setAttr ".hcs[1].hcsc" -type "float3" 1 1 1 ;
+	setAttr ".nmt" 1;
+createNode transform -n "hairSystem1Follicles";
+createNode transform -n "follicle1" -p "hairSystem1Follicles";
+	setAttr ".t" -type "double3" -1 1 0 ;
+createNode follicle -n "follicleShape1" -p "follicle1";
+	setAttr ".pu" 0.25;
+	setAttr ".pv" 0.5;
+createNode transform -n "curve1" -p "follicle1";
+createNode nurbsCurve -n "curveShape1" -p "curve1";
+	setAttr ".cc" -type "nurbsCurve"
+		3 2 0 no 3
+		7 0 0 0 1 2 2 2
+		5
+		0 0 0
+		0 0.5 0
+		0 1 0.5
+		0 1.5 0.5
+		0 2 0
+		;
+createNode transform -n "follicle2" -p "hairSystem1Follicles";
+	setAttr ".t" -type "double3" 1 1 0 ;
+createNode follicle -n "follicleShape2" -p "follicle2";
+	setAttr ".pu" 0.75;
+	setAttr ".pv" 0.5;
+createNode transform -n "curve2" -p "follicle2";
+createNode nurbsCurve -n "curveShape2" -p "curve2";
+	setAttr ".cc" -type "nurbsCurve"
+		1 3 0 no 3
+		4 0 1 2 3
+		4
+		0 0 0
+		0 1 0
+		0.5 1 0
+		0.5 2 0
+		;
+createNode transform -n "follicle3" -p "hairSystem1Follicles";
+createNode follicle -n "follicleShape3" -p "follicle3";
+	setAttr ".pu" 0.75;
+	setAttr ".pv" 0.25;
+createNode transform -n "curve3" -p "follicle3";
+createNode nurbsCurve -n "curveShape3" -p "curve3";
+	setAttr ".cc" -type "nurbsCurve"
+		1 1 0 no 3
+		2 0 1
+		2
+		0 0 0
+		1 0 0
+		;
+createNode FurDescription -n "FurDescription1";
+	setAttr ".d" 5000;
+	setAttr ".dl" 0.4;
+	setAttr ".dbw" 0.02;
+	setAttr ".dbc" -type "float3" 0.6 0.4 0.2 ;
+createNode transform -n "FurFeedback1";
+createNode FurFeedback -n "FurFeedbackShape1" -p "FurFeedback1";
+createNode transform -n "camera1";
+	setAttr ".t" -type "double3" 0 3 10 ;
+createNode camera -n "cameraShape1" -p "camera1";
+	setAttr ".fl" 50;
+	setAttr ".coi" 10;
+createNode transform -n "directionalLight1";
+	setAttr ".r" -type "double3" -90 0 0 ;
+createNode directionalLight -n "directionalLightShape1" -p "directionalLight1";
+	setAttr ".in" 2;
+createNode transform -n "ctrl";
+createNode nurbsCurve -n "ctrlShape" -p "ctrl";
+	setAttr ".cc" -type "nurbsCurve"
+		1 4 2 no 3
+		5 0 1 2 3 4
+		5
+		1 0 0 0 0 1 -1 0 0 0 0 -1 1 0 0
+		;
+createNode polyCube -n "polyCube1";
+createNode polyCube -n "polyCube2";
+select -ne :defaultResolution;
+	setAttr ".w" 320;
+	setAttr ".h" 240;
+connectAttr "planeShape1.o" "follicleShape1.inm";
+connectAttr "planeShape1.o" "follicleShape2.inm";
+connectAttr "planeShape1.o" "follicleShape3.inm";
+connectAttr "planeShape1.wm" "follicleShape3.iwm";
+connectAttr "follicleShape3.ot" "follicle3.t";
+connectAttr "follicleShape3.or" "follicle3.r";
+connectAttr "curveShape1.ws" "follicleShape1.sp";
+connectAttr "curveShape2.ws" "follicleShape2.sp";
+connectAttr "curveShape3.ws" "follicleShape3.sp";
+connectAttr "follicleShape1.oha" "hairSystemShape1.ih[0]";
+connectAttr "follicleShape2.oha" "hairSystemShape1.ih[1]";
+connectAttr "follicleShape3.oha" "hairSystemShape1.ih[2]";
+connectAttr "planeShape1.w" "FurFeedbackShape1.imsh";
+connectAttr "FurDescription1.dl" "FurFeedbackShape1.dl";
+"#;
+
+fn read(text: &str) -> Result<Imported, LoadError> {
+    parse_maya(text, Path::new("dir/scene.ma"))
+}
+
+fn close(a: Vec3, b: Vec3) -> bool {
+    (a - b).length() < 1e-4
+}
+
+#[test]
+fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
+    let s = read(SCENE).unwrap();
+    // The mesh: 6 vertices, 2 quads = 4 triangles, UVs, moved up by its transform.
+    assert_eq!(s.meshes.len(), 1);
+    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    assert_eq!((m.positions.len(), m.indices.len()), (6, 4));
+    assert!(m.uvs.is_some());
+    assert!(close(s.meshes[0].transform.transform_point3(Vec3::ZERO), Vec3::Y));
+    // Faces keep Maya's winding: the plane faces +y... (its normals are not stored: flat).
+    let [a, b, c] = m.corners(0);
+    assert!(
+        (b - a).cross(c - a).normalize().dot(Vec3::Y) > 0.99
+            || (b - a).cross(c - a).normalize().dot(Vec3::NEG_Y) > 0.99
+    );
+    assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.4) });
+
+    // The hair system: three follicles, attributes from the file, the rest node defaults.
+    assert_eq!(s.hair_systems.len(), 1);
+    let h = &s.hair_systems[0];
+    let GuideSource::Inline(g) = &h.guides else { panic!() };
+    assert_eq!(g.curves.strand_count(), 3);
+    assert_eq!(g.root_uv, Some(vec![[0.25, 0.5], [0.75, 0.5], [0.75, 0.25]]));
+    let sys = &h.system;
+    assert_eq!((sys.hairs_per_clump, sys.sub_segments, sys.clump_width, sys.hair_width), (16, 2, 0.2, 0.03));
+    assert!((sys.clump_width_scale.eval(1.0) - 0.2).abs() < 1e-6);
+    assert_eq!(sys.clump_width_scale.keys()[0].interp, Interp::Spline);
+    assert_eq!(sys.clump_curl.eval(0.5), 0.6);
+    assert_eq!(sys.hair_color, Vec3::new(0.5, 0.3, 0.1));
+    assert!(close(sys.hair_color_scale.eval(0.5), Vec3::splat(0.75)));
+    assert_eq!(sys.noise_method, NoiseMethod::SurfaceUv);
+    let d = HairSystem::default();
+    assert_eq!(
+        (sys.thinning, sys.curl_frequency, sys.noise_frequency),
+        (d.thinning, d.curl_frequency, d.noise_frequency)
+    );
+    assert_eq!(
+        (sys.specular_color, sys.specular_power, sys.diffuse_rand),
+        (d.specular_color, d.specular_power, d.diffuse_rand)
+    );
+    assert_eq!(sys.clump_flatness, d.clump_flatness);
+
+    // The FurDescription: the file's values, node defaults elsewhere, grown on the plane.
+    assert_eq!(s.fur.len(), 1);
+    let (f, d) = (&s.fur[0], &s.fur[0].description);
+    assert_eq!(f.mesh, 0);
+    assert_eq!((d.density, d[Scalar::Length].value, d[Scalar::BaseWidth].value), (5000, 0.4, 0.02));
+    assert_eq!(d[ColorAttr::BaseColor].value, Vec3::new(0.6, 0.4, 0.2));
+    let n = FurDescription::default();
+    for a in [Scalar::TipWidth, Scalar::Inclination, Scalar::Scraggle, Scalar::ClumpingFrequency, Scalar::Polar] {
+        assert_eq!(d[a], n[a], "{a:?}");
+    }
+    assert_eq!((d.segments, d.light_model), (n.segments, n.light_model));
+    assert_eq!(d[ColorAttr::TipColor], n[ColorAttr::TipColor]);
+
+    // Camera, light, resolution; the control circle is not hair; polyCube is reported once.
+    let c = s.camera.as_ref().unwrap();
+    assert!(close(c.eye, Vec3::new(0.0, 3.0, 10.0)) && close(c.target, Vec3::new(0.0, 3.0, 0.0)));
+    // Horizontal fit: 2 atan(1.41732 × 25.4 / 2 / 50 / (320 / 240)).
+    let vfov = 2.0 * (1.41732f32 * 25.4 / 100.0 / (4.0 / 3.0)).atan().to_degrees();
+    assert!((c.vfov - vfov).abs() < 1e-3, "{}", c.vfov);
+    assert_eq!(s.resolution, Some([320, 240]));
+    assert_eq!(s.lights.len(), 1);
+    let Light::Distant { direction, irradiance } = s.lights[0] else { panic!() };
+    // Rotated −90° about X, the light's −Z points down: it comes from above.
+    assert!(close(direction, Vec3::Y), "{direction}");
+    assert!(close(irradiance, Vec3::splat(2.0 * PI)));
+    assert!(s.hair.is_empty());
+    assert!(s.warnings.iter().any(|w| w.contains("polyCube (2)")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("1 closed")), "{:?}", s.warnings);
+}
+
+#[test]
+fn nurbs_curves_honour_degree_and_knots() {
+    let s = read(SCENE).unwrap();
+    let GuideSource::Inline(g) = &s.hair_systems[0].guides else { panic!() };
+    let c = &g.curves;
+    let strand = |i: usize| -> Vec<Vec3> { (c.offsets[i]..c.offsets[i + 1]).map(|p| c.position(p)).collect() };
+    // Curve 1: degree 3, 2 spans, clamped knots 0 0 0 1 2 2 2: 2 × 8 + 1 samples, through
+    // the end CVs, placed by follicle1 at (−1, 1, 0).
+    let one = strand(0);
+    assert_eq!(one.len(), 2 * SAMPLES_PER_SPAN + 1);
+    let off = Vec3::new(-1.0, 1.0, 0.0);
+    assert!(close(one[0], off) && close(one[16], off + Vec3::new(0.0, 2.0, 0.0)));
+    // At the interior knot t = 1 of the full knot vector 0 0 0 0 1 2 2 2 2, the cubic
+    // B-spline basis functions (Cox-de Boor recursion) are 1/4, 1/2, 1/4 on P1, P2, P3.
+    let p = [Vec3::new(0.0, 0.5, 0.0), Vec3::new(0.0, 1.0, 0.5), Vec3::new(0.0, 1.5, 0.5)];
+    let at_knot = p[0] / 4.0 + p[1] / 2.0 + p[2] / 4.0;
+    assert!(close(one[8], off + at_knot), "{} vs {}", one[8], off + at_knot);
+    // Curve 2: degree 1: exactly its CVs.
+    let two = strand(1);
+    let off = Vec3::new(1.0, 1.0, 0.0);
+    let cvs = [Vec3::ZERO, Vec3::Y, Vec3::new(0.5, 1.0, 0.0), Vec3::new(0.5, 2.0, 0.0)];
+    assert_eq!(two.len(), 4);
+    assert!(two.iter().zip(cvs).all(|(a, b)| close(*a, off + b)));
+    // Curve 3: its follicle is placed by Maya at UV (0.75, 0.25) of the plane (x = 1,
+    // z = −0.5 in the plane's space, y = 1 after its transform) and its local X is the
+    // normal, so the curve along X leaves along the plane's normal.
+    let three = strand(2);
+    assert!(close(three[0], Vec3::new(1.0, 1.0, 0.5)) || close(three[0], Vec3::new(1.0, 1.0, -0.5)), "{}", three[0]);
+    let dir = (three[1] - three[0]).normalize();
+    assert!(dir.y.abs() > 0.999, "{dir}");
+}
+
+#[test]
+fn node_defaults_apply_when_the_file_sets_nothing() {
+    let s = read(
+        "createNode transform -n f;\ncreateNode follicle -n fs -p f;\ncreateNode transform -n c -p f;\n\
+         createNode nurbsCurve -n cs -p c;\nsetAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 1 0;\n\
+         createNode hairSystem -n hs;\ncreateNode FurDescription -n fd;\n\
+         connectAttr \"cs.ws\" \"fs.sp\";\nconnectAttr \"fs.oha\" \"hs.ih[0]\";\n",
+    )
+    .unwrap();
+    assert_eq!(s.hair_systems[0].system, HairSystem::default());
+    // The bare FurDescription is attached to no mesh: read, and reported as growing nothing.
+    assert!(
+        s.fur.is_empty() && s.warnings.iter().any(|w| w.contains("fd") && w.contains("no mesh")),
+        "{:?}",
+        s.warnings
+    );
+    assert!(s.camera.is_none() && s.lights.is_empty());
+}
+
+#[test]
+fn procedural_meshes_maya_default_material_and_shading_groups() {
+    let s = read(
+        "createNode transform -n s;\ncreateNode mesh -n ss -p s;\ncreateNode polySphere -n ps;\nsetAttr \".r\" 2;\n\
+         createNode lambert -n red;\nsetAttr \".c\" -type \"float3\" 1 0 0;\nsetAttr \".dc\" 0.5;\n\
+         createNode shadingEngine -n redSG;\n\
+         connectAttr \"ps.out\" \"ss.i\";\nconnectAttr \"red.oc\" \"redSG.ss\";\nconnectAttr \"ss.iog\" \"redSG.dsm\" -na;\n",
+    )
+    .unwrap();
+    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    assert!(m.positions.iter().all(|p| (p.length() - 2.0).abs() < 1e-4));
+    assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::new(0.5, 0.0, 0.0) });
+}
+
+#[test]
+fn malformed_lines_are_errors_naming_file_and_line() {
+    for (text, line) in [
+        ("createNode mesh -n m;\nsetAttr \".vt[0:1]\" 0 0 0 1 0;\nsetAttr \".ed[0]\" 0 1 0;\nsetAttr \".fc[0]\" -type \"polyFaces\" f 1 0;\n", 2),
+        ("createNode nurbsCurve -n c;\nsetAttr \".cc\" -type \"nurbsCurve\" 3 1 0 no 3 4 0 0 1 1 4 0 0 0 1 0 0;\ncreateNode hairSystem;\n", 2),
+        ("createNode transform -n t;\n\n\nsetAttr \".t\" -type \"double3\" 1 2;\ncreateNode pointLight -p t;\n", 4),
+        ("createNode transform -n t;\nsetAttr \".s\" -type \"double3\" 1e300 1 1;\ncreateNode pointLight -p t;\n", 3),
+        ("createNode hairSystem -n h;\nsetAttr \".cws[0:1]\" 0 1 3 1;\n", 2),
+        ("createNode hairSystem -n h;\nsetAttr \".hpc\" -4;\ncreateNode follicle -n f;\n", 2),
+        ("requires maya \"2020\";\ncreateNode mesh -n \"m;\n", 2),
+        ("createNode camera -n c;\nsetAttr \".fl\" \"long\";\n", 2),
+    ] {
+        let e = match read(text) {
+            Ok(_) => panic!("no error for {text:?}"),
+            Err(e) => e.to_string(),
+        };
+        assert!(e.starts_with("dir/scene.ma: line "), "{e}");
+        assert!(e.contains(&format!("line {line}:")), "expected line {line}: {e}");
+    }
+}
+
+#[test]
+fn the_example_scene_imports() {
+    let s = read(include_str!("../../../scenes/maya_hair.ma")).unwrap();
+    assert_eq!(s.meshes.len(), 2);
+    assert_eq!(s.hair_systems.len(), 1);
+    assert_eq!(s.fur.len(), 1);
+    assert!(s.camera.is_some() && !s.lights.is_empty());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Random text never panics.
+    #[test]
+    fn random_text_never_panics(text in "\\PC{0,300}") {
+        let _ = read(&text);
+    }
+
+    /// The scene with a few bytes changed, removed or inserted never panics, and an error
+    /// names the file.
+    #[test]
+    fn mutated_scenes_never_panic(edits in prop::collection::vec((0usize..SCENE.len(), 0u8..3, prop::sample::select(&b"0123456789-.;\" fxyzab[]:\n"[..])), 1..6)) {
+        let mut bytes = SCENE.as_bytes().to_vec();
+        for (at, op, c) in edits {
+            let at = at.min(bytes.len().saturating_sub(1));
+            match op {
+                0 => bytes[at] = c,
+                1 => { bytes.remove(at); }
+                _ => bytes.insert(at, c),
+            }
+        }
+        if let Err(e) = read(&String::from_utf8_lossy(&bytes)) {
+            prop_assert!(e.to_string().starts_with("dir/scene.ma"));
+        }
+    }
+}

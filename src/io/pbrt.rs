@@ -1,0 +1,923 @@
+//! pbrt-v4 scenes, the part hair scenes use (the pbrt-v4 file format; Pharr, Jakob and
+//! Humphreys, *Physically Based Rendering*, 4th edition, appendix C and the format's online
+//! reference).
+//!
+//! Read: `LookAt`, `Translate`, `Scale`, `Rotate`, `Transform`, `ConcatTransform`,
+//! `Identity`, `CoordinateSystem`/`CoordSysTransform`, `ReverseOrientation`,
+//! `AttributeBegin`/`End` (and the older `TransformBegin`/`End`), `Include`/`Import`
+//! (paths relative to the first file's directory, as pbrt resolves them), `Camera
+//! "perspective"` (`fov`, on the shorter image side), `Film` (`xresolution`,
+//! `yresolution`), `Sampler` (`pixelsamples`), `Integrator` (`maxdepth`), `LightSource`
+//! `distant`, `infinite` (constant `L`), `point` and `spot`, `Material` and
+//! `MakeNamedMaterial`/`NamedMaterial` (`hair`, `diffuse`, `dielectric`, `conductor`), and
+//! `Shape` `curve`, `trianglemesh`, `plymesh` and `sphere`.
+//!
+//! **Curves.** Each `Shape "curve"` (`bezier` or `bspline` basis, degree 2 or 3, types
+//! `flat`, `cylinder` and `ribbon` alike) becomes one strand: every segment is sampled at
+//! 2^`splitdepth` linear pieces (pbrt's own subdivision count; default 3) and the width
+//! runs linearly from `width0` to `width1` (both default to `width`, 1) along the whole
+//! curve, as in pbrt. Curves sharing a material form one strand set.
+//!
+//! **Hair material.** pbrt's `hair` is the model of Chiang et al. 2016, as is tress's
+//! `physical` material, which takes its parameters: `beta_m`, `beta_n`, `alpha`, `eta`,
+//! and the absorption from `sigma_a` (as the colour Chiang et al. §4.2 maps to it, which
+//! tress maps back), `reflectance` (that colour) or `eumelanin` and `pheomelanin` (1.3 and
+//! 0 when nothing is given, pbrt's default). The melanin concentrations mean the same
+//! pigment in both renderers; their RGB absorption coefficients differ slightly (pbrt
+//! integrates d'Eon et al. 2011's spectra itself).
+//!
+//! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
+//! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the
+//! camera's vertical plane instead, so images match pbrt's.
+//!
+//! Everything else (textures, media, area lights, object instances, other shapes and
+//! cameras) is skipped with one warning per kind; spectra other than `rgb` become grey of
+//! the same scale.
+
+use super::imported::Imported;
+use super::LoadError;
+use crate::geometry::curve::{cubic_point, CubicBasis};
+use crate::geometry::{StrandSet, TriangleMesh};
+use crate::light::Light;
+use crate::scene::{CameraDesc, HairEntry, HairSource, MeshEntry, MeshSource};
+use crate::shading::hair_bsdf::{color_polynomial, Absorption, HairParams, PhysicalHair};
+use crate::shading::Material;
+use glam::{Affine3A, DMat4, DVec3, Vec3};
+use std::collections::{BTreeSet, HashMap};
+use std::path::{Path, PathBuf};
+
+/// Deepest nesting of `Include`/`Import`.
+const MAX_INCLUDE_DEPTH: usize = 32;
+/// Most linear pieces per curve segment (`splitdepth` up to 6).
+const MAX_SPLIT_DEPTH: u32 = 6;
+
+/// Reads a `.pbrt` file and the files it includes.
+pub fn read_pbrt(path: &Path) -> Result<Imported, LoadError> {
+    let text = read_text(path)?;
+    parse_pbrt(&text, path)
+}
+
+/// Reads pbrt text; `path` names it in messages and anchors relative paths.
+pub fn parse_pbrt(text: &str, path: &Path) -> Result<Imported, LoadError> {
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let mut p = Parser::new(dir);
+    p.file(text, path, 0)?;
+    p.finish()
+}
+
+fn read_text(path: &Path) -> Result<String, LoadError> {
+    let bytes = std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))?;
+    String::from_utf8(bytes).map_err(|_| LoadError::format(path, "the file is not UTF-8 text"))
+}
+
+// ----- tokens -----
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Kind {
+    Word,
+    Str,
+    Open,
+    Close,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Token<'a> {
+    text: &'a str,
+    kind: Kind,
+    line: u32,
+}
+
+struct Lexer<'a> {
+    src: &'a str,
+    pos: usize,
+    line: u32,
+    peeked: Option<Token<'a>>,
+}
+
+impl<'a> Lexer<'a> {
+    fn new(src: &'a str) -> Lexer<'a> {
+        Lexer { src, pos: 0, line: 1, peeked: None }
+    }
+
+    fn peek(&mut self) -> Result<Option<Token<'a>>, (u32, String)> {
+        if self.peeked.is_none() {
+            self.peeked = self.lex()?;
+        }
+        Ok(self.peeked)
+    }
+
+    fn next(&mut self) -> Result<Option<Token<'a>>, (u32, String)> {
+        match self.peeked.take() {
+            Some(t) => Ok(Some(t)),
+            None => self.lex(),
+        }
+    }
+
+    fn lex(&mut self) -> Result<Option<Token<'a>>, (u32, String)> {
+        let b = self.src.as_bytes();
+        loop {
+            match b.get(self.pos) {
+                None => return Ok(None),
+                Some(b'\n') => {
+                    self.line += 1;
+                    self.pos += 1;
+                }
+                Some(c) if c.is_ascii_whitespace() => self.pos += 1,
+                Some(b'#') => {
+                    while self.pos < b.len() && b[self.pos] != b'\n' {
+                        self.pos += 1;
+                    }
+                }
+                Some(&c) => {
+                    let line = self.line;
+                    let start = self.pos;
+                    return Ok(Some(match c {
+                        b'[' | b']' => {
+                            self.pos += 1;
+                            Token {
+                                text: &self.src[start..start + 1],
+                                kind: if c == b'[' { Kind::Open } else { Kind::Close },
+                                line,
+                            }
+                        }
+                        b'"' => {
+                            let mut i = start + 1;
+                            while i < b.len() && b[i] != b'"' {
+                                if b[i] == b'\n' {
+                                    return Err((line, "unterminated string".into()));
+                                }
+                                i += 1 + usize::from(b[i] == b'\\');
+                            }
+                            if i >= b.len() {
+                                return Err((line, "unterminated string".into()));
+                            }
+                            self.pos = i + 1;
+                            let text = self.src.get(start + 1..i).ok_or((line, "bad UTF-8 in a string".to_string()))?;
+                            Token { text, kind: Kind::Str, line }
+                        }
+                        _ => {
+                            while self.pos < b.len()
+                                && !b[self.pos].is_ascii_whitespace()
+                                && !matches!(b[self.pos], b'"' | b'[' | b']' | b'#')
+                            {
+                                self.pos += 1;
+                            }
+                            let text = self.src.get(start..self.pos).ok_or((line, "bad UTF-8".to_string()))?;
+                            Token { text, kind: Kind::Word, line }
+                        }
+                    }));
+                }
+            }
+        }
+    }
+}
+
+// ----- parameters -----
+
+/// One parameter of a directive: `"type name" value` or `"type name" [values]`.
+#[derive(Clone, Debug)]
+struct Param {
+    ty: String,
+    name: String,
+    numbers: Vec<f64>,
+    strings: Vec<String>,
+    line: u32,
+}
+
+struct Params {
+    list: Vec<Param>,
+    line: u32,
+}
+
+type Res<T> = Result<T, (u32, String)>;
+
+impl Params {
+    fn get(&self, name: &str) -> Option<&Param> {
+        self.list.iter().rev().find(|p| p.name == name)
+    }
+
+    fn floats(&self, name: &str) -> Option<&[f64]> {
+        self.get(name).map(|p| p.numbers.as_slice())
+    }
+
+    fn float(&self, name: &str, default: f64) -> Res<f64> {
+        match self.get(name) {
+            None => Ok(default),
+            Some(p) => match p.numbers.as_slice() {
+                [v] => Ok(*v),
+                _ => Err((p.line, format!("\"{}\" must be one number", p.name))),
+            },
+        }
+    }
+
+    fn int(&self, name: &str, default: i64) -> Res<i64> {
+        let v = self.float(name, default as f64)?;
+        match v.fract() == 0.0 && v.abs() < 1e15 {
+            true => Ok(v as i64),
+            false => Err((self.get(name).map_or(self.line, |p| p.line), format!("\"{name}\" must be an integer"))),
+        }
+    }
+
+    fn string(&self, name: &str, default: &str) -> Res<String> {
+        match self.get(name) {
+            None => Ok(default.to_string()),
+            Some(p) => match p.strings.as_slice() {
+                [s] => Ok(s.clone()),
+                _ => Err((p.line, format!("\"{}\" must be one string", p.name))),
+            },
+        }
+    }
+
+    fn point3s(&self, name: &str) -> Res<Option<Vec<DVec3>>> {
+        let Some(p) = self.get(name) else { return Ok(None) };
+        if p.numbers.len() % 3 != 0 {
+            return Err((p.line, format!("\"{}\" has {} numbers, not a multiple of 3", p.name, p.numbers.len())));
+        }
+        Ok(Some(p.numbers.chunks(3).map(|c| DVec3::new(c[0], c[1], c[2])).collect()))
+    }
+
+    /// A colour: `rgb` as is; `blackbody`, `spectrum` and named spectra as grey (their
+    /// scale), noted in `warn`.
+    fn color(&self, name: &str, default: Vec3, warn: &mut BTreeSet<String>) -> Res<Vec3> {
+        let Some(p) = self.get(name) else { return Ok(default) };
+        match p.ty.as_str() {
+            "rgb" | "color" => match p.numbers.as_slice() {
+                [r, g, b] => Ok(DVec3::new(*r, *g, *b).as_vec3()),
+                _ => Err((p.line, format!("\"rgb {}\" must be three numbers", p.name))),
+            },
+            "blackbody" => {
+                warn.insert("blackbody spectra are rendered as white".into());
+                Ok(Vec3::ONE)
+            }
+            "spectrum" => {
+                warn.insert("spectra other than rgb are rendered as grey of their mean value".into());
+                let values: Vec<f64> = p.numbers.chunks(2).filter_map(|c| c.get(1).copied()).collect();
+                Ok(Vec3::splat(if values.is_empty() {
+                    1.0
+                } else {
+                    (values.iter().sum::<f64>() / values.len() as f64) as f32
+                }))
+            }
+            "float" => match p.numbers.as_slice() {
+                [v] => Ok(Vec3::splat(*v as f32)),
+                _ => Err((p.line, format!("\"{}\" must be one number", p.name))),
+            },
+            t => Err((p.line, format!("\"{t} {}\" is not a colour", p.name))),
+        }
+    }
+}
+
+// ----- parser -----
+
+#[derive(Clone)]
+struct State {
+    ctm: DMat4,
+    material: usize,
+    reverse: bool,
+}
+
+struct Parser {
+    dir: PathBuf,
+    out: Imported,
+    state: State,
+    stack: Vec<State>,
+    named_coords: HashMap<String, DMat4>,
+    named_materials: HashMap<String, usize>,
+    materials: Vec<Material>,
+    /// Strands by material index, in order of first use.
+    strands: Vec<(usize, StrandSet)>,
+    camera_to_world: Option<DMat4>,
+    fov: f64,
+    warnings: BTreeSet<String>,
+}
+
+impl Parser {
+    fn new(dir: PathBuf) -> Parser {
+        Parser {
+            dir,
+            out: Imported::default(),
+            state: State { ctm: DMat4::IDENTITY, material: 0, reverse: false },
+            stack: Vec::new(),
+            named_coords: HashMap::new(),
+            named_materials: HashMap::new(),
+            // pbrt's default material is diffuse with reflectance 0.5.
+            materials: vec![Material::Diffuse { color: Vec3::splat(0.5) }],
+            strands: Vec::new(),
+            camera_to_world: None,
+            fov: 90.0,
+            warnings: BTreeSet::new(),
+        }
+    }
+
+    fn file(&mut self, text: &str, path: &Path, depth: usize) -> Result<(), LoadError> {
+        let at = |(line, msg): (u32, String)| LoadError::format(path, format!("line {line}: {msg}"));
+        let mut lex = Lexer::new(text);
+        while let Some(t) = lex.next().map_err(at)? {
+            if t.kind != Kind::Word {
+                return Err(at((t.line, format!("expected a directive, found `{}`", t.text))));
+            }
+            if matches!(t.text, "Include" | "Import") {
+                let name = string_arg(&mut lex, t).map_err(at)?;
+                if depth >= MAX_INCLUDE_DEPTH {
+                    return Err(at((t.line, format!("includes nest deeper than {MAX_INCLUDE_DEPTH} (a cycle?)"))));
+                }
+                let child = self.dir.join(&name);
+                let text = read_text(&child)?;
+                self.file(&text, &child, depth + 1)?;
+                continue;
+            }
+            self.directive(&mut lex, t).map_err(at)?;
+        }
+        Ok(())
+    }
+
+    fn directive(&mut self, lex: &mut Lexer, t: Token) -> Res<()> {
+        let line = t.line;
+        match t.text {
+            "Identity" => self.state.ctm = DMat4::IDENTITY,
+            "Translate" => {
+                let v = numbers(lex, 3, t)?;
+                self.apply(DMat4::from_translation(DVec3::new(v[0], v[1], v[2])));
+            }
+            "Scale" => {
+                let v = numbers(lex, 3, t)?;
+                self.apply(DMat4::from_scale(DVec3::new(v[0], v[1], v[2])));
+            }
+            "Rotate" => {
+                let v = numbers(lex, 4, t)?;
+                let axis = DVec3::new(v[1], v[2], v[3])
+                    .try_normalize()
+                    .ok_or((line, "Rotate about a zero axis".to_string()))?;
+                self.apply(DMat4::from_axis_angle(axis, v[0].to_radians()));
+            }
+            "LookAt" => {
+                let v = numbers(lex, 9, t)?;
+                let (eye, look, up) =
+                    (DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]), DVec3::new(v[6], v[7], v[8]));
+                let dir = (look - eye).try_normalize().ok_or((line, "LookAt: eye and target coincide".to_string()))?;
+                let right = up
+                    .normalize_or_zero()
+                    .cross(dir)
+                    .try_normalize()
+                    .ok_or((line, "LookAt: up is parallel to the view".to_string()))?;
+                let new_up = dir.cross(right);
+                // pbrt's LookAt: camera-from-world, camera x = right, y = up, z = forward.
+                let camera_to_world =
+                    DMat4::from_cols(right.extend(0.0), new_up.extend(0.0), dir.extend(0.0), eye.extend(1.0));
+                self.apply(camera_to_world.inverse());
+            }
+            "Transform" | "ConcatTransform" => {
+                let v = numbers(lex, 16, t)?;
+                let m = DMat4::from_cols_slice(&v);
+                if t.text == "Transform" {
+                    self.state.ctm = m;
+                } else {
+                    self.apply(m);
+                }
+            }
+            "CoordinateSystem" => {
+                let name = string_arg(lex, t)?;
+                self.named_coords.insert(name, self.state.ctm);
+            }
+            "CoordSysTransform" => {
+                let name = string_arg(lex, t)?;
+                match self.named_coords.get(&name) {
+                    Some(m) => self.state.ctm = *m,
+                    None => return Err((line, format!("CoordSysTransform \"{name}\": no such coordinate system"))),
+                }
+            }
+            "ReverseOrientation" => self.state.reverse = !self.state.reverse,
+            "AttributeBegin" | "TransformBegin" => {
+                if self.stack.len() > 10_000 {
+                    return Err((line, "AttributeBegin nests too deep".into()));
+                }
+                self.stack.push(self.state.clone());
+            }
+            "AttributeEnd" | "TransformEnd" => {
+                let s = self.stack.pop().ok_or((line, format!("{} without a matching begin", t.text)))?;
+                if t.text == "TransformEnd" {
+                    self.state.ctm = s.ctm;
+                } else {
+                    self.state = s;
+                }
+            }
+            "WorldBegin" => {
+                self.named_coords.insert("world".into(), DMat4::IDENTITY);
+                self.state.ctm = DMat4::IDENTITY;
+            }
+            "WorldEnd" => {}
+            "Camera" => {
+                let (kind, p) = named(lex, t)?;
+                self.named_coords.insert("camera".into(), self.state.ctm.inverse());
+                if self.state.ctm.determinant().abs() < 1e-12 {
+                    return Err((line, "the camera transform is singular".into()));
+                }
+                self.camera_to_world = Some(self.state.ctm.inverse());
+                if kind != "perspective" {
+                    self.warnings.insert(format!("camera \"{kind}\" is rendered as a perspective camera"));
+                }
+                self.fov = p.float("fov", 90.0)?;
+                if !(self.fov > 0.0 && self.fov < 180.0) {
+                    return Err((line, format!("fov {} is not between 0 and 180", self.fov)));
+                }
+            }
+            "Film" => {
+                let (_, p) = named(lex, t)?;
+                let (w, h) = (p.int("xresolution", 1280)?, p.int("yresolution", 720)?);
+                if !(1..=65536).contains(&w) || !(1..=65536).contains(&h) {
+                    return Err((line, format!("resolution {w}x{h} is out of range")));
+                }
+                self.out.resolution = Some([w as u32, h as u32]);
+            }
+            "Sampler" => {
+                let (_, p) = named(lex, t)?;
+                if p.get("pixelsamples").is_some() {
+                    let n = p.int("pixelsamples", 16)?;
+                    self.out.spp = Some(n.clamp(1, 1 << 20) as u32);
+                }
+            }
+            "Integrator" => {
+                let (_, p) = named(lex, t)?;
+                if p.get("maxdepth").is_some() {
+                    self.out.max_depth = Some(p.int("maxdepth", 5)?.clamp(0, 64) as u32);
+                }
+            }
+            "Material" => {
+                let (kind, p) = named(lex, t)?;
+                self.state.material = self.material(&kind, &p)?;
+            }
+            "MakeNamedMaterial" => {
+                let (name, p) = named(lex, t)?;
+                let kind = p.string("type", "")?;
+                let m = self.material(&kind, &p)?;
+                self.named_materials.insert(name, m);
+            }
+            "NamedMaterial" => {
+                let name = string_arg(lex, t)?;
+                self.state.material = *self
+                    .named_materials
+                    .get(&name)
+                    .ok_or((line, format!("NamedMaterial \"{name}\" is not defined")))?;
+            }
+            "LightSource" => {
+                let (kind, p) = named(lex, t)?;
+                self.light(&kind, &p)?;
+            }
+            "Shape" => {
+                let (kind, p) = named(lex, t)?;
+                self.shape(&kind, &p)?;
+            }
+            "ObjectBegin" | "ObjectInstance" | "Texture" | "AreaLightSource" | "MakeNamedMedium" | "PixelFilter"
+            | "Accelerator" | "ColorSpace" | "Option" | "Attribute" | "MediumInterface" => {
+                let _ = rest_params(lex)?;
+                self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
+            }
+            "ObjectEnd" | "TransformTimes" | "ActiveTransform" => {
+                let _ = rest_params(lex)?;
+                self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
+            }
+            other => return Err((line, format!("unknown directive `{other}`"))),
+        }
+        Ok(())
+    }
+
+    fn apply(&mut self, m: DMat4) {
+        self.state.ctm *= m;
+    }
+
+    fn material(&mut self, kind: &str, p: &Params) -> Res<usize> {
+        let w = &mut self.warnings;
+        let m = match kind {
+            "hair" => Material::Physical(hair_material(p, w)?),
+            "diffuse" => Material::Diffuse { color: p.color("reflectance", Vec3::splat(0.5), w)? },
+            "dielectric" | "thindielectric" => {
+                let eta = p.float("eta", 1.5)?;
+                if !(eta.is_finite() && eta >= 1.0) {
+                    return Err((p.line, format!("eta {eta} must be at least 1")));
+                }
+                Material::Glass { ior: eta as f32, color: Vec3::ONE }
+            }
+            "conductor" => Material::Mirror { color: p.color("reflectance", Vec3::splat(0.9), w)? },
+            "" | "none" | "interface" => Material::Diffuse { color: Vec3::splat(0.5) },
+            other => {
+                w.insert(format!("material \"{other}\" is rendered as its diffuse colour"));
+                Material::Diffuse { color: p.color("reflectance", Vec3::splat(0.5), w)? }
+            }
+        };
+        if p.list.iter().any(|q| q.ty == "texture") {
+            self.warnings.insert("textures are not supported: materials use their default values".into());
+        }
+        let finite = |c: Vec3| c.is_finite() && c.min_element() >= 0.0;
+        let ok = match &m {
+            Material::Diffuse { color } | Material::Mirror { color } => finite(*color),
+            _ => true,
+        };
+        if !ok {
+            return Err((p.line, format!("material \"{kind}\": colours must be finite and not negative")));
+        }
+        self.materials.push(m);
+        Ok(self.materials.len() - 1)
+    }
+
+    fn light(&mut self, kind: &str, p: &Params) -> Res<()> {
+        let w = &mut self.warnings;
+        let scale = p.float("scale", 1.0)? as f32;
+        let ctm = self.state.ctm;
+        let point = |name: &str, d: DVec3| -> Res<Vec3> {
+            let v = p.point3s(name)?.and_then(|v| v.first().copied()).unwrap_or(d);
+            Ok(ctm.transform_point3(v).as_vec3())
+        };
+        if p.get("power").is_some() || p.get("illuminance").is_some() {
+            w.insert("light `power` and `illuminance` are ignored: lights use L or I times scale".into());
+        }
+        let light = match kind {
+            "distant" => {
+                let (from, to) = (point("from", DVec3::ZERO)?, point("to", DVec3::Z)?);
+                let direction = (from - to).try_normalize().ok_or((p.line, "distant light: from = to".to_string()))?;
+                Light::Distant { direction, irradiance: p.color("L", Vec3::ONE, w)? * scale }
+            }
+            "infinite" => {
+                if p.get("filename").is_some() {
+                    w.insert(
+                        "image-based infinite lights are rendered as a constant white sky of the same scale".into(),
+                    );
+                }
+                Light::Environment { radiance: p.color("L", Vec3::ONE, w)? * scale }
+            }
+            "point" => {
+                Light::Point { position: point("from", DVec3::ZERO)?, intensity: p.color("I", Vec3::ONE, w)? * scale }
+            }
+            "spot" => {
+                let (from, to) = (point("from", DVec3::ZERO)?, point("to", DVec3::Z)?);
+                let direction = (to - from).try_normalize().ok_or((p.line, "spot light: from = to".to_string()))?;
+                let cone = p.float("coneangle", 30.0)?.clamp(0.0, 180.0);
+                let delta = p.float("conedelta", 5.0)?.clamp(0.0, cone);
+                Light::Spot {
+                    position: from,
+                    direction,
+                    intensity: p.color("I", Vec3::ONE, w)? * scale,
+                    cos_inner: ((cone - delta) as f32).to_radians().cos(),
+                    cos_outer: (cone as f32).to_radians().cos(),
+                }
+            }
+            other => {
+                w.insert(format!("light \"{other}\" is not supported: skipped"));
+                return Ok(());
+            }
+        };
+        let bad = match &light {
+            Light::Distant { irradiance: c, .. }
+            | Light::Environment { radiance: c }
+            | Light::Point { intensity: c, .. }
+            | Light::Spot { intensity: c, .. } => !(c.is_finite() && c.min_element() >= 0.0),
+            _ => false,
+        };
+        if bad {
+            return Err((p.line, format!("light \"{kind}\": its emission must be finite and not negative")));
+        }
+        self.out.lights.push(light);
+        Ok(())
+    }
+
+    fn shape(&mut self, kind: &str, p: &Params) -> Res<()> {
+        let ctm = self.state.ctm;
+        let transform = Affine3A::from_mat4(ctm.as_mat4());
+        if !transform.is_finite() {
+            return Err((p.line, "the shape's transform is not finite".into()));
+        }
+        let material = self.materials[self.state.material].clone();
+        match kind {
+            "curve" => {
+                let strand = curve(p, &ctm)?;
+                let m = self.state.material;
+                let set = match self.strands.iter_mut().find(|(k, _)| *k == m) {
+                    Some((_, s)) => s,
+                    None => {
+                        self.strands.push((m, StrandSet::new()));
+                        &mut self.strands.last_mut().expect("just pushed").1
+                    }
+                };
+                set.push_strand(strand);
+            }
+            "trianglemesh" => {
+                let mesh = triangle_mesh(p)?;
+                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+            }
+            "plymesh" => {
+                let file = p.string("filename", "")?;
+                let path = self.dir.join(&file);
+                let mesh = super::ply::read_ply(&path).map_err(|e| (p.line, e.to_string()))?;
+                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+            }
+            "sphere" => {
+                let r = p.float("radius", 1.0)?;
+                if !(r.is_finite() && r > 0.0) {
+                    return Err((p.line, format!("sphere radius {r} must be positive")));
+                }
+                let mesh = TriangleMesh::sphere(r as f32, 48);
+                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+            }
+            other => {
+                self.warnings.insert(format!("shape \"{other}\" is not supported: skipped"));
+            }
+        }
+        Ok(())
+    }
+
+    fn finish(mut self) -> Result<Imported, LoadError> {
+        for (m, set) in std::mem::take(&mut self.strands) {
+            self.out.hair.push(HairEntry {
+                source: HairSource::Inline(set),
+                material: self.materials[m].clone(),
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: true,
+                lod: None,
+            });
+        }
+        if let Some(c2w) = self.camera_to_world {
+            let eye = c2w.transform_point3(DVec3::ZERO);
+            let forward = c2w.transform_vector3(DVec3::Z).normalize_or(DVec3::Z);
+            let up = c2w.transform_vector3(DVec3::Y).normalize_or(DVec3::Y);
+            let right = c2w.transform_vector3(DVec3::X).normalize_or(DVec3::X);
+            let [w, h] = self.out.resolution.unwrap_or([1280, 720]).map(f64::from);
+            // pbrt's fov spans the shorter image side.
+            let vfov = match w >= h {
+                true => self.fov,
+                false => 2.0 * ((0.5 * self.fov.to_radians()).tan() * h / w).atan().to_degrees(),
+            };
+            self.out.camera = Some(CameraDesc {
+                eye: eye.as_vec3(),
+                target: (eye + forward).as_vec3(),
+                up: up.as_vec3(),
+                vfov: vfov as f32,
+            });
+            // pbrt shows camera +x on the right of the image; a right-handed camera shows
+            // forward × up there. When the two differ, mirror the world about the plane
+            // through the eye spanned by forward and up.
+            if forward.cross(up).dot(right) < 0.0 {
+                let n = right.as_vec3();
+                let mirror = Affine3A::from_translation(eye.as_vec3())
+                    * Affine3A::from_mat3(glam::Mat3::IDENTITY - 2.0 * outer(n, n))
+                    * Affine3A::from_translation(-eye.as_vec3());
+                let camera = self.out.camera.take();
+                self.out.transform(&mirror);
+                self.out.camera = camera;
+            }
+        }
+        self.out.warnings.extend(self.warnings);
+        Ok(self.out)
+    }
+}
+
+fn outer(a: Vec3, b: Vec3) -> glam::Mat3 {
+    glam::Mat3::from_cols(a * b.x, a * b.y, a * b.z)
+}
+
+/// `n` numbers after a directive, bare or in brackets.
+fn numbers(lex: &mut Lexer, n: usize, t: Token) -> Res<Vec<f64>> {
+    let mut out = Vec::with_capacity(n);
+    let bracket = matches!(lex.peek()?, Some(Token { kind: Kind::Open, .. }));
+    if bracket {
+        lex.next()?;
+    }
+    while out.len() < n {
+        match lex.next()? {
+            Some(w @ Token { kind: Kind::Word, .. }) => out.push(parse_number(w)?),
+            Some(o) => return Err((o.line, format!("{}: expected {n} numbers, found `{}`", t.text, o.text))),
+            None => return Err((t.line, format!("{}: expected {n} numbers", t.text))),
+        }
+    }
+    if bracket {
+        match lex.next()? {
+            Some(Token { kind: Kind::Close, .. }) => {}
+            _ => return Err((t.line, format!("{}: expected `]` after {n} numbers", t.text))),
+        }
+    }
+    Ok(out)
+}
+
+fn parse_number(w: Token) -> Res<f64> {
+    w.text.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or((w.line, format!("`{}` is not a finite number", w.text)))
+}
+
+fn string_arg(lex: &mut Lexer, t: Token) -> Res<String> {
+    match lex.next()? {
+        Some(s @ Token { kind: Kind::Str, .. }) => Ok(s.text.to_string()),
+        _ => Err((t.line, format!("{} needs a quoted name", t.text))),
+    }
+}
+
+/// A directive's quoted name and its parameter list.
+fn named(lex: &mut Lexer, t: Token) -> Res<(String, Params)> {
+    let name = string_arg(lex, t)?;
+    let mut p = rest_params(lex)?;
+    p.line = t.line;
+    Ok((name, p))
+}
+
+/// Parameters up to the next directive.
+fn rest_params(lex: &mut Lexer) -> Res<Params> {
+    let mut list = Vec::new();
+    let mut line = 0;
+    loop {
+        let decl = match lex.peek()? {
+            Some(d @ Token { kind: Kind::Str, .. }) => d,
+            Some(Token { kind: Kind::Word, text, line: l })
+                if !text.starts_with(|c: char| c.is_ascii_alphabetic()) || text == "true" || text == "false" =>
+            {
+                return Err((l, format!("`{text}` outside a parameter list")))
+            }
+            _ => break,
+        };
+        lex.next()?;
+        line = decl.line;
+        let mut parts = decl.text.split_whitespace();
+        let (ty, name) = match (parts.next(), parts.next(), parts.next()) {
+            (Some(ty), Some(name), None) => (ty.to_string(), name.to_string()),
+            _ => {
+                // A lone string here is a stray positional argument (e.g. Texture's class).
+                list.push(Param {
+                    ty: String::new(),
+                    name: decl.text.to_string(),
+                    numbers: vec![],
+                    strings: vec![],
+                    line,
+                });
+                continue;
+            }
+        };
+        let mut p = Param { ty, name, numbers: Vec::new(), strings: Vec::new(), line };
+        let value = |tok: Token, p: &mut Param| -> Res<()> {
+            match tok.kind {
+                Kind::Str => p.strings.push(tok.text.to_string()),
+                Kind::Word if tok.text == "true" || tok.text == "false" => p.strings.push(tok.text.to_string()),
+                Kind::Word => p.numbers.push(parse_number(tok)?),
+                _ => return Err((tok.line, format!("unexpected `{}`", tok.text))),
+            }
+            Ok(())
+        };
+        match lex.next()? {
+            Some(Token { kind: Kind::Open, .. }) => loop {
+                match lex.next()? {
+                    Some(Token { kind: Kind::Close, .. }) => break,
+                    Some(tok) => value(tok, &mut p)?,
+                    None => return Err((line, format!("\"{}\": `[` is never closed", decl.text))),
+                }
+            },
+            Some(tok) => value(tok, &mut p)?,
+            None => return Err((line, format!("\"{}\" has no value", decl.text))),
+        }
+        list.push(p);
+    }
+    Ok(Params { list, line })
+}
+
+// ----- shapes -----
+
+/// A curve's strand in world space: (position, radius) points.
+fn curve(p: &Params, ctm: &DMat4) -> Res<Vec<(Vec3, f32)>> {
+    let cps = p.point3s("P")?.ok_or((p.line, "curve without \"point3 P\"".to_string()))?;
+    let degree = p.int("degree", 3)?;
+    let basis = p.string("basis", "bezier")?;
+    let split = p.int("splitdepth", 3)?.clamp(0, MAX_SPLIT_DEPTH as i64) as u32;
+    let pieces = 1usize << split;
+    let width = p.float("width", 1.0)?;
+    let (w0, w1) = (p.float("width0", width)?, p.float("width1", width)?);
+    if !(w0.is_finite() && w1.is_finite() && w0 >= 0.0 && w1 >= 0.0) {
+        return Err((p.line, format!("curve widths {w0} and {w1} must be finite and not negative")));
+    }
+    let n = cps.len();
+    // Every segment as a cubic with its basis (quadratics raised to cubic Béziers).
+    let segments: Vec<(CubicBasis, [DVec3; 4])> = match (basis.as_str(), degree) {
+        ("bezier", 3) if n >= 4 && (n - 1) % 3 == 0 => (0..(n - 1) / 3)
+            .map(|s| (CubicBasis::Bezier, [cps[3 * s], cps[3 * s + 1], cps[3 * s + 2], cps[3 * s + 3]]))
+            .collect(),
+        ("bezier", 2) if n >= 3 && (n - 1) % 2 == 0 => {
+            (0..(n - 1) / 2).map(|s| (CubicBasis::Bezier, raise(cps[2 * s], cps[2 * s + 1], cps[2 * s + 2]))).collect()
+        }
+        ("bspline", 3) if n >= 4 => {
+            (0..n - 3).map(|s| (CubicBasis::BSpline, [cps[s], cps[s + 1], cps[s + 2], cps[s + 3]])).collect()
+        }
+        // A uniform quadratic B-spline segment is the quadratic Bézier from the midpoints of
+        // its control polygon's legs through its middle point.
+        ("bspline", 2) if n >= 3 => (0..n - 2)
+            .map(|s| {
+                (CubicBasis::Bezier, raise(0.5 * (cps[s] + cps[s + 1]), cps[s + 1], 0.5 * (cps[s + 1] + cps[s + 2])))
+            })
+            .collect(),
+        ("bezier" | "bspline", 2 | 3) => {
+            return Err((p.line, format!("a degree-{degree} {basis} curve cannot have {n} control points")))
+        }
+        (b, d) => {
+            return Err((
+                p.line,
+                format!("curve basis \"{b}\" of degree {d} is not supported (bezier or bspline, 2 or 3)"),
+            ))
+        }
+    };
+    let scale = ctm.determinant().abs().cbrt();
+    let total = (segments.len() * pieces) as f64;
+    let mut out = Vec::with_capacity(segments.len() * pieces + 1);
+    for (s, (b, c)) in segments.iter().enumerate() {
+        let c = c.map(|q| ctm.transform_point3(q).as_vec3());
+        for k in usize::from(s > 0)..=pieces {
+            let u = (s * pieces + k) as f64 / total;
+            let radius = 0.5 * (w0 + (w1 - w0) * u) * scale;
+            out.push((cubic_point(*b, c, k as f32 / pieces as f32), radius as f32));
+        }
+    }
+    if out.iter().any(|(q, r)| !q.is_finite() || !r.is_finite()) {
+        return Err((p.line, "curve points must be finite".into()));
+    }
+    Ok(out)
+}
+
+/// The cubic Bézier control points of a quadratic Bézier (degree elevation).
+fn raise(a: DVec3, b: DVec3, c: DVec3) -> [DVec3; 4] {
+    [a, a + (b - a) * (2.0 / 3.0), c + (b - c) * (2.0 / 3.0), c]
+}
+
+fn triangle_mesh(p: &Params) -> Res<TriangleMesh> {
+    let positions = p.point3s("P")?.ok_or((p.line, "trianglemesh without \"point3 P\"".to_string()))?;
+    let n = positions.len();
+    let indices: Vec<f64> = match p.floats("indices") {
+        Some(i) => i.to_vec(),
+        None if n == 3 => vec![0.0, 1.0, 2.0],
+        None => return Err((p.line, "trianglemesh without \"integer indices\" (only 3 points may omit them)".into())),
+    };
+    if !indices.len().is_multiple_of(3) {
+        return Err((p.line, format!("{} indices is not a multiple of 3", indices.len())));
+    }
+    let mut tris = Vec::with_capacity(indices.len() / 3);
+    for c in indices.chunks(3) {
+        let mut t = [0u32; 3];
+        for k in 0..3 {
+            if !(c[k] >= 0.0 && c[k].fract() == 0.0 && (c[k] as usize) < n) {
+                return Err((p.line, format!("index {} is not one of the {n} points", c[k])));
+            }
+            t[k] = c[k] as u32;
+        }
+        tris.push(t);
+    }
+    let normals = match p.point3s("N")? {
+        Some(v) if v.len() == n => Some(v.iter().map(|q| q.as_vec3()).collect()),
+        Some(v) => return Err((p.line, format!("{} normals for {n} points", v.len()))),
+        None => None,
+    };
+    let uvs = match p.floats("uv").or_else(|| p.floats("st")) {
+        Some(v) if v.len() == 2 * n => Some(v.chunks(2).map(|c| [c[0] as f32, c[1] as f32]).collect()),
+        Some(v) => return Err((p.line, format!("{} uv numbers for {n} points", v.len()))),
+        None => None,
+    };
+    let mesh = TriangleMesh { positions: positions.iter().map(|q| q.as_vec3()).collect(), normals, uvs, indices: tris };
+    mesh.validate().map_err(|e| (p.line, format!("trianglemesh: {e}")))?;
+    Ok(mesh)
+}
+
+// ----- hair material -----
+
+/// The physical hair material standing in for pbrt's `hair` (see the module documentation).
+fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
+    let defaults = HairParams::default();
+    let beta = |name: &str, d: f32| -> Res<f32> {
+        let v = p.float(name, d as f64)?;
+        match (0.0..=1.0).contains(&v) {
+            // pbrt allows 0; tress's model needs a little roughness.
+            true => Ok((v as f32).max(1e-3)),
+            false => Err((p.get(name).map_or(p.line, |q| q.line), format!("{name} {v} must be between 0 and 1"))),
+        }
+    };
+    let (beta_m, beta_n) = (beta("beta_m", defaults.beta_m)?, beta("beta_n", defaults.beta_n)?);
+    let absorption = if p.get("sigma_a").is_some() {
+        let s = p.color("sigma_a", Vec3::ZERO, w)?;
+        // Chiang et al. 2016 §4.2 inverted: C = exp(−sqrt(σ_a) · poly(β_n)).
+        let k = color_polynomial(beta_n);
+        let c = Vec3::from_array(s.to_array().map(|x| (-(x.max(0.0)).sqrt() * k).exp()));
+        if c.min_element() < 1e-4 {
+            w.insert("sigma_a beyond what a colour can carry (very dark hair) is clamped".into());
+        }
+        Absorption::Color(c.clamp(Vec3::ZERO, Vec3::ONE))
+    } else if p.get("reflectance").is_some() {
+        Absorption::Color(p.color("reflectance", Vec3::splat(0.5), w)?.clamp(Vec3::ZERO, Vec3::ONE))
+    } else {
+        let melanin = |name: &str, d: f64| -> Res<f32> { Ok(p.float(name, d)? as f32) };
+        let given = p.get("eumelanin").is_some() || p.get("pheomelanin").is_some();
+        Absorption::Melanin {
+            eumelanin: melanin("eumelanin", if given { 0.0 } else { 1.3 })?,
+            pheomelanin: melanin("pheomelanin", 0.0)?,
+        }
+    };
+    let params = HairParams {
+        absorption,
+        beta_m,
+        beta_n,
+        alpha_degrees: p.float("alpha", defaults.alpha_degrees as f64)? as f32,
+        eta: p.float("eta", defaults.eta as f64)? as f32,
+    };
+    params.validate().map_err(|e| (p.line, format!("hair material: {e}")))?;
+    Ok(PhysicalHair::new(params))
+}
+
+#[cfg(test)]
+mod tests;

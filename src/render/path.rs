@@ -1,0 +1,175 @@
+//! Unidirectional path tracing for reference images (Veach 1997; Pharr et al., PBR 4th ed.
+//! ch. 13): next-event estimation at every vertex, multiple importance sampling (power
+//! heuristic, Veach & Guibas 1995) between light sampling and material sampling for lights
+//! a ray can hit (quad, sphere, sun), the physical hair BSDF's own sampling on hair, and
+//! Russian roulette once a path's throughput falls below 1.
+//!
+//! The environment is reached by material sampling only (it is constant, so cosine- or
+//! BSDF-weighted directions already sample it well). Semi-transparent hair is crossed
+//! stochastically: a ray stops at a partial hit with probability equal to its opacity
+//! (unbiased; shadow rays use the exact transmittance). The tube model has no physical
+//! meaning for paths: its ambient term is dropped and its response sampled uniformly.
+//!
+//! `max_depth` counts scattering vertices after the first: with 0, the camera hit's direct
+//! light only (the direct integrator's image); with 1, one bounce of indirect light.
+
+use super::direct::{departure, surface_at, Counters, FirstHit};
+use crate::accel::{Hit, HitKind, LayerHit, Shape};
+use crate::light::Light;
+use crate::math::rng::PixelSampler;
+use crate::math::{Color, Ray};
+use crate::scene::World;
+
+/// Veach's power heuristic (beta = 2) for one sample of each of two strategies.
+fn power_heuristic(pdf: f32, other: f32) -> f32 {
+    let (a, b) = (pdf * pdf, other * other);
+    if a + b > 0.0 && (a + b).is_finite() {
+        a / (a + b)
+    } else if pdf.is_infinite() {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+/// True for lights a material-sampled ray can hit, which MIS weighs.
+fn hittable(light: &Light) -> bool {
+    matches!(light, Light::Quad { .. } | Light::Sphere { .. } | Light::Sun { .. })
+}
+
+/// The hit a path stops at: the nearest opaque hit, or a partial one chosen with
+/// probability equal to its opacity, front to back.
+fn next_hit(
+    world: &World,
+    ray: &Ray,
+    sampler: &mut PixelSampler,
+    layers: &mut Vec<LayerHit>,
+    seen: &mut Vec<LayerHit>,
+) -> Option<Hit> {
+    if !world.accel.has_transparency() {
+        return world.accel.intersect(ray);
+    }
+    let k = world.settings.transparency_layers as usize;
+    seen.clear();
+    let mut tmin = 0.0;
+    loop {
+        world.accel.intersect_k(ray, tmin, k, seen, layers);
+        for l in layers.iter() {
+            if l.opacity >= 1.0 || sampler.next_1d() < l.opacity {
+                return Some(l.hit);
+            }
+        }
+        if layers.len() < k {
+            return None;
+        }
+        tmin = layers[k - 1].hit.t;
+        seen.extend_from_slice(layers);
+    }
+}
+
+/// Radiance along a camera ray by path tracing, and the first hit for AOVs.
+pub fn trace(
+    world: &World,
+    ray: &Ray,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+) -> (Color, Option<FirstHit>) {
+    let (mut layers, mut seen) = (Vec::new(), Vec::new());
+    let mut ray = *ray;
+    let (mut radiance, mut beta) = (Color::ZERO, Color::ONE);
+    let mut first = None;
+    // Density of the material sample that made `ray`; `None` for camera and specular rays,
+    // whose emitters light sampling cannot find.
+    let mut scatter_pdf: Option<f32> = None;
+    let mut vertex = 0u32;
+    loop {
+        counters.rays += 1;
+        let hit = next_hit(world, &ray, sampler, &mut layers, &mut seen);
+        let t_hit = hit.map_or(ray.tmax, |h| h.t);
+        let seen_light = world
+            .lights
+            .iter()
+            .filter_map(|l| l.emitted(ray.origin, ray.dir, t_hit).map(|(t, le)| (t, le, l)))
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((_, le, light)) = seen_light {
+            let w = scatter_pdf.map_or(1.0, |pdf| power_heuristic(pdf, light.pdf(ray.origin, ray.dir)));
+            radiance += beta * le * w;
+            if hit.is_none() {
+                // The sun is a disk in the sky: the environment shines there too.
+                radiance += beta * world.background;
+            }
+            break;
+        }
+        let Some(hit) = hit else {
+            radiance += beta * world.background;
+            break;
+        };
+        if vertex > world.settings.max_depth {
+            break;
+        }
+        let object = &world.accel.objects[hit.object as usize];
+        let material = &world.materials[object.material as usize];
+        let surface = surface_at(object, &hit, &ray);
+        let sp = &surface.sp;
+        let wo = -ray.dir;
+        let tube = material.shades_whole_circle();
+        if vertex == 0 {
+            first = Some(FirstHit {
+                t: hit.t,
+                normal: sp.tangent.unwrap_or(sp.normal),
+                object: hit.object,
+                strand: match &object.shape {
+                    Shape::Strands(s) => Some(s.strand_of(hit.prim)),
+                    Shape::Mesh(_) => None,
+                },
+                strand_point: match (&object.shape, hit.kind) {
+                    (Shape::Strands(s), HitKind::Segment { s: along, .. }) => Some(s.strand_point(hit.prim, along)),
+                    _ => None,
+                },
+                lod_level: matches!(object.shape, Shape::Strands(_)).then_some(hit.level),
+            });
+        }
+
+        // Next-event estimation: one sample of every light but the environment.
+        for light in world.lights.iter().filter(|l| l.background() == Color::ZERO) {
+            let Some(ls) = light.sample(sp.p, Some(sp.normal), sampler.next_2d()) else { continue };
+            let f = material.response(sp, wo, ls.dir);
+            if f.max_element() <= 0.0 {
+                continue;
+            }
+            let d = departure(&surface, &hit, ls.dir, tube);
+            counters.rays += 1;
+            let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
+            let cone = ray.cone.propagate(hit.t, 0.0);
+            let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone);
+            if transmitted > 0.0 {
+                let w = if hittable(light) {
+                    power_heuristic(light.pdf(sp.p, ls.dir), material.scatter_pdf(sp, wo, ls.dir))
+                } else {
+                    1.0
+                };
+                radiance += beta * f * ls.value * (transmitted * w);
+            }
+        }
+
+        let Some(s) = material.sample_scatter(sp, wo, sampler) else { break };
+        beta *= s.weight;
+        scatter_pdf = (!s.is_specular()).then_some(s.pdf);
+        // Russian roulette (PBR 4th ed. 13.1.1): paths that carry little go on rarely,
+        // with their weight raised to keep the estimate unbiased.
+        let max = beta.max_element();
+        if vertex >= 2 && max < 1.0 {
+            let q = (1.0 - max).max(0.0);
+            if sampler.next_1d() < q {
+                break;
+            }
+            beta /= 1.0 - q;
+        }
+        let d = departure(&surface, &hit, s.dir, tube);
+        let mut next = Ray::new(d.origin, s.dir);
+        next.cone = ray.cone.scattered(hit.t, s.pdf, 1);
+        ray = next;
+        vertex += 1;
+    }
+    (radiance, first)
+}

@@ -1,0 +1,177 @@
+//! Other tools' scenes end to end: a pbrt-v4 curve scene renders with its curves where
+//! their control points project; the example scenes of every format render; export to
+//! `.hair` and `.usda` and import back keep points and widths; `[[import]]` entries and
+//! the command line on bad foreign files.
+
+use glam::Vec3;
+use std::path::Path;
+use std::process::Command;
+use tress::geometry::StrandSet;
+use tress::io::imported::read_imported;
+use tress::scene::{prepare, Description, HairSource};
+
+fn render(desc: &Description) -> tress::film::Film {
+    let (world, _) = prepare(desc).unwrap();
+    tress::render::render(&world, None).0
+}
+
+/// Where a world point lands on the image, in pixels (a pinhole camera as tress's).
+fn project(desc: &Description, p: Vec3) -> (f32, f32) {
+    let c = &desc.camera;
+    let forward = (c.target - c.eye).normalize();
+    let right = forward.cross(c.up).normalize();
+    let up = right.cross(forward);
+    let d = p - c.eye;
+    let half = (0.5 * c.vfov.to_radians()).tan();
+    let (w, h) = (desc.settings.width as f32, desc.settings.height as f32);
+    let x = d.dot(right) / d.dot(forward) / (half * w / h);
+    let y = d.dot(up) / d.dot(forward) / half;
+    ((x + 1.0) * 0.5 * w, (1.0 - y) * 0.5 * h)
+}
+
+#[test]
+fn a_pbrt_curve_scene_renders_its_curves_over_their_control_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("curves.pbrt");
+    // Two thick curves: a straight Bézier at x = 0.5 and a bent B-spline at x = −0.6.
+    std::fs::write(
+        &path,
+        "LookAt 0 0 4  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 40\n\
+         Film \"rgb\" \"integer xresolution\" 96 \"integer yresolution\" 72\nSampler \"zsobol\" \"integer pixelsamples\" 2\n\
+         WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n\
+         Material \"hair\" \"rgb reflectance\" [0.8 0.5 0.2]\n\
+         Shape \"curve\" \"point3 P\" [0.5 -1 0  0.5 -0.3 0  0.5 0.3 0  0.5 1 0] \"float width\" 0.12\n\
+         Shape \"curve\" \"string basis\" \"bspline\" \"point3 P\" [-0.6 -1.2 0  -0.6 -0.6 0  -0.2 0 0  -0.6 0.6 0  -0.6 1.2 0] \"float width\" 0.12\n",
+    )
+    .unwrap();
+    let (desc, _) = read_imported(&path).unwrap().into_description();
+    let film = render(&desc);
+    let HairSource::Inline(set) = &desc.hair[0].source else { panic!() };
+    let m = desc.hair[0].transform;
+    // Every sampled point of both curves (a control-point curve, mirrored like pbrt's
+    // image) is covered by hair in the image.
+    let hair_at = |x: f32, y: f32| {
+        let (x, y) = (x.round() as i64, y.round() as i64);
+        (-1..=1).any(|dx| {
+            (-1..=1).any(|dy| {
+                let (px, py) = (x + dx, y + dy);
+                px >= 0 && py >= 0 && px < 96 && py < 72 && film.pixels[(py * 96 + px) as usize].strand_id >= 0.0
+            })
+        })
+    };
+    for p in &set.points {
+        let (x, y) = project(&desc, m.transform_point3(Vec3::new(p[0], p[1], p[2])));
+        if (0.0..96.0).contains(&x) && (0.0..72.0).contains(&y) {
+            assert!(hair_at(x, y), "no hair at ({x}, {y})");
+        }
+    }
+    // The straight curve's x = 0.5 shows on the image's left (pbrt's handedness), the bent
+    // one's bulge at x = −0.2 right of its ends.
+    let (x_straight, _) = project(&desc, m.transform_point3(Vec3::new(0.5, 0.0, 0.0)));
+    assert!(x_straight < 48.0, "{x_straight}");
+    // Background far from both curves.
+    assert!(film.pixels[36 * 96 + 48].strand_id < 0.0);
+    assert!(film.pixels.iter().filter(|p| p.strand_id >= 0.0).count() > 100);
+}
+
+#[test]
+fn the_example_scenes_of_every_format_render() {
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    for name in ["maya_hair.ma", "pbrt_hair.pbrt", "usd_hair.usda"] {
+        let (mut desc, _) = read_imported(&scenes.join(name)).unwrap().into_description();
+        desc.settings.width = 48;
+        desc.settings.height = 36;
+        desc.settings.spp = 1;
+        let film = render(&desc);
+        let hair = film.pixels.iter().filter(|p| p.strand_id >= 0.0).count();
+        let lit = film.pixels.iter().filter(|p| p.color.max_element() > 0.02).count();
+        assert!(hair > 20 && lit > 200, "{name}: {hair} hair pixels, {lit} lit pixels");
+    }
+}
+
+fn tress(args: &[&str], dir: &Path) -> (bool, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_tress")).args(args).current_dir(dir).output().unwrap();
+    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+fn strands_of(desc: &Description) -> StrandSet {
+    let mut all = StrandSet::new();
+    for (shape, _) in tress::scene::load_geometry(desc).unwrap().shapes {
+        if let tress::accel::Shape::Strands(s) = shape {
+            all.append(&s);
+        }
+    }
+    all
+}
+
+#[test]
+fn export_to_hair_and_usda_round_trips_points_and_widths() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let src = scenes.join("maya_hair.ma");
+    let (ok, err) = tress(&["export", src.to_str().unwrap(), "-o", "out.hair"], d);
+    assert!(ok, "{err}");
+    let (ok, err) = tress(&["export", src.to_str().unwrap(), "-o", "out.usda"], d);
+    assert!(ok, "{err}");
+    // The render strands after hair-system expansion.
+    let (desc, _) = read_imported(&src).unwrap().into_description();
+    let want = strands_of(&desc);
+    assert!(want.strand_count() > 1000);
+    let hair = tress::io::hair::read_hair(&d.join("out.hair")).unwrap();
+    assert_eq!((hair.offsets.clone(), hair.points.clone()), (want.offsets.clone(), want.points.clone()));
+    let (back, _) = read_imported(&d.join("out.usda")).unwrap().into_description();
+    let usd = strands_of(&back);
+    assert_eq!(usd.offsets, want.offsets);
+    assert_eq!(usd.points, want.points);
+    assert_eq!(usd.colors, want.colors);
+    // Meshes come along in the USD file.
+    assert_eq!(back.meshes.len(), desc.meshes.len());
+}
+
+#[test]
+fn toml_scenes_import_other_formats() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    std::fs::copy(scenes.join("usd_hair.usda"), d.join("grass.usda")).unwrap();
+    let toml = "[camera]\neye = [0, 2, 5]\ntarget = [0, 0, 0]\n[render]\nresolution = [32, 24]\nspp = 1\n\
+                [[light]]\ntype = \"distant\"\ndirection = [0, 1, 0]\nirradiance = [1, 1, 1]\n\
+                [[mesh]]\nshape = { type = \"sphere\" }\nmaterial = { type = \"diffuse\", color = [0.5, 0.5, 0.5] }\n\
+                [[import]]\nfile = \"grass.usda\"\ntransform = { translate = [0, 10, 0] }\n";
+    std::fs::write(d.join("scene.toml"), toml).unwrap();
+    let (desc, _) = tress::io::scene_file::read_scene_with_warnings(&d.join("scene.toml")).unwrap();
+    // The scene's own mesh stays first; the import adds a mesh and two strand sets, moved.
+    assert_eq!((desc.meshes.len(), desc.hair.len(), desc.lights.len()), (2, 2, 1));
+    assert_eq!(desc.meshes[1].transform.transform_point3(Vec3::ZERO), Vec3::new(0.0, 10.0, 0.0));
+    let with_lights = toml.replace("translate = [0, 10, 0] }", "translate = [0, 10, 0] }\nlights = true");
+    std::fs::write(d.join("lit.toml"), with_lights).unwrap();
+    let (desc, _) = tress::io::scene_file::read_scene_with_warnings(&d.join("lit.toml")).unwrap();
+    assert_eq!(desc.lights.len(), 3);
+    // A broken import names the scene entry and the imported file's line.
+    std::fs::write(d.join("bad.ma"), "createNode mesh;\nsetAttr \".vt[0:1]\" 1 2;\n").unwrap();
+    std::fs::write(d.join("bad.toml"), toml.replace("grass.usda", "bad.ma")).unwrap();
+    let e = tress::io::scene_file::read_scene(&d.join("bad.toml")).unwrap_err().to_string();
+    assert!(e.contains("import 1") && e.contains("bad.ma") && e.contains("line 2"), "{e}");
+}
+
+#[test]
+fn the_command_line_reports_bad_foreign_files_without_panicking() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (name, text, needles) in [
+        ("a.ma", "createNode transform -n t;\nsetAttr \".t\" -type \"double3\" 1 x 3;\n", &["a.ma", "line 2"][..]),
+        ("b.pbrt", "WorldBegin\nShape \"curve\" \"point3 P\" [0 0 0]\n", &["b.pbrt", "line 2"]),
+        ("c.usda", "#usda 1.0\ndef Xform \"A\" {\n  float3 x = (1, 2\n}\n", &["c.usda"]),
+        ("d.usda", "not usd", &["d.usda", "#usda"]),
+    ] {
+        std::fs::write(d.join(name), text).unwrap();
+        let (ok, err) = tress(&["render", name, "-o", "x.png", "--quiet"], d);
+        assert!(!ok && !err.contains("panicked"), "{name}: {err}");
+        for n in needles {
+            assert!(err.contains(n), "{name}: stderr lacks `{n}`: {err}");
+        }
+    }
+    let (ok, err) = tress(&["export", "-o", "x.obj", "--demo-strands", "10"], d);
+    assert!(!ok && err.contains(".usda"), "{err}");
+}

@@ -1,0 +1,310 @@
+//! Light transport end to end: the path tracer in a white furnace, the final gather
+//! against the path tracer's one-bounce result, the path tracer against the direct
+//! integrator where only direct light exists, shadows through hair of known opacity,
+//! fast multi-hit transparency against re-tracing after every hit, adaptive sampling on
+//! edges, and the same image for any thread count with every integrator.
+
+use glam::{Affine3A, Vec3};
+use tress::film::Film;
+use tress::geometry::{StrandSet, TriangleMesh};
+use tress::light::Light;
+use tress::math::Color;
+use tress::scene::{
+    prepare, Adaptive, CameraDesc, Description, HairEntry, HairSource, Integrator, MeshEntry, MeshSource,
+    RenderSettings,
+};
+use tress::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
+use tress::shading::Material;
+
+fn render(desc: &Description, threads: usize) -> Film {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+    pool.install(|| {
+        let (world, _) = prepare(desc).unwrap();
+        tress::render::render(&world, None).0
+    })
+}
+
+fn mean(film: &Film) -> Vec3 {
+    film.pixels.iter().map(|p| p.color).sum::<Vec3>() / film.pixels.len() as f32
+}
+
+fn mesh(mesh: TriangleMesh, material: Material, transform: Affine3A) -> MeshEntry {
+    MeshEntry { source: MeshSource::Inline(mesh), material, transform }
+}
+
+fn hair(strands: StrandSet, material: Material) -> HairEntry {
+    HairEntry {
+        source: HairSource::Inline(strands),
+        material,
+        transform: Affine3A::IDENTITY,
+        radius_scale: 1.0,
+        file_colors: true,
+        lod: None,
+    }
+}
+
+fn settings(width: u32, height: u32, spp: u32, max_depth: u32, integrator: Integrator) -> RenderSettings {
+    RenderSettings { width, height, spp, max_depth, integrator, ..Default::default() }
+}
+
+/// A ball of random white strands (no absorption): light scatters many times inside it.
+fn hair_ball(count: u32) -> StrandSet {
+    let mut s = StrandSet::new();
+    for i in 0..count {
+        let h = |k: u32| tress::math::rng::unit_float(tress::math::rng::hash_combine(&[i, k]));
+        let a = tress::math::sampling::uniform_sphere(h(0), h(1)) * 0.6;
+        let b = tress::math::sampling::uniform_sphere(h(2), h(3)) * 0.6;
+        s.push_strand([(a, 0.01), (a.lerp(b, 0.5) + Vec3::splat(0.05), 0.01), (b, 0.01)]);
+    }
+    s
+}
+
+fn white_hair() -> Material {
+    Material::Physical(PhysicalHair::new(HairParams {
+        absorption: Absorption::Color(Color::ONE),
+        beta_m: 0.3,
+        beta_n: 0.3,
+        ..Default::default()
+    }))
+}
+
+#[test]
+fn path_tracer_white_furnace() {
+    // Diffuse albedo 1 sphere and a ball of non-absorbing hair in a uniform environment of
+    // radiance 1: every pixel's expected value is 1.
+    let desc = Description {
+        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+        settings: settings(24, 24, 64, 64, Integrator::Path),
+        lights: vec![Light::Environment { radiance: Color::ONE }],
+        meshes: vec![mesh(
+            TriangleMesh::sphere(0.5, 48),
+            Material::Diffuse { color: Color::ONE },
+            Affine3A::from_translation(Vec3::new(-0.7, 0.0, 0.0)),
+        )],
+        hair: vec![hair(
+            {
+                let mut b = hair_ball(300);
+                b.transform(&Affine3A::from_translation(Vec3::new(0.7, 0.0, 0.0)));
+                b
+            },
+            white_hair(),
+        )],
+        ..Default::default()
+    };
+    let film = render(&desc, 2);
+    let hair_pixels: Vec<f32> = film.pixels.iter().filter(|p| p.strand_id >= 0.0).map(|p| p.color.x).collect();
+    assert!(hair_pixels.len() > 20, "the hair ball is seen: {}", hair_pixels.len());
+    let m = mean(&film);
+    println!(
+        "furnace: image mean {m}, hair pixels' mean {}",
+        hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32
+    );
+    assert!((m - Vec3::ONE).abs().max_element() < 0.01, "image mean {m}");
+    let hm = hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32;
+    assert!((hm - 1.0).abs() < 0.01, "hair mean {hm}");
+    // The sphere alone is exact for every sample (cosine sampling of an albedo-1 Lambertian).
+    for p in film.pixels.iter().filter(|p| p.object_id == 0.0 && p.coverage == 1.0) {
+        assert!((p.color - Vec3::ONE).abs().max_element() < 1e-4, "{}", p.color);
+    }
+}
+
+/// A diffuse ground and sphere under a quad light, a sphere light and the sun.
+fn lit_scene(integrator: Integrator, spp: u32, max_depth: u32, environment: bool) -> Description {
+    let mut lights = vec![
+        Light::Quad {
+            corner: Vec3::new(-0.5, 2.0, -0.5),
+            edge_u: Vec3::new(1.0, 0.0, 0.0),
+            edge_v: Vec3::new(0.0, 0.0, 1.0),
+            radiance: Color::splat(4.0),
+        },
+        Light::Sphere { center: Vec3::new(1.5, 1.0, 1.0), radius: 0.3, radiance: Color::new(3.0, 2.0, 1.0) },
+        Light::distant(Vec3::new(-0.5, 1.0, 0.3).normalize(), Color::splat(1.0), 0.1),
+    ];
+    if environment {
+        lights.push(Light::Environment { radiance: Color::splat(0.3) });
+    }
+    Description {
+        camera: CameraDesc { eye: Vec3::new(0.0, 1.5, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+        settings: RenderSettings { gather_rays: 4, ..settings(32, 24, spp, max_depth, integrator) },
+        lights,
+        meshes: vec![
+            mesh(TriangleMesh::plane(8.0), Material::Diffuse { color: Color::splat(0.9) }, Affine3A::IDENTITY),
+            mesh(
+                TriangleMesh::sphere(0.6, 32),
+                Material::Diffuse { color: Color::new(0.8, 0.5, 0.3) },
+                Affine3A::from_translation(Vec3::new(0.0, 0.6, 0.0)),
+            ),
+        ],
+        hair: vec![],
+        ..Default::default()
+    }
+}
+
+#[test]
+fn path_tracer_with_mis_agrees_with_direct_lighting() {
+    // max_depth 0: the path tracer computes direct light only, combining light and
+    // material samples; the direct integrator samples the lights alone.
+    let direct = mean(&render(&lit_scene(Integrator::Direct, 256, 0, false), 2));
+    let path = mean(&render(&lit_scene(Integrator::Path, 256, 0, false), 2));
+    println!("direct {direct}, path {path}");
+    assert!(((path - direct) / direct).abs().max_element() < 0.02, "direct {direct}, path {path}");
+}
+
+#[test]
+fn final_gather_converges_to_one_bounce_path_tracing() {
+    // No environment: the direct integrator (and so the final gather) lets the
+    // environment shine through area lights, which the path tracer does not.
+    let fg = mean(&render(&lit_scene(Integrator::FinalGather, 64, 5, false), 2));
+    let path = mean(&render(&lit_scene(Integrator::Path, 512, 1, false), 2));
+    let direct = mean(&render(&lit_scene(Integrator::Direct, 64, 5, false), 2));
+    println!("final gather {fg}, path one bounce {path}, direct {direct}");
+    assert!(((fg - path) / path).abs().max_element() < 0.004, "final gather {fg}, path {path}");
+    // The gathered bounce is a real contribution, several times the tolerance.
+    let gathered = (fg - direct).element_sum() / direct.element_sum();
+    assert!(gathered > 0.02, "final gather {fg}, direct {direct}");
+}
+
+/// Horizontal strands side by side at height 1 over -2 < z < 0, `layers` crossed layers of
+/// them, each of opacity `a`; a diffuse ground; the sun straight above.
+fn shadow_scene(layers: u32, a: f32, integrator: Integrator) -> Description {
+    let mut strands = StrandSet::new();
+    let r = 0.01;
+    for layer in 0..layers {
+        let y = 1.0 + 3.0 * r * layer as f32;
+        // Strands touching side by side: seen from above, they cover their area exactly.
+        let count = if layer % 2 == 0 { 100 } else { 200 };
+        for i in 0..count {
+            let c = -2.0 + (2.0 * i as f32 + 1.0) * r;
+            let (p, q) = if layer % 2 == 0 {
+                (Vec3::new(-3.0, y, c), Vec3::new(3.0, y, c))
+            } else {
+                (Vec3::new(c, y, -2.0), Vec3::new(c, y, 0.0))
+            };
+            strands.push_strand([(p, r), (q, r)]);
+        }
+    }
+    strands.opacity = Some(vec![a; strands.points.len()]);
+    Description {
+        // Looking along the ground from below the strands: only the ground is seen.
+        camera: CameraDesc { eye: Vec3::new(0.0, 0.5, 3.0), target: Vec3::new(0.0, 0.0, 0.0), up: Vec3::Y, vfov: 60.0 },
+        settings: settings(32, 32, 4, 0, integrator),
+        lights: vec![Light::Distant { direction: Vec3::Y, irradiance: Color::ONE }],
+        meshes: vec![mesh(TriangleMesh::plane(20.0), Material::Diffuse { color: Color::ONE }, Affine3A::IDENTITY)],
+        hair: vec![hair(strands, Material::Diffuse { color: Color::ONE })],
+        ..Default::default()
+    }
+}
+
+#[test]
+fn shadow_through_layers_of_hair_has_the_expected_transmittance() {
+    for (layers, a) in [(1, 0.5), (2, 0.5), (2, 0.3), (3, 0.8)] {
+        for integrator in [Integrator::Direct, Integrator::Path] {
+            let (world, _) = prepare(&shadow_scene(layers, a, integrator)).unwrap();
+            let mut counters = tress::render::Counters::default();
+            let mut radiance = |target: Vec3| {
+                let eye = Vec3::new(0.0, 0.5, 3.0);
+                let ray = tress::math::Ray::new(eye, (target - eye).normalize());
+                let mut sampler = tress::math::rng::PixelSampler::new(0, 0, 0, 0);
+                tress::render::trace_camera(&world, &ray, &mut sampler, &mut counters).0.x
+            };
+            // Under the layers (between strand axes and on them) and in the open.
+            let open = radiance(Vec3::new(0.0, 0.0, 1.0));
+            for target in [Vec3::new(0.013, 0.0, -1.004), Vec3::new(0.204, 0.0, -0.507), Vec3::new(-0.31, 0.0, -1.4963)]
+            {
+                let shaded = radiance(target);
+                let want = (1.0 - a).powi(layers as i32);
+                assert!(
+                    (shaded / open - want).abs() < 1e-3,
+                    "{layers} layers of opacity {a}, {integrator:?}: {} vs {want}",
+                    shaded / open
+                );
+            }
+        }
+    }
+}
+
+/// The demo's hair made semi-transparent: opacity 0.6 at the root to 0.2 at the tip.
+fn transparent_demo(strands: u32, k: u32, integrator: Integrator) -> Description {
+    let mut desc = tress::demo::description(strands, 1);
+    desc.settings.width = 96;
+    desc.settings.height = 72;
+    desc.settings.spp = 2;
+    desc.settings.transparency_layers = k;
+    desc.settings.integrator = integrator;
+    desc.settings.gather_rays = 2;
+    for h in &mut desc.hair {
+        let HairSource::Inline(s) = &mut h.source else { panic!("the demo's hair is inline") };
+        let mut opacity = vec![0.0; s.points.len()];
+        for w in s.offsets.windows(2) {
+            let n = (w[1] - w[0]) as usize;
+            for j in 0..n {
+                opacity[w[0] as usize + j] = 0.6 - 0.4 * j as f32 / (n - 1).max(1) as f32;
+            }
+        }
+        s.opacity = Some(opacity);
+    }
+    desc
+}
+
+#[test]
+fn multi_hit_transparency_matches_retracing_after_every_hit() {
+    let fast = render(&transparent_demo(3000, 8, Integrator::Direct), 2);
+    let slow = render(&transparent_demo(3000, 1, Integrator::Direct), 2);
+    let diffs: Vec<f32> =
+        fast.pixels.iter().zip(&slow.pixels).map(|(a, b)| (a.color - b.color).abs().max_element()).collect();
+    let mean_diff = diffs.iter().sum::<f32>() / diffs.len() as f32;
+    let worst = diffs.iter().copied().fold(0.0, f32::max);
+    println!("K = 8 vs K = 1: mean difference {mean_diff:.2e}, worst {worst:.2e}");
+    assert!(mean_diff < 1e-3 && worst < 0.05, "mean {mean_diff}, worst {worst}");
+    // The hair is seen through: some pixels blend hair over what is behind it.
+    let opaque = render(&tress::demo::description(3000, 1), 2);
+    assert_ne!(mean(&opaque), mean(&fast));
+}
+
+#[test]
+fn every_integrator_gives_the_same_image_on_one_and_two_threads() {
+    for integrator in [Integrator::Direct, Integrator::FinalGather, Integrator::Path] {
+        let mut desc = transparent_demo(2000, 4, integrator);
+        desc.settings.adaptive = Some(Adaptive { min_spp: 1, max_spp: 4, threshold: 0.05 });
+        let (a, b) = (render(&desc, 1), render(&desc, 2));
+        let bits = |f: &Film| f.pixels.iter().flat_map(|p| p.color.to_array().map(f32::to_bits)).collect::<Vec<_>>();
+        assert_eq!(bits(&a), bits(&b), "{integrator:?}");
+        assert_eq!(a, b, "{integrator:?}");
+    }
+}
+
+#[test]
+fn adaptive_sampling_refines_edges_and_strands() {
+    let mut desc = tress::demo::description(3000, 1);
+    desc.settings.width = 96;
+    desc.settings.height = 72;
+    desc.settings.adaptive = Some(Adaptive { min_spp: 2, max_spp: 32, threshold: 0.05 });
+    let film = render(&desc, 2);
+    let (w, h) = (film.width as usize, film.height as usize);
+    let (mut edge, mut flat) = (Vec::new(), Vec::new());
+    for y in 1..h - 1 {
+        for x in 1..w - 1 {
+            let p = &film.pixels[y * w + x];
+            let id = |q: &tress::film::Pixel| (q.object_id, q.strand_id);
+            let neighbours = [(x - 1, y), (x + 1, y), (x, y - 1), (x, y + 1)];
+            let differs = neighbours.iter().any(|&(i, j)| id(&film.pixels[j * w + i]) != id(p));
+            if differs || p.coverage > 0.0 && p.coverage < 1.0 {
+                edge.push(p.samples);
+            } else if p.coverage == 0.0 {
+                flat.push(p.samples);
+            }
+        }
+    }
+    let avg = |v: &[f32]| v.iter().sum::<f32>() / v.len() as f32;
+    println!(
+        "samples: edges {:.1} ({} px), empty background {:.1} ({} px)",
+        avg(&edge),
+        edge.len(),
+        avg(&flat),
+        flat.len()
+    );
+    assert!(!edge.is_empty() && !flat.is_empty());
+    assert!(flat.iter().all(|&s| s == 2.0), "the uniform background takes the minimum");
+    assert!(avg(&edge) > 8.0, "edges take more samples: {}", avg(&edge));
+    assert!(film.pixels.iter().all(|p| (2.0..=32.0).contains(&p.samples)));
+}
