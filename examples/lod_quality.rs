@@ -1,24 +1,35 @@
-//! Measures what level of detail buys on a scene (default `scenes/lod_field.toml`): render
-//! time at equal samples per pixel, RMSE against a high-sample reference rendered without
-//! LOD, noise (RMS difference between two seeds), and coverage and mean colour of the far
-//! region (pixels whose reference depth exceeds `FAR`).
+//! Measures what level of detail buys on a scene (default `scenes/lod_field.toml`), as
+//! issue 5 asks:
+//! - error: RMSE of linear RGB against a high-sample reference rendered without LOD, over
+//!   the whole image and over the far region (pixels whose reference depth exceeds `FAR`),
+//!   at 1 and 4 spp, LOD on and off;
+//! - look: coverage and mean colour of the far region relative to the reference;
+//! - cost: process CPU time (user + system) of the render alone, LOD on and off;
+//! - flicker: a camera pull-back of `FRAMES` frames at a smaller resolution; the flicker is
+//!   the RMS difference between consecutive frames over the far region, averaged over the
+//!   sequence, at 4 spp with and without LOD and at the reference spp without LOD.
 //!
-//! `cargo run --release --example lod_quality -- [SCENE.toml] [REFERENCE_SPP]`
+//! `cargo run --release --example lod_quality -- [SCENE.toml] [REFERENCE_SPP] [WIDTH HEIGHT] [FRAMES]`
+//! (defaults: the scene's size, 256 spp, 24 frames; 0 frames skips the pull-back).
 
-use std::time::Instant;
 use tress::film::Film;
 use tress::scene::{prepare, Description};
+use tress::stats::process_cpu_time;
 
 /// Depth beyond which a pixel counts as far.
 const FAR: f32 = 15.0;
+/// How far the camera moves back per frame, along its viewing direction.
+const STEP: f32 = 0.05;
 
+/// Renders `desc` with `spp`, `seed` and LOD on or off; the film and the CPU seconds the
+/// render took (scene preparation excluded).
 fn render(desc: &Description, spp: u32, seed: u32, lod: bool) -> (Film, f64) {
     let mut d = desc.clone();
     (d.settings.spp, d.settings.seed, d.settings.lod) = (spp, seed, lod);
     let (world, _) = prepare(&d).expect("scene");
-    let start = Instant::now();
+    let start = process_cpu_time();
     let film = tress::render::render(&world, None).0;
-    (film, start.elapsed().as_secs_f64())
+    (film, process_cpu_time().saturating_sub(start).as_secs_f64())
 }
 
 /// RMS difference of linear RGB over the pixels `mask` selects.
@@ -33,7 +44,7 @@ fn rms(a: &Film, b: &Film, mask: &[bool]) -> f64 {
     (sum / n.max(1) as f64).sqrt()
 }
 
-/// Mean coverage and mean luminance-like colour (RGB mean) over the masked pixels.
+/// Mean coverage and mean colour (RGB mean) over the masked pixels.
 fn look(f: &Film, mask: &[bool]) -> (f64, f64) {
     let (mut cov, mut col, mut n) = (0.0, 0.0, 0);
     for (p, &m) in f.pixels.iter().zip(mask) {
@@ -43,35 +54,67 @@ fn look(f: &Film, mask: &[bool]) -> (f64, f64) {
             n += 1;
         }
     }
-    (cov / n as f64, col / n as f64)
+    (cov / n.max(1) as f64, col / n.max(1) as f64)
+}
+
+/// Pixels of the far region: depth beyond [`FAR`] in `reference`.
+fn far_mask(reference: &Film) -> Vec<bool> {
+    reference.pixels.iter().map(|p| p.depth > FAR && p.depth.is_finite()).collect()
+}
+
+/// Mean frame-to-frame RMS difference over the far region of a pull-back rendered with
+/// `spp` and LOD on or off; `masks` are the far regions of the reference frames.
+fn flicker(desc: &Description, frames: u32, spp: u32, lod: bool, masks: &mut Vec<Vec<bool>>) -> f64 {
+    let back = (desc.camera.eye - desc.camera.target).normalize();
+    let mut previous: Option<Film> = None;
+    let mut sum = 0.0;
+    for frame in 0..frames {
+        let mut d = desc.clone();
+        d.camera.eye += back * (STEP * frame as f32);
+        let film = render(&d, spp, 0, lod).0;
+        if masks.len() <= frame as usize {
+            masks.push(far_mask(&film));
+        }
+        if let Some(p) = &previous {
+            // The far region of both frames.
+            let both: Vec<bool> =
+                masks[frame as usize].iter().zip(&masks[frame as usize - 1]).map(|(a, b)| *a && *b).collect();
+            sum += rms(&film, p, &both);
+        }
+        previous = Some(film);
+    }
+    sum / (frames - 1) as f64
 }
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let path = args.get(1).map_or("scenes/lod_field.toml", String::as_str);
-    let ref_spp: u32 = args.get(2).map_or(64, |s| s.parse().expect("reference spp"));
-    let desc = tress::io::scene_file::read_scene(std::path::Path::new(path)).expect("scene file");
+    let ref_spp: u32 = args.get(2).map_or(256, |s| s.parse().expect("reference spp"));
+    let mut desc = tress::io::scene_file::read_scene(std::path::Path::new(path)).expect("scene file");
+    if let (Some(w), Some(h)) = (args.get(3), args.get(4)) {
+        (desc.settings.width, desc.settings.height) = (w.parse().expect("width"), h.parse().expect("height"));
+    }
     let (reference, t_ref) = render(&desc, ref_spp, 0, false);
     let all = vec![true; reference.pixels.len()];
-    let far: Vec<bool> = reference.pixels.iter().map(|p| p.depth > FAR && p.depth.is_finite()).collect();
+    let far = far_mask(&reference);
     let (ref_cov, ref_col) = look(&reference, &far);
     println!(
-        "reference: {ref_spp} spp without LOD, {t_ref:.2} s; far pixels (depth > {FAR}): {}",
+        "{}x{}, reference {ref_spp} spp without LOD ({t_ref:.1} CPU s); far pixels (depth > {FAR}): {}",
+        desc.settings.width,
+        desc.settings.height,
         far.iter().filter(|&&m| m).count()
     );
     println!("far region reference: coverage {ref_cov:.4}, mean colour {ref_col:.4}");
-    println!("spp lod  time_s  rmse_all  rmse_far  seed_noise_far  far_coverage(rel)  far_colour(rel)");
+    println!("spp lod  cpu_s  rmse_all  rmse_far  far_coverage(rel)    far_colour(rel)");
     for spp in [1, 4] {
         for lod in [false, true] {
             let (a, t) = render(&desc, spp, 1, lod);
-            let (b, _) = render(&desc, spp, 2, lod);
             let (cov, col) = look(&a, &far);
             println!(
-                "{spp:>3} {:>4} {t:7.2} {:9.5} {:9.5} {:15.5} {:10.4} ({:+.1} %) {:9.4} ({:+.1} %)",
+                "{spp:>3} {:>4} {t:6.2} {:9.5} {:9.5} {:9.4} ({:+5.1} %) {:9.4} ({:+5.1} %)",
                 if lod { "on" } else { "off" },
                 rms(&a, &reference, &all),
                 rms(&a, &reference, &far),
-                rms(&a, &b, &far),
                 cov,
                 100.0 * (cov / ref_cov - 1.0),
                 col,
@@ -79,4 +122,26 @@ fn main() {
             );
         }
     }
+    // Cost at a sample count where rendering dominates.
+    for lod in [false, true] {
+        let t = render(&desc, 16, 1, lod).1;
+        println!("16 spp, lod {}: {t:.2} CPU s", if lod { "on" } else { "off" });
+    }
+    let frames: u32 = args.get(5).map_or(24, |s| s.parse().expect("frames"));
+    if frames < 2 {
+        return;
+    }
+    // The pull-back at a quarter of the size (each side halved).
+    let mut small = desc.clone();
+    (small.settings.width, small.settings.height) = (desc.settings.width / 2, desc.settings.height / 2);
+    let mut masks = Vec::new();
+    let reference = flicker(&small, frames, ref_spp, false, &mut masks);
+    let off = flicker(&small, frames, 4, false, &mut masks);
+    let on = flicker(&small, frames, 4, true, &mut masks);
+    println!(
+        "flicker over {frames} frames ({}x{}, far region): {ref_spp} spp {reference:.5}, 4 spp off {off:.5}, on {on:.5} ({:.2}x the reference)",
+        small.settings.width,
+        small.settings.height,
+        on / reference
+    );
 }

@@ -7,7 +7,7 @@ use tress::film::Film;
 use tress::hair::Placement;
 use tress::scene::{prepare, Description, GuideSource};
 
-/// The benchmark scene at 240x135, 2 samples, a tenth of the follicles.
+/// The benchmark scene at 240x135, 2 samples, a tenth of the follicles, `start = 1`.
 fn small_field() -> Description {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lod_field.toml");
     let mut desc = tress::io::scene_file::read_scene(&path).unwrap();
@@ -17,6 +17,9 @@ fn small_field() -> Description {
             params.placement = Placement::Random { count: 2000 };
         }
         assert!(h.lod.is_some(), "the benchmark scene asks for level of detail");
+        // Pruning from a footprint of one width (the thesis' rule), so that the near fur
+        // already uses several levels.
+        h.lod = h.lod.map(|p| tress::accel::lod::LodParams { start: 1.0, ..p });
     }
     desc
 }

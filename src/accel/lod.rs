@@ -47,11 +47,17 @@ pub struct LodParams {
     /// Reduce the contrast of strand colours toward their mean at coarser levels (Cook et
     /// al. 2007): fewer strands per pixel would otherwise make the colour noisier.
     pub contrast: bool,
+    /// Footprint, in strand widths, at which pruning starts: level `l` is used where the
+    /// footprint is about `start * d^l` widths, so kept strands stay `start` times thinner
+    /// than the footprint. A pixel then averages several pruned strands and the pruned
+    /// look differs from the full one by about `1 / start` of the coverage's variance
+    /// (the thesis' rule, switching when the ray grows as thick as a hair, is `start = 1`).
+    pub start: f32,
 }
 
 impl Default for LodParams {
     fn default() -> Self {
-        LodParams { decimation: 1.5, levels: 8, compensation: 0.8, contrast: false }
+        LodParams { decimation: 1.5, levels: 8, compensation: 0.8, contrast: false, start: 1.0 }
     }
 }
 
@@ -63,6 +69,9 @@ impl LodParams {
         }
         if !(1..=MAX_LEVELS as u32).contains(&self.levels) {
             return Err(format!("lod `levels` {} must be between 1 and {MAX_LEVELS}", self.levels));
+        }
+        if !(self.start.is_finite() && (1.0..=1000.0).contains(&self.start)) {
+            return Err(format!("lod `start` {} must be between 1 and 1000", self.start));
         }
         if !(self.compensation.is_finite() && self.compensation > 0.0 && self.compensation <= 1.0) {
             return Err(format!("lod `compensation` {} must be above 0 and at most 1", self.compensation));
@@ -104,11 +113,17 @@ pub struct StrandLod {
     params: LodParams,
     /// Mean strand diameter: the width the footprint is compared with.
     width: f32,
+    /// `start * width`: the footprint at which pruning starts.
+    start_width: f32,
     /// Group `k`'s BVH, over the segments of the strands whose last level is `k`.
     groups: Vec<Bvh>,
+    /// Bounds of each group: a ray that misses them, or meets them only past the group's
+    /// cut-off, skips the group without touching its BVH.
+    group_bounds: Vec<Aabb>,
     /// Strands in each group.
     group_strands: Vec<u32>,
-    /// `width * d^(k + 1)`: the footprint at which the level passes `k` (without jitter).
+    /// `start * width * d^(k + 1)`: the footprint at which the level passes `k` (without
+    /// jitter).
     thresholds: [f32; MAX_LEVELS],
     /// Radius factor per level.
     scales: [f32; MAX_LEVELS],
@@ -132,20 +147,33 @@ impl RayLevels {
     }
 }
 
-/// A ray as level of detail sees it: where it starts and goes, its cone, and its jitter.
+/// A ray as level of detail sees it: where it starts and goes, and its cone.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct LodRay {
     origin: Vec3,
     dir: Vec3,
+    /// `1 / dir`, for the test of a group's bounds.
+    inv_dir: Vec3,
     cone: RayCone,
-    jitter: f32,
 }
 
 impl LodRay {
     /// The ray from `origin` along unit `dir` with footprint `cone`.
     #[inline]
     pub(crate) fn new(origin: Vec3, dir: Vec3, cone: RayCone) -> LodRay {
-        LodRay { origin, dir, cone, jitter: ray_jitter(origin, dir) }
+        LodRay { origin, dir, inv_dir: dir.recip(), cone }
+    }
+
+    /// True when the ray passes through `b` before `tmax` (slab test; an infinite
+    /// reciprocal direction gives infinite or NaN slab distances, which `max`/`min` with
+    /// the interval ends drop, so axis-parallel rays are handled).
+    #[inline]
+    fn enters(&self, b: &Aabb, tmax: f32) -> bool {
+        let t0 = (Vec3::from(b.min) - self.origin) * self.inv_dir;
+        let t1 = (Vec3::from(b.max) - self.origin) * self.inv_dir;
+        let near = t0.min(t1).max_element().max(0.0);
+        let far = t0.max(t1).min_element().min(tmax);
+        near <= far * (1.0 + 4.0 * f32::EPSILON)
     }
 }
 
@@ -207,10 +235,10 @@ impl StrandLod {
         let mut thresholds = [f32::INFINITY; MAX_LEVELS];
         let mut scales = [1.0; MAX_LEVELS];
         for l in 0..levels {
-            thresholds[l] = width * params.decimation.powi(l as i32 + 1);
+            thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
             scales[l] = params.radius_scale(l as u32);
         }
-        let groups = (0..levels)
+        let groups: Vec<Bvh> = (0..levels)
             .into_par_iter()
             .map(|k| Bvh::build(group_items(strands, &groups_of, k as u8, scales[k])))
             .collect();
@@ -218,7 +246,18 @@ impl StrandLod {
             let sum = c.iter().fold([0.0f64; 3], |a, x| [a[0] + x[0] as f64, a[1] + x[1] as f64, a[2] + x[2] as f64]);
             Vec3::new(sum[0] as f32, sum[1] as f32, sum[2] as f32) / c.len() as f32
         });
-        Some(StrandLod { params, width, groups, group_strands, thresholds, scales, mean_color })
+        let group_bounds = groups.iter().map(Bvh::bounds).collect();
+        Some(StrandLod {
+            params,
+            width,
+            start_width: params.start * width,
+            groups,
+            group_bounds,
+            group_strands,
+            thresholds,
+            scales,
+            mean_color,
+        })
     }
 
     /// The pruning parameters.
@@ -253,10 +292,10 @@ impl StrandLod {
     }
 
     /// The level a ray with `cone` uses at distance `t`:
-    /// `floor(log_d(footprint(t) / width) + jitter)`, clamped to the levels there are.
-    /// A footprint thinner than the hair gives level 0 whatever the jitter.
+    /// `floor(log_d(footprint(t) / (start * width)) + jitter)`, clamped to the levels there
+    /// are. A footprint thinner than the hair gives level 0 whatever the jitter.
     pub fn level_at(&self, cone: RayCone, t: f32, jitter: f32) -> u32 {
-        let ratio = cone.width_at(t) / self.width;
+        let ratio = cone.width_at(t) / self.start_width;
         // A zero, negative or NaN ratio (no footprint): full detail.
         if ratio.is_nan() || ratio <= 0.0 {
             return 0;
@@ -266,7 +305,7 @@ impl StrandLod {
     }
 
     /// The distances at which a ray with `cone` and `jitter` leaves each level: the level
-    /// is at most `k` while `footprint(t) < width * d^(k + 1 - jitter)`, the same boundary
+    /// is at most `k` while `footprint(t) < start * width * d^(k + 1 - jitter)`, the same boundary
     /// as [`StrandLod::level_at`]. A cone that does not widen keeps its width everywhere.
     pub fn ray_levels(&self, cone: RayCone, jitter: f32) -> RayLevels {
         let levels = self.params.levels as usize;
@@ -297,13 +336,15 @@ impl StrandLod {
         tmax: &mut f32,
         mut leaf: impl FnMut(&[u32], Widen, &mut f32) -> bool,
     ) -> bool {
-        let levels = self.ray_levels(ray.cone, ray.jitter);
+        // Hashed here rather than per ray: only rays that reach a strand set with level of
+        // detail need it.
+        let levels = self.ray_levels(ray.cone, ray_jitter(ray.origin, ray.dir));
         // Fine groups first: a near hit there bounds the traversal of the coarse groups,
         // whose boxes are widened for their coarsest level. Far rays skip the fine groups
         // by their cut-off.
         for k in 0..levels.levels {
             let start = levels.cutoffs[k].min(*tmax);
-            if start.is_nan() || start <= 0.0 {
+            if start.is_nan() || start <= 0.0 || !ray.enters(&self.group_bounds[k], start) {
                 continue;
             }
             let group = GroupView { lod: self, levels: &levels, group: k, origin: ray.origin, dir: ray.dir };

@@ -393,6 +393,7 @@ struct LodToml {
     levels: Option<u32>,
     compensation: Option<f32>,
     contrast: Option<bool>,
+    start: Option<f32>,
 }
 
 impl LodToml {
@@ -403,6 +404,7 @@ impl LodToml {
             levels: self.levels.unwrap_or(d.levels),
             compensation: self.compensation.unwrap_or(d.compensation),
             contrast: self.contrast.unwrap_or(d.contrast),
+            start: self.start.unwrap_or(d.start),
         };
         p.validate()?;
         Ok(p)
@@ -1297,8 +1299,8 @@ seed = 7
     #[test]
     fn lod_tables_take_defaults_and_reject_bad_values() {
         let minimal = &HAIR_SYSTEM[..HAIR_SYSTEM.find("hairs_per_clump").unwrap()];
-        let d = parse(&format!("{minimal}lod = {{ levels = 4 }}\n[render]\nlod = false\n")).unwrap();
-        assert_eq!(d.hair_systems[0].lod, Some(LodParams { levels: 4, ..Default::default() }));
+        let d = parse(&format!("{minimal}lod = {{ levels = 4, start = 8 }}\n[render]\nlod = false\n")).unwrap();
+        assert_eq!(d.hair_systems[0].lod, Some(LodParams { levels: 4, start: 8.0, ..Default::default() }));
         assert!(!d.settings.lod);
         assert!(parse(minimal).unwrap().settings.lod && parse(minimal).unwrap().hair_systems[0].lod.is_none());
         for (bad, key) in [
@@ -1306,6 +1308,7 @@ seed = 7
             ("levels = 0", "levels"),
             ("levels = 17", "levels"),
             ("compensation = nan", "compensation"),
+            ("start = 0.5", "start"),
             ("decimate = 2.0", "decimate"),
         ] {
             let e = parse(&format!("{minimal}lod = {{ {bad} }}\n")).unwrap_err().to_string();
