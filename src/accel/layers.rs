@@ -5,7 +5,7 @@
 //! every hit it needs, and the BVH keeps culling with the distance of the K-th nearest
 //! hit (or of the nearest opaque one), so a stack of K hairs costs about one traversal.
 
-use super::{Accel, Hit, HitKind, Shape, Skip};
+use super::{gather4, Accel, Hit, HitKind, Shape, Skip};
 use crate::geometry::{segment, triangle};
 use crate::math::Ray;
 use bvh::RayBoxTest;
@@ -61,13 +61,7 @@ fn leaf_hits(
         }
         Shape::Strands(s) => {
             for chunk in prims.chunks(4) {
-                let (mut p0, mut p1) = ([[0.0; 4]; 4], [[0.0; 4]; 4]);
-                for (lane, &p) in chunk.iter().enumerate() {
-                    if !skipped(p) {
-                        p0[lane] = s.points[p as usize];
-                        p1[lane] = s.points[p as usize + 1];
-                    }
-                }
+                let (p0, p1) = gather4(s, chunk, skipped);
                 let hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, p0, p1);
                 let mut mask = hits.mask;
                 while mask != 0 {

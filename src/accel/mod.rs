@@ -12,6 +12,7 @@ use crate::math::{Aabb, Ray};
 use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
 use rayon::prelude::*;
+use wide::f32x4;
 
 /// The geometry of one object.
 #[derive(Clone, Debug)]
@@ -231,13 +232,7 @@ fn intersect_leaf(
         }
         Shape::Strands(s) => {
             for chunk in prims.chunks(4) {
-                let (mut p0, mut p1) = ([[0.0; 4]; 4], [[0.0; 4]; 4]);
-                for (lane, &p) in chunk.iter().enumerate() {
-                    if !skipped(p) {
-                        p0[lane] = s.points[p as usize];
-                        p1[lane] = s.points[p as usize + 1];
-                    }
-                }
+                let (p0, p1) = gather4(s, chunk, skipped);
                 let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
                 if any && hits.mask != 0 {
                     // Any lane's hit will do: skip forming the normal.
@@ -254,6 +249,20 @@ fn intersect_leaf(
         }
     }
     best
+}
+
+/// The end points of up to four segments (given by their first points) as the lanes of
+/// [`segment::intersect_cylinder4`]; skipped and missing lanes stay empty (no surface).
+#[inline(always)]
+fn gather4(s: &StrandSet, firsts: &[u32], skipped: impl Fn(u32) -> bool) -> ([f32x4; 4], [f32x4; 4]) {
+    let (mut p0, mut p1) = ([f32x4::ZERO; 4], [f32x4::ZERO; 4]);
+    for (lane, &p) in firsts.iter().enumerate() {
+        if !skipped(p) {
+            p0[lane] = f32x4::new(s.points[p as usize]);
+            p1[lane] = f32x4::new(s.points[p as usize + 1]);
+        }
+    }
+    (p0, p1)
 }
 
 /// One primitive's hit before `tmax`: (distance, where).
