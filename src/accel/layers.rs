@@ -6,7 +6,7 @@
 //! hit (or of the nearest opaque one), so a stack of K hairs costs about one traversal.
 
 use super::lod::{LodRay, Widen};
-use super::{segments4, Accel, Hit, HitKind, Shape, Skip};
+use super::{gather4, Accel, Hit, HitKind, Shape, Skip};
 use crate::geometry::{segment, triangle};
 use crate::math::{Ray, RayCone};
 use bvh::RayBoxTest;
@@ -51,6 +51,7 @@ fn leaf_hits(
     widen: Widen,
     mut found: impl FnMut(u32, f32, HitKind, u32) -> bool,
 ) -> bool {
+    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
     match shape {
         Shape::Mesh(m) => {
             for &p in prims {
@@ -63,7 +64,7 @@ fn leaf_hits(
         }
         Shape::Strands(s) => {
             for chunk in prims.chunks(4) {
-                let (p0, p1, levels) = segments4(s, chunk, skip, widen);
+                let (p0, p1, levels) = gather4(s, chunk, skipped, widen);
                 let hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, p0, p1);
                 let mut mask = hits.mask;
                 while mask != 0 {

@@ -16,6 +16,7 @@ use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
 use lod::{LodParams, LodRay, StrandLod, Widen};
 use rayon::prelude::*;
+use wide::f32x4;
 
 /// The geometry of one object.
 #[derive(Clone, Debug)]
@@ -302,6 +303,7 @@ fn intersect_leaf(
     any: bool,
     widen: Widen,
 ) -> Option<(u32, f32, HitKind, u32)> {
+    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
     let mut best = None;
     let mut tmax = tmax;
     match shape {
@@ -318,7 +320,7 @@ fn intersect_leaf(
         }
         Shape::Strands(s) => {
             for chunk in prims.chunks(4) {
-                let (p0, p1, levels) = segments4(s, chunk, skip, widen);
+                let (p0, p1, levels) = gather4(s, chunk, skipped, widen);
                 let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
                 if any && hits.mask != 0 {
                     // Any lane's hit will do: skip forming the normal.
@@ -338,27 +340,26 @@ fn intersect_leaf(
     best
 }
 
-/// Up to four segments of `s` (`chunk`, at most four first points) for the 4-wide test:
-/// their end points with radii widened for the ray's level of detail, and each lane's
-/// level. Skipped and missing lanes stay zero, which never hits.
+/// The end points of up to four segments of `s` (given by their first points) as the
+/// lanes of [`segment::intersect_cylinder4`], radii widened for the ray's level of detail
+/// by `widen`, and each lane's level. Skipped and missing lanes stay empty (no surface).
 #[inline(always)]
-fn segments4(
+fn gather4(
     s: &StrandSet,
-    chunk: &[u32],
-    skip: Option<Skip>,
+    firsts: &[u32],
+    skipped: impl Fn(u32) -> bool,
     widen: Widen,
-) -> ([[f32; 4]; 4], [[f32; 4]; 4], [u32; 4]) {
-    let skipped = |p: u32| skip.is_some_and(|s| (s.first..=s.last).contains(&p));
-    let (mut p0, mut p1, mut levels) = ([[0.0; 4]; 4], [[0.0; 4]; 4], [0u32; 4]);
-    for (lane, &p) in chunk.iter().enumerate() {
+) -> ([f32x4; 4], [f32x4; 4], [u32; 4]) {
+    let (mut p0, mut p1, mut levels) = ([f32x4::ZERO; 4], [f32x4::ZERO; 4], [0u32; 4]);
+    for (lane, &p) in firsts.iter().enumerate() {
         if !skipped(p) {
             let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
             match widen {
-                None => (p0[lane], p1[lane]) = (a, b),
+                None => (p0[lane], p1[lane]) = (f32x4::new(a), f32x4::new(b)),
                 Some(group) => {
                     let (scale, level) = group.widen(a, b);
-                    p0[lane] = [a[0], a[1], a[2], a[3] * scale];
-                    p1[lane] = [b[0], b[1], b[2], b[3] * scale];
+                    p0[lane] = f32x4::new([a[0], a[1], a[2], a[3] * scale]);
+                    p1[lane] = f32x4::new([b[0], b[1], b[2], b[3] * scale]);
                     levels[lane] = level;
                 }
             }

@@ -491,6 +491,16 @@ pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError>
         shapes.push((Shape::Strands(grown.strands), materials.len() as u32));
         materials.push(Material::Fur(grown.shading));
     }
+    for (i, (shape, _)) in shapes.iter().enumerate() {
+        if shape.primitive_count() > crate::accel::bvh::MAX_ITEMS {
+            return Err(PrepareError::Invalid(format!(
+                "object {} has {} primitives; one object holds at most {} (split the strands into several files)",
+                i + 1,
+                shape.primitive_count(),
+                crate::accel::bvh::MAX_ITEMS
+            )));
+        }
+    }
     Ok(LoadedGeometry { shapes, materials, lods, warnings })
 }
 
