@@ -64,14 +64,20 @@ fn leaf_hits(
         }
         Shape::Strands(s) => {
             for chunk in prims.chunks(4) {
-                let (p0, p1, levels) = gather4(s, chunk, skipped, widen);
-                let hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, p0, p1);
+                let lanes = gather4(s, chunk, skipped, widen);
+                let mut hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, lanes.p0, lanes.p1);
+                lanes.drop_hidden(&mut hits);
                 let mut mask = hits.mask;
                 while mask != 0 {
                     let lane = mask.trailing_zeros() as usize;
                     mask &= mask - 1;
                     if let Some(h) = hits.hit(lane) {
-                        if found(chunk[lane], h.t, HitKind::Segment { s: h.s, normal: h.normal }, levels[lane]) {
+                        if found(
+                            lanes.prim[lane],
+                            h.t,
+                            HitKind::Segment { s: h.s, normal: h.normal },
+                            lanes.level[lane],
+                        ) {
                             return true;
                         }
                     }

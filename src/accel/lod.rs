@@ -8,12 +8,14 @@
 //! - each strand gets a random pruning rank; level `l` keeps the `ceil(N / d^l)` strands of
 //!   lowest rank, so the levels are nested;
 //! - the nested sets split into disjoint groups: group `k` holds the strands whose last
-//!   level is exactly `k`, and gets its own BVH, bounded with the radius its strands take
-//!   at level `k`. Every segment is in exactly one group: there is no copy of the geometry;
+//!   level is exactly `k`. All segments stay in ONE BVH, each item id carrying its group in
+//!   its low bits ([`StrandLod::item_id`]), each bounded with the radius it takes at its
+//!   group's level. There is no copy of the geometry and a ray traverses once;
 //! - a ray's level at distance `t` is `floor(log_d(footprint(t) / width) + jitter)`
 //!   ([`StrandLod::level_at`]), so group `k` is visible only before the distance `t_k` where
-//!   that level passes `k`. Each group is traversed once with `tmax = min(tmax, t_k)`: no ray
-//!   is re-shot, and a distant ray skips the large fine groups;
+//!   that level passes `k`. A leaf drops the segments that lie wholly beyond their group's
+//!   `t_k` before the exact segment test, and a hit beyond `t_k` does not count; no ray is
+//!   re-shot;
 //! - a segment met at distance `t` is intersected with its radius widened for the level at
 //!   `t` ([`LodParams::radius_scale`]).
 //!
@@ -21,14 +23,13 @@
 //! pick their own level. The jitter comes from the ray itself ([`ray_jitter`]): transitions
 //! dither per ray instead of showing a seam, and stay deterministic.
 
-use super::bvh::{BuildItem, Bvh, RayBoxTest};
+use super::bvh::{self, BuildItem};
 use crate::geometry::{segment, StrandSet};
 use crate::math::rng::{hash_combine, unit_float, GenRng};
 use crate::math::{Aabb, RayCone};
 use glam::Vec3;
 use rand::seq::SliceRandom;
 use rand::SeedableRng;
-use rayon::prelude::*;
 
 /// Most pruning levels a strand set may have.
 pub const MAX_LEVELS: usize = 16;
@@ -107,7 +108,9 @@ impl LodParams {
     }
 }
 
-/// A strand set's pruning levels: one BVH per group of strands sharing their last level.
+/// A strand set's pruning levels: the group of each strand, and per level the widening
+/// and the footprint where it starts. The segments' BVH is the object's own
+/// ([`super::Object`]), built from [`StrandLod::items`].
 #[derive(Clone, Debug)]
 pub struct StrandLod {
     params: LodParams,
@@ -115,13 +118,12 @@ pub struct StrandLod {
     width: f32,
     /// `start * width`: the footprint at which pruning starts.
     start_width: f32,
-    /// Group `k`'s BVH, over the segments of the strands whose last level is `k`.
-    groups: Vec<Bvh>,
-    /// Bounds of each group: a ray that misses them, or meets them only past the group's
-    /// cut-off, skips the group without touching its BVH.
-    group_bounds: Vec<Aabb>,
+    /// Low bits of a BVH item id that hold the segment's group.
+    group_bits: u32,
     /// Strands in each group.
     group_strands: Vec<u32>,
+    /// The last level (group) of each strand.
+    groups_of: Vec<u8>,
     /// `start * width * d^(k + 1)`: the footprint at which the level passes `k` (without
     /// jitter).
     thresholds: [f32; MAX_LEVELS],
@@ -136,7 +138,6 @@ pub struct StrandLod {
 pub struct RayLevels {
     /// `cutoffs[k]`: the ray's level is at most `k` before this distance.
     cutoffs: [f32; MAX_LEVELS],
-    levels: usize,
 }
 
 impl RayLevels {
@@ -152,8 +153,6 @@ impl RayLevels {
 pub(crate) struct LodRay {
     origin: Vec3,
     dir: Vec3,
-    /// `1 / dir`, for the test of a group's bounds.
-    inv_dir: Vec3,
     cone: RayCone,
 }
 
@@ -161,47 +160,49 @@ impl LodRay {
     /// The ray from `origin` along unit `dir` with footprint `cone`.
     #[inline]
     pub(crate) fn new(origin: Vec3, dir: Vec3, cone: RayCone) -> LodRay {
-        LodRay { origin, dir, inv_dir: dir.recip(), cone }
-    }
-
-    /// True when the ray passes through `b` before `tmax` (slab test; an infinite
-    /// reciprocal direction gives infinite or NaN slab distances, which `max`/`min` with
-    /// the interval ends drop, so axis-parallel rays are handled).
-    #[inline]
-    fn enters(&self, b: &Aabb, tmax: f32) -> bool {
-        let t0 = (Vec3::from(b.min) - self.origin) * self.inv_dir;
-        let t1 = (Vec3::from(b.max) - self.origin) * self.inv_dir;
-        let near = t0.min(t1).max_element().max(0.0);
-        let far = t0.max(t1).min_element().min(tmax);
-        near <= far * (1.0 + 4.0 * f32::EPSILON)
+        LodRay { origin, dir, cone }
     }
 }
 
-/// One group of a strand set as a ray traverses it: the level (and radius factor) of each
-/// of its segments from the segment's distance along the ray.
+/// A strand set as one ray sees it: the distances where its level changes.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct GroupView<'a> {
+pub(crate) struct LodView<'a> {
     lod: &'a StrandLod,
-    levels: &'a RayLevels,
-    group: usize,
+    levels: RayLevels,
     origin: Vec3,
     dir: Vec3,
 }
 
-impl GroupView<'_> {
-    /// Radius factor and level of the segment between points `a` and `b`. The level is read
-    /// at the distance of the segment's midpoint along the ray: segments are short next to
-    /// the distances where levels change.
+impl LodView<'_> {
+    /// The segment's first point and group, from its BVH item id.
     #[inline(always)]
-    pub(crate) fn widen(&self, a: [f32; 4], b: [f32; 4]) -> (f32, u32) {
-        let mid = Vec3::new(a[0] + b[0], a[1] + b[1], a[2] + b[2]) * 0.5;
-        let level = self.levels.level((mid - self.origin).dot(self.dir), self.group);
-        (self.lod.scales[level], level as u32)
+    pub(crate) fn decode(&self, id: u32) -> (u32, usize) {
+        (id >> self.lod.group_bits, (id & ((1 << self.lod.group_bits) - 1)) as usize)
+    }
+
+    /// How the ray sees the segment between points `a` and `b` of group `group`: its
+    /// radius factor, its level and the distance from which its group is hidden (a hit
+    /// from there on does not count); `None` when the whole widened segment lies beyond
+    /// that distance, so it is skipped without the exact test. The level is read at the
+    /// distance of the segment's midpoint: segments are short next to the distances where
+    /// levels change.
+    #[inline(always)]
+    pub(crate) fn segment(&self, a: [f32; 4], b: [f32; 4], group: usize) -> Option<(f32, u32, f32)> {
+        let ta = (Vec3::new(a[0], a[1], a[2]) - self.origin).dot(self.dir);
+        let tb = (Vec3::new(b[0], b[1], b[2]) - self.origin).dot(self.dir);
+        let level = self.levels.level(0.5 * (ta + tb), group);
+        let scale = self.lod.scales[level];
+        let cut = self.levels.cutoffs[group];
+        // A point of the surface lies at most one radius before its axis point.
+        if ta.min(tb) - a[3].max(b[3]) * scale >= cut {
+            return None;
+        }
+        Some((scale, level as u32, cut))
     }
 }
 
-/// How a leaf's segments are widened for a ray's level of detail: `None` at full detail.
-pub(crate) type Widen<'a> = Option<GroupView<'a>>;
+/// How a leaf's segments are seen for a ray's level of detail: `None` at full detail.
+pub(crate) type Widen<'a> = Option<&'a LodView<'a>>;
 
 /// A jitter value in [0, 1) for the level choice, derived from the ray's bits so it is the
 /// same whatever thread traces it, and differs from ray to ray (sub-pixel offsets, shadow
@@ -219,13 +220,14 @@ pub fn ray_jitter(origin: Vec3, dir: Vec3) -> f32 {
 }
 
 impl StrandLod {
-    /// Prunes `strands` with `params` (ranks drawn from `seed`) and builds a BVH per group.
-    /// `None` when there is nothing to prune (no strands, or strands without width).
+    /// Prunes `strands` with `params` (ranks drawn from `seed`). `None` when there is
+    /// nothing to prune (no strands, or strands without width), or when the set has too
+    /// many points for their index and group to share a BVH item id ([`StrandLod::fits`]).
     pub fn build(strands: &StrandSet, params: LodParams, seed: u32) -> Option<StrandLod> {
         let n = strands.strand_count();
         let (sum, count) = strands.points.iter().fold((0.0f64, 0usize), |(s, c), p| (s + 2.0 * p[3] as f64, c + 1));
         let width = (sum / count.max(1) as f64) as f32;
-        if n == 0 || !(width.is_finite() && width > 0.0) {
+        if n == 0 || !(width.is_finite() && width > 0.0) || !StrandLod::fits(strands.points.len(), params) {
             return None;
         }
         let levels = params.levels as usize;
@@ -238,26 +240,49 @@ impl StrandLod {
             thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
             scales[l] = params.radius_scale(l as u32);
         }
-        let groups: Vec<Bvh> = (0..levels)
-            .into_par_iter()
-            .map(|k| Bvh::build(group_items(strands, &groups_of, k as u8, scales[k])))
-            .collect();
         let mean_color = strands.colors.as_ref().filter(|c| params.contrast && !c.is_empty()).map(|c| {
             let sum = c.iter().fold([0.0f64; 3], |a, x| [a[0] + x[0] as f64, a[1] + x[1] as f64, a[2] + x[2] as f64]);
             Vec3::new(sum[0] as f32, sum[1] as f32, sum[2] as f32) / c.len() as f32
         });
-        let group_bounds = groups.iter().map(Bvh::bounds).collect();
         Some(StrandLod {
             params,
             width,
             start_width: params.start * width,
-            groups,
-            group_bounds,
+            group_bits: group_bits(params.levels),
             group_strands,
+            groups_of,
             thresholds,
             scales,
             mean_color,
         })
+    }
+
+    /// True when a strand set of `points` points can be pruned with `params`: every
+    /// segment's first point, shifted past the group bits, stays a valid BVH item id.
+    pub fn fits(points: usize, params: LodParams) -> bool {
+        (points as u64) << group_bits(params.levels) < bvh::MAX_ITEMS as u64
+    }
+
+    /// The BVH item id of the segment starting at point `first` in group `group`.
+    pub fn item_id(&self, first: u32, group: u8) -> u32 {
+        (first << self.group_bits) | group as u32
+    }
+
+    /// The BVH items of `strands` (the set this was built for): every segment, its id
+    /// carrying its group, bounded at the radius its group's level gives it.
+    pub fn items(&self, strands: &StrandSet) -> Vec<BuildItem> {
+        let mut items = Vec::with_capacity(strands.segment_count());
+        for (strand, w) in strands.offsets.windows(2).enumerate() {
+            let group = self.groups_of[strand];
+            let scale = self.scales[group as usize];
+            let widen = |p: [f32; 4]| [p[0], p[1], p[2], p[3] * scale];
+            for i in w[0]..w[1].saturating_sub(1) {
+                let (min, max) =
+                    segment::bounds(widen(strands.points[i as usize]), widen(strands.points[i as usize + 1]));
+                items.push(BuildItem { bounds: Aabb::new(min, max), id: self.item_id(i, group) });
+            }
+        }
+        items
     }
 
     /// The pruning parameters.
@@ -275,20 +300,10 @@ impl StrandLod {
         &self.group_strands
     }
 
-    /// Bounds of every group, at its widest radius.
-    pub fn bounds(&self) -> Aabb {
-        self.groups.iter().fold(Aabb::EMPTY, |b, g| b.union(g.bounds()))
-    }
-
-    /// Bytes of the group BVHs.
-    pub fn bvh_bytes(&self) -> usize {
-        self.groups.iter().map(Bvh::memory_bytes).sum()
-    }
-
-    /// Bytes of the LOD's own bookkeeping (parameters, thresholds, group sizes), beyond
-    /// the group BVHs that replace the strand set's single BVH.
+    /// Bytes of the LOD's own bookkeeping (parameters, thresholds, group sizes and each
+    /// strand's group), beyond the BVH every strand set has.
     pub fn bookkeeping_bytes(&self) -> usize {
-        std::mem::size_of::<StrandLod>() + self.groups.len() * std::mem::size_of::<Bvh>() + self.group_strands.len() * 4
+        std::mem::size_of::<StrandLod>() + self.group_strands.len() * 4 + self.groups_of.len()
     }
 
     /// The level a ray with `cone` uses at distance `t`:
@@ -321,47 +336,15 @@ impl StrandLod {
                 f32::NEG_INFINITY
             };
         }
-        RayLevels { cutoffs, levels }
+        RayLevels { cutoffs }
     }
 
-    /// Visits the leaves of the groups a ray sees before `*tmax`: group `k` up to the
-    /// distance where the ray's level passes `k`. `leaf(prims, widen, tmax)` as in
-    /// [`super::Object::traverse`]; a hit it records (by shortening the group's `tmax`)
-    /// shortens `*tmax` for the groups after. Returns true when `leaf` stopped.
+    /// The strand set as `ray` sees it. Hashed here rather than per ray: only rays that
+    /// reach a strand set with level of detail need the jitter.
     #[inline]
-    pub(super) fn traverse(
-        &self,
-        test: &RayBoxTest,
-        ray: &LodRay,
-        tmax: &mut f32,
-        mut leaf: impl FnMut(&[u32], Widen, &mut f32) -> bool,
-    ) -> bool {
-        // Hashed here rather than per ray: only rays that reach a strand set with level of
-        // detail need it.
+    pub(crate) fn view(&self, ray: &LodRay) -> LodView<'_> {
         let levels = self.ray_levels(ray.cone, ray_jitter(ray.origin, ray.dir));
-        // Fine groups first: a near hit there bounds the traversal of the coarse groups,
-        // whose boxes are widened for their coarsest level. Far rays skip the fine groups
-        // by their cut-off.
-        for k in 0..levels.levels {
-            let start = levels.cutoffs[k].min(*tmax);
-            if start.is_nan() || start <= 0.0 || !ray.enters(&self.group_bounds[k], start) {
-                continue;
-            }
-            let group = GroupView { lod: self, levels: &levels, group: k, origin: ray.origin, dir: ray.dir };
-            let (mut t, mut stop) = (start, false);
-            self.groups[k].traverse(test, &mut t, |prims, t| {
-                stop = leaf(prims, Some(group), t);
-                stop
-            });
-            // Leaves only shorten `t` to a hit, which lies before the group's cut-off.
-            if t < start {
-                *tmax = t;
-            }
-            if stop {
-                return true;
-            }
-        }
-        false
+        LodView { lod: self, levels, origin: ray.origin, dir: ray.dir }
     }
 
     /// A strand colour seen at `level`, its contrast to the set's mean reduced by
@@ -383,20 +366,9 @@ impl StrandLod {
     }
 }
 
-/// BVH items of group `group`: the segments of its strands, bounded at radius times `scale`.
-fn group_items(strands: &StrandSet, groups_of: &[u8], group: u8, scale: f32) -> Vec<BuildItem> {
-    let mut items = Vec::new();
-    for (strand, w) in strands.offsets.windows(2).enumerate() {
-        if groups_of[strand] != group {
-            continue;
-        }
-        for i in w[0]..w[1].saturating_sub(1) {
-            let widen = |p: [f32; 4]| [p[0], p[1], p[2], p[3] * scale];
-            let (min, max) = segment::bounds(widen(strands.points[i as usize]), widen(strands.points[i as usize + 1]));
-            items.push(BuildItem { bounds: Aabb::new(min, max), id: i });
-        }
-    }
-    items
+/// Bits of an item id that hold the group of a set with `levels` levels.
+fn group_bits(levels: u32) -> u32 {
+    32 - levels.saturating_sub(1).leading_zeros()
 }
 
 #[cfg(test)]
@@ -444,11 +416,19 @@ mod tests {
         let s = curtain(3000, 0.001, 1);
         let p = LodParams::default();
         let groups = p.strand_groups(s.strand_count(), 9);
-        let mut ids: Vec<u32> =
-            (0..p.levels as u8).flat_map(|g| group_items(&s, &groups, g, 1.0)).map(|i| i.id).collect();
-        ids.sort_unstable();
-        assert_eq!(ids, s.segment_starts(), "every segment in exactly one group");
         let lod = StrandLod::build(&s, p, 9).unwrap();
+        let view = lod.view(&LodRay::new(Vec3::ZERO, Vec3::Z, RayCone::default()));
+        let items = lod.items(&s);
+        let mut ids: Vec<u32> = items.iter().map(|i| view.decode(i.id).0).collect();
+        ids.sort_unstable();
+        assert_eq!(ids, s.segment_starts(), "every segment exactly once");
+        // Each item carries its strand's group, and ids stay valid BVH items.
+        let strand_of = |p: u32| s.offsets.partition_point(|&o| o <= p) - 1;
+        for i in &items {
+            let (first, group) = view.decode(i.id);
+            assert_eq!(group, groups[strand_of(first)] as usize);
+            assert!((i.id as usize) < bvh::MAX_ITEMS);
+        }
         assert_eq!(lod.group_strands().iter().sum::<u32>() as usize, s.strand_count());
         // The coarsest group is the smallest; group 0 holds about 1 - 1/d of the strands.
         assert_eq!(lod.group_strands()[7] as usize, p.kept(3000, 7));

@@ -1,8 +1,8 @@
 //! Acceleration: one BVH per object over its primitives, and a top-level BVH over objects.
 //! Answers closest-hit and any-hit (shadow) queries for the integrators, and multi-hit
 //! queries for semi-transparent hair ([`Accel::intersect_k`], [`Accel::transmittance`]).
-//! A strand set with level of detail has a BVH per pruning group instead of one ([`lod`]);
-//! every query sees it at the level of its ray's cone ([`Object::traverse`]).
+//! A strand set with level of detail keeps one BVH whose items carry their pruning group
+//! ([`lod`]); every query sees it at the level of its ray's cone ([`Object::traverse`]).
 
 pub mod bvh;
 mod layers;
@@ -52,14 +52,14 @@ pub struct Object {
     pub shape: Shape,
     /// Index into the world's materials.
     pub material: u32,
-    /// The BVH over all primitives; empty when the object has level of detail.
+    /// The BVH over all primitives (for level of detail, items carry their group).
     bvh: Bvh,
-    /// Pruning levels with a BVH per group, for strand sets with level of detail.
+    /// Pruning levels, for strand sets with level of detail.
     lod: Option<StrandLod>,
 }
 
 impl Object {
-    /// The object's BVH (empty when the object has level of detail: see [`Object::lod`]).
+    /// The object's BVH.
     pub fn bvh(&self) -> &Bvh {
         &self.bvh
     }
@@ -69,18 +69,13 @@ impl Object {
         self.lod.as_ref()
     }
 
-    /// Bytes of the object's BVHs (the single one, or one per pruning group).
+    /// Bytes of the object's BVH.
     pub fn bvh_bytes(&self) -> usize {
-        self.bvh.memory_bytes() + self.lod.as_ref().map_or(0, StrandLod::bvh_bytes)
+        self.bvh.memory_bytes()
     }
 
-    /// Bounds of the object as its BVHs see them (strands at their widest level).
-    pub fn bounds(&self) -> Aabb {
-        self.lod.as_ref().map_or(self.bvh.bounds(), StrandLod::bounds)
-    }
-
-    /// Bytes the object's single BVH would take without level of detail (built to measure
-    /// what the LOD adds; the object's own BVH when it has none).
+    /// Bytes the object's BVH would take without level of detail (built to measure what
+    /// the LOD's widened bounds add; the object's own BVH when it has none).
     pub fn plain_bvh_bytes(&self) -> usize {
         match self.lod {
             Some(_) => Bvh::build(build_items(&self.shape)).memory_bytes(),
@@ -93,10 +88,10 @@ impl Object {
         self.lod.as_ref().map_or(1.0, |l| l.radius_scale(level))
     }
 
-    /// Visits the leaves of the object's BVH (or of its pruning groups' BVHs, the groups
-    /// the ray sees) that `test` enters before `*tmax`. `leaf(prims, widen, tmax)` tests a
-    /// leaf's primitives, widening segments by `widen` for the ray's level, shortens
-    /// `*tmax` on a hit and returns true to stop; so does this function.
+    /// Visits the leaves of the object's BVH that `test` enters before `*tmax`.
+    /// `leaf(prims, widen, tmax)` tests a leaf's items, seeing segments at the ray's level
+    /// of detail through `widen`, shortens `*tmax` on a hit and returns true to stop; so
+    /// does this function.
     #[inline]
     pub(crate) fn traverse(
         &self,
@@ -105,17 +100,13 @@ impl Object {
         tmax: &mut f32,
         mut leaf: impl FnMut(&[u32], Widen, &mut f32) -> bool,
     ) -> bool {
-        match &self.lod {
-            Some(lod) => lod.traverse(test, ray, tmax, leaf),
-            None => {
-                let mut stop = false;
-                self.bvh.traverse(test, tmax, |prims, t| {
-                    stop = leaf(prims, None, t);
-                    stop
-                });
-                stop
-            }
-        }
+        let view = self.lod.as_ref().map(|l| l.view(ray));
+        let mut stop = false;
+        self.bvh.traverse(test, tmax, |prims, t| {
+            stop = leaf(prims, view.as_ref(), t);
+            stop
+        });
+        stop
     }
 
     /// The colour of a strand hit at `level`, its contrast reduced when the object's level
@@ -189,8 +180,8 @@ impl Accel {
     }
 
     /// Like [`Accel::build`], with level of detail for the strand sets given [`LodParams`]:
-    /// their strands are pruned (ranks seeded by the object index) into groups with a BVH
-    /// each. Meshes ignore the parameters.
+    /// their strands are pruned (ranks seeded by the object index) into groups, which
+    /// their BVH's items carry. Meshes ignore the parameters.
     pub fn build_with_lod(shapes: Vec<(Shape, u32, Option<LodParams>)>) -> Accel {
         let objects: Vec<Object> = shapes
             .into_par_iter()
@@ -200,12 +191,16 @@ impl Accel {
                     (Shape::Strands(s), Some(p)) => StrandLod::build(s, p, lod_seed(i)),
                     _ => None,
                 };
-                let bvh = if lod.is_some() { Bvh::default() } else { Bvh::build(build_items(&shape)) };
+                let items = match (&shape, &lod) {
+                    (Shape::Strands(s), Some(l)) => l.items(s),
+                    _ => build_items(&shape),
+                };
+                let bvh = Bvh::build(items);
                 Object { shape, material, bvh, lod }
             })
             .collect();
         let top = Bvh::build(
-            objects.iter().enumerate().map(|(i, o)| BuildItem { bounds: o.bounds(), id: i as u32 }).collect(),
+            objects.iter().enumerate().map(|(i, o)| BuildItem { bounds: o.bvh.bounds(), id: i as u32 }).collect(),
         );
         Accel { objects, top }
     }
@@ -217,7 +212,7 @@ impl Accel {
 
     /// Bytes held by all BVHs (top level included).
     pub fn bvh_bytes(&self) -> usize {
-        self.top.memory_bytes() + self.objects.iter().map(Object::bvh_bytes).sum::<usize>()
+        self.top.memory_bytes() + self.objects.iter().map(|o| o.bvh.memory_bytes()).sum::<usize>()
     }
 
     /// The closest hit along the ray before `ray.tmax`.
@@ -320,18 +315,20 @@ fn intersect_leaf(
         }
         Shape::Strands(s) => {
             for chunk in prims.chunks(4) {
-                let (p0, p1, levels) = gather4(s, chunk, skipped, widen);
-                let hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, p0, p1);
+                let lanes = gather4(s, chunk, skipped, widen);
+                let mut hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, lanes.p0, lanes.p1);
+                lanes.drop_hidden(&mut hits);
                 if any && hits.mask != 0 {
                     // Any lane's hit will do: skip forming the normal.
                     let lane = hits.mask.trailing_zeros() as usize;
                     let kind = HitKind::Segment { s: 0.0, normal: Vec3::ZERO };
-                    return Some((chunk[lane], hits.t()[lane], kind, levels[lane]));
+                    return Some((lanes.prim[lane], hits.t()[lane], kind, lanes.level[lane]));
                 }
                 if let Some(lane) = hits.nearest() {
                     if let Some(h) = hits.hit(lane) {
                         tmax = h.t;
-                        best = Some((chunk[lane], h.t, HitKind::Segment { s: h.s, normal: h.normal }, levels[lane]));
+                        let kind = HitKind::Segment { s: h.s, normal: h.normal };
+                        best = Some((lanes.prim[lane], h.t, kind, lanes.level[lane]));
                     }
                 }
             }
@@ -340,32 +337,57 @@ fn intersect_leaf(
     best
 }
 
-/// The end points of up to four segments of `s` (given by their first points) as the
-/// lanes of [`segment::intersect_cylinder4`], radii widened for the ray's level of detail
-/// by `widen`, and each lane's level. Skipped and missing lanes stay empty (no surface).
+/// Up to four segments of a leaf as the lanes of [`segment::intersect_cylinder4`].
+struct Lanes4 {
+    /// End points `[x, y, z, radius]`, radii widened for the ray's level of detail.
+    p0: [f32x4; 4],
+    p1: [f32x4; 4],
+    /// Each lane's segment (its first point), level, and the distance from which a hit on
+    /// it does not count (its pruning group is hidden there; infinite without LOD).
+    prim: [u32; 4],
+    level: [u32; 4],
+    cut: [f32; 4],
+}
+
+impl Lanes4 {
+    /// Clears the lanes of `hits` that lie where their group is hidden.
+    #[inline(always)]
+    fn drop_hidden(&self, hits: &mut segment::Hits4) {
+        let t = hits.t();
+        for (lane, (&t, &cut)) in t.iter().zip(&self.cut).enumerate() {
+            if t >= cut {
+                hits.mask &= !(1 << lane);
+            }
+        }
+    }
+}
+
+/// The segments of up to four leaf items of `s` (BVH item ids, which carry the pruning
+/// group when `widen` is given) as seen by the ray: skipped, missing and culled lanes stay
+/// empty (no surface).
 #[inline(always)]
-fn gather4(
-    s: &StrandSet,
-    firsts: &[u32],
-    skipped: impl Fn(u32) -> bool,
-    widen: Widen,
-) -> ([f32x4; 4], [f32x4; 4], [u32; 4]) {
-    let (mut p0, mut p1, mut levels) = ([f32x4::ZERO; 4], [f32x4::ZERO; 4], [0u32; 4]);
-    for (lane, &p) in firsts.iter().enumerate() {
-        if !skipped(p) {
-            let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
-            match widen {
-                None => (p0[lane], p1[lane]) = (f32x4::new(a), f32x4::new(b)),
-                Some(group) => {
-                    let (scale, level) = group.widen(a, b);
-                    p0[lane] = f32x4::new([a[0], a[1], a[2], a[3] * scale]);
-                    p1[lane] = f32x4::new([b[0], b[1], b[2], b[3] * scale]);
-                    levels[lane] = level;
+fn gather4(s: &StrandSet, ids: &[u32], skipped: impl Fn(u32) -> bool, widen: Widen) -> Lanes4 {
+    let mut lanes =
+        Lanes4 { p0: [f32x4::ZERO; 4], p1: [f32x4::ZERO; 4], prim: [0; 4], level: [0; 4], cut: [f32::INFINITY; 4] };
+    for (lane, &id) in ids.iter().enumerate() {
+        let (p, group) = widen.map_or((id, 0), |v| v.decode(id));
+        lanes.prim[lane] = p;
+        if skipped(p) {
+            continue;
+        }
+        let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
+        match widen {
+            None => (lanes.p0[lane], lanes.p1[lane]) = (f32x4::new(a), f32x4::new(b)),
+            Some(view) => {
+                if let Some((scale, level, cut)) = view.segment(a, b, group) {
+                    lanes.p0[lane] = f32x4::new([a[0], a[1], a[2], a[3] * scale]);
+                    lanes.p1[lane] = f32x4::new([b[0], b[1], b[2], b[3] * scale]);
+                    (lanes.level[lane], lanes.cut[lane]) = (level, cut);
                 }
             }
         }
     }
-    (p0, p1, levels)
+    lanes
 }
 
 /// The seed of the pruning ranks of object `object`.

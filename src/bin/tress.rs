@@ -538,8 +538,8 @@ fn info(world: &World) {
     lod_info(world);
 }
 
-/// The level of detail of each strand set that has it, and the memory it adds: group BVHs
-/// against the single BVH the set would have without it, plus the LOD's bookkeeping.
+/// The level of detail of each strand set that has it, and the memory it adds: its BVH with
+/// widened bounds against the BVH the set would have without it, plus the LOD's bookkeeping.
 fn lod_info(world: &World) {
     for (i, o) in world.accel.objects.iter().enumerate() {
         let (Some(lod), Shape::Strands(s)) = (o.lod(), &o.shape) else { continue };
@@ -556,7 +556,7 @@ fn lod_info(world: &World) {
             lod.group_strands()
         );
         println!(
-            "  group bvhs {} (one bvh: {}), bookkeeping {} B: added {}{} ({:+.2} % of the strand data)",
+            "  lod bvh {} (without lod: {}), bookkeeping {} B: added {}{} ({:+.2} % of the strand data)",
             human_bytes(o.bvh_bytes() as u64),
             human_bytes(plain as u64),
             lod.bookkeeping_bytes(),
