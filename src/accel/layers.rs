@@ -91,7 +91,10 @@ fn leaf_hits(
 impl Accel {
     /// True when some strand set has per-point opacity, so rays must look past hits.
     pub fn has_transparency(&self) -> bool {
-        self.objects.iter().any(|o| matches!(&o.shape, Shape::Strands(s) if s.opacity.is_some()))
+        self.objects.iter().any(|o| {
+            matches!(&o.shape, Shape::Strands(s) if s.opacity.is_some())
+                || o.lod().is_some_and(|l| l.has_transparency())
+        })
     }
 
     /// The nearest hits along `ray` beyond `tmin`, sorted by distance, into `out`
@@ -125,7 +128,7 @@ impl Accel {
                                 return false;
                             }
                             let hit = Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) };
-                            let layer = LayerHit { hit, opacity: opacity(&o.shape, prim, kind) };
+                            let layer = LayerHit { hit, opacity: opacity(&o.shape, prim, kind) * o.lod_opacity(level) };
                             let at = out.partition_point(|h| h.hit.t <= t);
                             out.insert(at, layer);
                             // Nothing behind an opaque hit is seen; keep at most k.
@@ -170,8 +173,8 @@ impl Accel {
                 let o = &self.objects[object as usize];
                 let skip = skip.filter(|s| s.object == object);
                 let blocked = o.traverse(&test, &lod_ray, t, |prims, widen, t| {
-                    leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), skip, widen, |prim, _, kind, _| {
-                        transmitted *= 1.0 - opacity(&o.shape, prim, kind);
+                    leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), skip, widen, |prim, _, kind, level| {
+                        transmitted *= 1.0 - opacity(&o.shape, prim, kind) * o.lod_opacity(level);
                         transmitted < NEGLIGIBLE_TRANSMITTANCE
                     })
                 });

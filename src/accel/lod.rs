@@ -54,11 +54,17 @@ pub struct LodParams {
     /// look differs from the full one by about `1 / start` of the coverage's variance
     /// (the thesis' rule, switching when the ray grows as thick as a hair, is `start = 1`).
     pub start: f32,
+    /// How many times wider than [`LodParams::radius_scale`] strands are drawn at levels
+    /// above 0, with opacity divided as much, so they cover the same expected area as the
+    /// strands they stand for but fractionally: a pixel sees several semi-transparent kept
+    /// strands instead of a frozen hit-or-miss pattern of a few opaque ones. Capped so a
+    /// strand never grows wider than the level's footprint. 1 draws them opaque.
+    pub spread: f32,
 }
 
 impl Default for LodParams {
     fn default() -> Self {
-        LodParams { decimation: 1.5, levels: 8, compensation: 0.8, contrast: false, start: 1.0 }
+        LodParams { decimation: 1.5, levels: 8, compensation: 0.8, contrast: false, start: 1.0, spread: 1.0 }
     }
 }
 
@@ -73,6 +79,9 @@ impl LodParams {
         }
         if !(self.start.is_finite() && (1.0..=1000.0).contains(&self.start)) {
             return Err(format!("lod `start` {} must be between 1 and 1000", self.start));
+        }
+        if !(self.spread.is_finite() && (1.0..=1000.0).contains(&self.spread)) {
+            return Err(format!("lod `spread` {} must be between 1 and 1000", self.spread));
         }
         if !(self.compensation.is_finite() && self.compensation > 0.0 && self.compensation <= 1.0) {
             return Err(format!("lod `compensation` {} must be above 0 and at most 1", self.compensation));
@@ -91,6 +100,17 @@ impl LodParams {
     /// for 5 removed) as the level grows; `c = 1` preserves the projected area exactly.
     pub fn radius_scale(&self, level: u32) -> f32 {
         1.0 + self.compensation * (self.decimation.powi(level as i32) - 1.0)
+    }
+
+    /// Extra widening of the strands at `level` beyond [`LodParams::radius_scale`]: 1 at
+    /// level 0, else `spread`, at most the level's footprint `start * d^level` over the
+    /// compensated width. The strand's opacity there is its inverse.
+    pub fn spread_at(&self, level: u32) -> f32 {
+        if level == 0 {
+            return 1.0;
+        }
+        let footprint = self.start * self.decimation.powi(level as i32);
+        self.spread.min(footprint / self.radius_scale(level)).max(1.0)
     }
 
     /// The last level of each of `n` strands (its group): strands are ranked by a random
@@ -127,8 +147,10 @@ pub struct StrandLod {
     /// `start * width * d^(k + 1)`: the footprint at which the level passes `k` (without
     /// jitter).
     thresholds: [f32; MAX_LEVELS],
-    /// Radius factor per level.
+    /// Radius factor per level, spread included.
     scales: [f32; MAX_LEVELS],
+    /// Opacity factor per level: `1 / spread_at(level)`.
+    opacities: [f32; MAX_LEVELS],
     /// Mean strand colour, when contrast reduction is on and the strands have colours.
     mean_color: Option<Vec3>,
 }
@@ -235,10 +257,12 @@ impl StrandLod {
         let mut group_strands = vec![0u32; levels];
         groups_of.iter().for_each(|&g| group_strands[g as usize] += 1);
         let mut thresholds = [f32::INFINITY; MAX_LEVELS];
-        let mut scales = [1.0; MAX_LEVELS];
+        let (mut scales, mut opacities) = ([1.0; MAX_LEVELS], [1.0; MAX_LEVELS]);
         for l in 0..levels {
             thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
-            scales[l] = params.radius_scale(l as u32);
+            let spread = params.spread_at(l as u32);
+            scales[l] = params.radius_scale(l as u32) * spread;
+            opacities[l] = 1.0 / spread;
         }
         let mean_color = strands.colors.as_ref().filter(|c| params.contrast && !c.is_empty()).map(|c| {
             let sum = c.iter().fold([0.0f64; 3], |a, x| [a[0] + x[0] as f64, a[1] + x[1] as f64, a[2] + x[2] as f64]);
@@ -253,6 +277,7 @@ impl StrandLod {
             groups_of,
             thresholds,
             scales,
+            opacities,
             mean_color,
         })
     }
@@ -360,9 +385,20 @@ impl StrandLod {
         }
     }
 
-    /// Radius factor of the strands at `level`.
+    /// Radius factor of the strands at `level`, spread included.
     pub fn radius_scale(&self, level: u32) -> f32 {
         self.scales[(level as usize).min(MAX_LEVELS - 1)]
+    }
+
+    /// Factor on the opacity of the strands at `level`: the inverse of their spread, so
+    /// width times opacity stays the compensated width (1 at level 0).
+    pub fn opacity(&self, level: u32) -> f32 {
+        self.opacities[(level as usize).min(MAX_LEVELS - 1)]
+    }
+
+    /// True when some level draws strands semi-transparent.
+    pub fn has_transparency(&self) -> bool {
+        self.opacities[..self.params.levels as usize].iter().any(|&a| a < 1.0)
     }
 }
 
@@ -518,6 +554,72 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// Mean and variance over rays along -z through the unit square of the opacity the
+    /// curtain shows (1 - transmittance), at the level forced by a constant `footprint`.
+    fn opacity_stats(accel: &Accel, footprint: f32) -> (f64, f64) {
+        let mut rng = GenRng::seed_from_u64(12);
+        let n = 20_000;
+        let cone = RayCone { width: footprint, spread: 0.0 };
+        let (mut sum, mut sq) = (0.0, 0.0);
+        for _ in 0..n {
+            let origin = Vec3::new(rng.random(), 0.1 + 0.8 * rng.random::<f32>(), 1.0);
+            let a = 1.0 - accel.transmittance_cone(origin, -Vec3::Z, 2.0, None, cone) as f64;
+            (sum, sq) = (sum + a, sq + a * a);
+        }
+        let mean = sum / n as f64;
+        (mean, sq / n as f64 - mean * mean)
+    }
+
+    #[test]
+    fn spread_strands_keep_the_projected_coverage_and_smooth_it() {
+        let s = curtain(8000, 0.000025, 4);
+        let p = LodParams { compensation: 1.0, start: 16.0, ..Default::default() };
+        let spread = LodParams { spread: 4.0, ..p };
+        let opaque = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
+        let soft = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(spread))]);
+        let lod = soft.objects[0].lod().unwrap();
+        assert!(soft.has_transparency() && !opaque.has_transparency());
+        let (full, _) = opacity_stats(&opaque, 0.0);
+        for l in 1..5u32 {
+            // Width times opacity is the compensated width.
+            let ratio = lod.radius_scale(l) * lod.opacity(l) / p.radius_scale(l);
+            assert!((ratio - 1.0).abs() < 1e-5, "level {l}: {ratio}");
+            let footprint = 16.0 * lod.width() * p.decimation.powi(l as i32) * 1.01;
+            let (hard_mean, hard_var) = opacity_stats(&opaque, footprint);
+            let (soft_mean, soft_var) = opacity_stats(&soft, footprint);
+            // Strands at random places: the expected opacity is 1 - exp(-summed width
+            // times opacity), the same for opaque and spread strands, and close to the
+            // full set's coverage (standard deviation of a mean here about 0.004).
+            assert!((soft_mean - hard_mean).abs() < 0.02, "level {l}: {soft_mean} vs {hard_mean}");
+            assert!((soft_mean - full).abs() < 0.03, "level {l}: {soft_mean} vs full {full}");
+            // Fractional coverage varies less from ray to ray than hit-or-miss.
+            assert!(soft_var < 0.6 * hard_var, "level {l}: variance {soft_var} vs {hard_var}");
+        }
+    }
+
+    #[test]
+    fn a_near_ray_never_sees_lod_opacity() {
+        let s = curtain(2000, 0.0005, 6);
+        let p = LodParams { spread: 8.0, ..Default::default() };
+        let accel = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(p))]);
+        let mut rng = GenRng::seed_from_u64(13);
+        let (mut layers, mut hits) = (Vec::new(), 0);
+        for i in 0..3000 {
+            let origin = Vec3::new(rng.random(), 0.1 + 0.8 * rng.random::<f32>(), 1.0);
+            let mut ray = Ray::new(origin, -Vec3::Z);
+            // Footprints thinner than a hair at the curtain: level 0, opaque, whatever the jitter.
+            ray.cone = if i % 2 == 0 { RayCone::default() } else { RayCone { width: 0.0, spread: 0.0009 } };
+            accel.intersect_k(&ray, 0.0, 4, &[], &mut layers);
+            assert!(layers.len() <= 1, "ray {i}: an opaque hit ends the list");
+            if let Some(l) = layers.first() {
+                assert_eq!((l.hit.level, l.opacity, l.hit.radius_scale), (0, 1.0, 1.0), "ray {i}");
+                assert_eq!(accel.transmittance_cone(origin, -Vec3::Z, 2.0, None, ray.cone), 0.0);
+                hits += 1;
+            }
+        }
+        assert!(hits > 300, "the test needs hits: {hits}");
     }
 
     /// Brute force over every segment: the level of each from `level_at` at its midpoint,

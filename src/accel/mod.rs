@@ -109,6 +109,12 @@ impl Object {
         stop
     }
 
+    /// Factor on the opacity of a strand hit at `level` (1 without level of detail):
+    /// coarse strands drawn wider are as much more transparent ([`StrandLod::opacity`]).
+    pub fn lod_opacity(&self, level: u32) -> f32 {
+        self.lod.as_ref().map_or(1.0, |l| l.opacity(level))
+    }
+
     /// The colour of a strand hit at `level`, its contrast reduced when the object's level
     /// of detail asks for it ([`StrandLod::color`]); unchanged without level of detail.
     pub fn lod_color(&self, level: u32, color: Option<Vec3>) -> Option<Vec3> {

@@ -394,6 +394,7 @@ struct LodToml {
     compensation: Option<f32>,
     contrast: Option<bool>,
     start: Option<f32>,
+    spread: Option<f32>,
 }
 
 impl LodToml {
@@ -405,6 +406,7 @@ impl LodToml {
             compensation: self.compensation.unwrap_or(d.compensation),
             contrast: self.contrast.unwrap_or(d.contrast),
             start: self.start.unwrap_or(d.start),
+            spread: self.spread.unwrap_or(d.spread),
         };
         p.validate()?;
         Ok(p)
