@@ -72,10 +72,16 @@ pub fn intersect_cylinder4(
     p0: [[f32; 4]; 4],
     p1: [[f32; 4]; 4],
 ) -> Hits4 {
-    let (g, mut valid) = Local4::new(origin, dir, p0, p1);
-    let miss = Hits4 { mask: 0, t: f32x4::ZERO, s: f32x4::ZERO, u: f32x4::ZERO, g };
+    let miss = |g| Hits4 { mask: 0, t: f32x4::ZERO, s: f32x4::ZERO, u: f32x4::ZERO, g };
+    // Most segments of a leaf pass far from the ray: the cheap bound drops whole groups of
+    // four before the exact frame is built.
+    let near = Candidates::new(origin, dir, p0, p1);
+    if near.near().to_bitmask() == 0 {
+        return miss(Local4::EMPTY);
+    }
+    let (g, mut valid) = Local4::from_candidates(origin, dir, near);
     if valid.to_bitmask() == 0 {
-        return miss;
+        return miss(g);
     }
     // Cychosz & Waggenspack's n = dir x axis vanishes exactly when the ray is parallel to the
     // axis; |dir x axis|^2 = |axis|^2 |d_perp|^2, so d_perp carries the same test.
@@ -96,7 +102,7 @@ pub fn intersect_cylinder4(
     let disc = aa * rho * rho - g.cross2;
     valid &= disc.simd_ge(f32x4::ZERO);
     if valid.to_bitmask() == 0 {
-        return miss;
+        return miss(g);
     }
     let cc = g.cp.length_squared() - rho * rho;
     // Stable roots (Press et al., Numerical Recipes, section 5.6; Haines et al. 2019): with the
@@ -324,23 +330,40 @@ struct Local4 {
     dr: f32x4,
 }
 
-impl Local4 {
-    /// The frames of four segments and the mask of lanes that may hit: degenerate segments
-    /// and segments the ray line passes too far from are culled.
+/// Four segments in structure-of-arrays form, with the lanes that may be hit: the first,
+/// cheap stage of [`Local4::new`].
+struct Candidates {
+    q0: V4,
+    a: V4,
+    l2: f32x4,
+    r0: f32x4,
+    r1: f32x4,
+    /// `n = dir x a`, its squared length and the larger radius, shared with the exact stage.
+    n: V4,
+    n2: f32x4,
+    rmax: f32x4,
+    /// Lanes holding a surface.
+    valid: f32x4,
+    /// Lanes whose axis line the ray line surely passes too far from to hit.
+    far: f32x4,
+}
+
+impl Candidates {
+    /// Loads four segments and culls degenerate ones and those whose axis line the ray line
+    /// passes farther from than the larger radius, by a conservative bound computed from the
+    /// plainly rounded offset `origin - p0`.
     ///
-    /// Translating the origin to p0's frame (`origin - p0`) in f32 would already round away
-    /// up to half an ulp of |origin|, 3e-5 at 1e3 units, and stepping along the ray would
-    /// round the products `t dir` as much again. Instead the offset is kept exact as a sum
-    /// hi + lo (Knuth's TwoSum, TAOCP vol. 2, section 4.2.2), the step t0 is cut to 12
-    /// significant bits and the direction split into two parts of at most 12 bits (the
-    /// splitting of Dekker 1971, "A floating-point technique for extending the available
-    /// precision"), so the products t0 * dir_hi and t0 * dir_lo are exact. The point `c` of
-    /// the ray at t0 then lies within 2^-11 |t0| of the ray point nearest p0 and is accurate
-    /// to f32 precision *of its own small size*, about 2^-35 |t0|, instead of 2^-24 |origin|.
-    /// Everything after works with lengths of the segment's scale; the only loss left is the
-    /// rounding of t = t0 + u itself. Cost: about 35 extra flops, no division.
+    /// The exact stage culls a lane when `m^2 > rmax^2 |n|^2 (1 + 2^-10)` with `m = c.n`
+    /// computed from the exactly placed point `c`. Here `m` is `w.n` with `w = origin - p0`
+    /// rounded: `c - w` lies along `dir`, perpendicular to `n`, so both are the same value
+    /// up to rounding, which is below `2^-21 |w| |n|` for the two of them together (one
+    /// rounding per component of `w`, three per dot product; `c` is no longer than `w`).
+    /// Subtracting `e = 3 * 2^-18 |w|_inf |n|_inf`, eight times that bound, and comparing
+    /// against a threshold widened by another 2^-10 culls only lanes the exact stage would
+    /// cull: the result is the same, bit for bit, and groups of four far segments skip the
+    /// TwoSum transform, the division and the frame.
     #[inline(always)]
-    fn new(origin: Vec3, dir: Vec3, p0: [[f32; 4]; 4], p1: [[f32; 4]; 4]) -> (Local4, f32x4) {
+    fn new(origin: Vec3, dir: Vec3, p0: [[f32; 4]; 4], p1: [[f32; 4]; 4]) -> Candidates {
         // Structure of arrays: component k of the four points.
         let col = |p: &[[f32; 4]; 4], k: usize| f32x4::new([p[0][k], p[1][k], p[2][k], p[3][k]]);
         let (q0, q1) = (
@@ -354,7 +377,56 @@ impl Local4 {
         let a = q1.sub(q0);
         let l2 = a.length_squared();
         valid &= l2.simd_gt(f32x4::ZERO); // zero-length segment: no axis, no side surface
+        let n = V4::splat(dir).cross(a);
+        let w = V4::splat(origin).sub(q0);
+        let n2 = n.length_squared();
+        let inf_norm = |v: V4| v.x.abs().fast_max(v.y.abs()).fast_max(v.z.abs());
+        let e = f32x4::splat(3.0 / 262_144.0) * inf_norm(w) * inf_norm(n);
+        let m = w.dot(n).abs() - e;
+        let rmax = r0.fast_max(r1);
+        let far = m.simd_gt(f32x4::ZERO) & (m * m).simd_gt(rmax * rmax * n2 * f32x4::splat(1.0 + 1.0 / 512.0));
+        Candidates { q0, a, l2, r0, r1, n, n2, rmax, valid, far }
+    }
 
+    /// Lanes holding a surface the ray line may come near enough to hit.
+    #[inline(always)]
+    fn near(&self) -> f32x4 {
+        self.valid & !self.far
+    }
+}
+
+impl Local4 {
+    /// Holds no segment: the frame of a group culled whole.
+    const EMPTY: Local4 = {
+        let z = f32x4::ZERO;
+        let v = V4 { x: z, y: z, z };
+        Local4 { t0: z, a: v, inv_l2: z, sc: z, sd: z, cp: v, dp: v, cross2: z, r0: z, dr: z }
+    };
+
+    /// The frames of four segments and the mask of lanes that may hit: degenerate segments
+    /// and segments the ray line passes too far from are culled.
+    #[inline(always)]
+    fn new(origin: Vec3, dir: Vec3, p0: [[f32; 4]; 4], p1: [[f32; 4]; 4]) -> (Local4, f32x4) {
+        Local4::from_candidates(origin, dir, Candidates::new(origin, dir, p0, p1))
+    }
+
+    /// The exact stage of [`Local4::new`].
+    ///
+    /// Translating the origin to p0's frame (`origin - p0`) in f32 would already round away
+    /// up to half an ulp of |origin|, 3e-5 at 1e3 units, and stepping along the ray would
+    /// round the products `t dir` as much again. Instead the offset is kept exact as a sum
+    /// hi + lo (Knuth's TwoSum, TAOCP vol. 2, section 4.2.2), the step t0 is cut to 12
+    /// significant bits and the direction split into two parts of at most 12 bits (the
+    /// splitting of Dekker 1971, "A floating-point technique for extending the available
+    /// precision"), so the products t0 * dir_hi and t0 * dir_lo are exact. The point `c` of
+    /// the ray at t0 then lies within 2^-11 |t0| of the ray point nearest p0 and is accurate
+    /// to f32 precision *of its own small size*, about 2^-35 |t0|, instead of 2^-24 |origin|.
+    /// Everything after works with lengths of the segment's scale; the only loss left is the
+    /// rounding of t = t0 + u itself. Cost: about 35 extra flops, no division.
+    #[inline(always)]
+    fn from_candidates(origin: Vec3, dir: Vec3, k: Candidates) -> (Local4, f32x4) {
+        let mut valid = k.near();
+        let Candidates { q0, a, l2, r0, r1, n, n2, rmax, .. } = k;
         let (hx, lx) = two_sum(f32x4::splat(origin.x), -q0.x);
         let (hy, ly) = two_sum(f32x4::splat(origin.y), -q0.y);
         let (hz, lz) = two_sum(f32x4::splat(origin.z), -q0.z);
@@ -373,10 +445,8 @@ impl Local4 {
         // met. Compared squared, without a division; the 2^-10 of slack keeps rounding from
         // culling a grazing hit that the full test would find. (A ray parallel to the axis
         // has n = 0 and passes on.)
-        let n = d.cross(a);
         let m = c.dot(n);
-        let rmax = r0.fast_max(r1);
-        valid &= !(m * m).simd_gt(rmax * rmax * n.length_squared() * f32x4::splat(1.0 + 1.0 / 1024.0));
+        valid &= !(m * m).simd_gt(rmax * rmax * n2 * f32x4::splat(1.0 + 1.0 / 1024.0));
 
         let inv_l2 = f32x4::ONE / l2;
         valid &= inv_l2.is_finite();
@@ -890,6 +960,44 @@ mod tests {
         }
         eprintln!("far origin: {hits} hits, worst |t - t_ref| {worst_t:.2e}, rebuilt point {worst_rebuilt:.2e}, origin + t dir off surface {worst_ray_point:.2e}");
         assert!(hits > 800);
+    }
+
+    #[test]
+    fn cheap_bound_culls_only_what_the_exact_test_culls() {
+        // Rays aimed within 0.3 % of the larger radius (just inside and just outside it) from
+        // near and far, at scales from 1e-3 to 1e3: a lane the cheap bound drops must also be
+        // dropped by the exact test. Rays passing at three radii from up to the segment's
+        // scale away must all be dropped by the bound.
+        let mut rng = Lcg(7);
+        let (mut dropped, mut kept_far) = (0, 0);
+        for i in 0..40_000 {
+            let clear = i % 2 == 1;
+            let scale = 10f32.powf(rng.range(-3.0, 3.0));
+            let base = rng.unit() * scale * rng.range(0.0, 2.0);
+            let axis = rng.unit() * scale * 0.05;
+            let r = scale * 0.002 * rng.range(0.1, 1.0);
+            let (p0, p1) = (pt(base, r), pt(base + axis, r * rng.range(0.2, 1.0)));
+            let (miss, far) = if clear {
+                (rng.range(3.0, 4.0), rng.range(-3.0, 0.0))
+            } else {
+                (rng.range(0.998, 1.003), rng.range(-1.0, 4.0))
+            };
+            let target = base + axis * rng.range(-0.2, 1.2) + perp(axis) * (r * miss);
+            // A clear ray runs perpendicular to the axis and to its offset, so the lines pass
+            // three radii apart; a grazing one comes from any direction.
+            let from = if clear { axis.cross(perp(axis)).normalize() } else { rng.unit() };
+            let o = target + from * scale * 10f32.powf(far);
+            let d = (target - o).normalize();
+            let none = [0.0; 4];
+            let k = Candidates::new(o, d, [p0, none, none, none], [p1, none, none, none]);
+            let cheap = k.near().to_bitmask() & 1 != 0;
+            let exact = Local4::from_candidates(o, d, Candidates { far: f32x4::ZERO, ..k }).1.to_bitmask() & 1 != 0;
+            assert!(cheap || !exact, "the bound culled a lane the exact test keeps: o {o:?} d {d:?} {p0:?} {p1:?}");
+            assert!(!(clear && cheap), "a ray three radii away passed the bound: o {o:?} d {d:?} {p0:?} {p1:?}");
+            dropped += usize::from(!cheap && !clear);
+            kept_far += usize::from(cheap && !exact);
+        }
+        eprintln!("grazing rays: the bound dropped {dropped}, kept {kept_far} that the exact test dropped");
     }
 
     fn p0_vec(p: [f32; 4]) -> Vec3 {
