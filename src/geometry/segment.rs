@@ -72,16 +72,16 @@ pub fn intersect_cylinder4(
     p0: [[f32; 4]; 4],
     p1: [[f32; 4]; 4],
 ) -> Hits4 {
-    let miss = |g| Hits4 { mask: 0, t: f32x4::ZERO, s: f32x4::ZERO, u: f32x4::ZERO, g };
+    let miss = Hits4 { mask: 0, t: f32x4::ZERO, s: f32x4::ZERO, u: f32x4::ZERO, g: None };
     // Most segments of a leaf pass far from the ray: the cheap bound drops whole groups of
     // four before the exact frame is built.
     let near = Candidates::new(origin, dir, p0, p1);
     if near.near().to_bitmask() == 0 {
-        return miss(Local4::EMPTY);
+        return miss;
     }
     let (g, mut valid) = Local4::from_candidates(origin, dir, near);
     if valid.to_bitmask() == 0 {
-        return miss(g);
+        return miss;
     }
     // Cychosz & Waggenspack's n = dir x axis vanishes exactly when the ray is parallel to the
     // axis; |dir x axis|^2 = |axis|^2 |d_perp|^2, so d_perp carries the same test.
@@ -102,7 +102,7 @@ pub fn intersect_cylinder4(
     let disc = aa * rho * rho - g.cross2;
     valid &= disc.simd_ge(f32x4::ZERO);
     if valid.to_bitmask() == 0 {
-        return miss(g);
+        return miss;
     }
     let cc = g.cp.length_squared() - rho * rho;
     // Stable roots (Press et al., Numerical Recipes, section 5.6; Haines et al. 2019): with the
@@ -128,7 +128,7 @@ pub fn intersect_cylinder4(
     let far_ok = accept(far);
     let u = near_ok.select(near, far);
     let mask = (valid & (near_ok | far_ok)).to_bitmask();
-    Hits4 { mask, t: g.t0 + u, s: g.sc + u * g.sd, u, g }
+    Hits4 { mask, t: g.t0 + u, s: g.sc + u * g.sd, u, g: Some(g) }
 }
 
 /// The result of [`intersect_cylinder4`]: which lanes hit, and where.
@@ -138,7 +138,8 @@ pub struct Hits4 {
     t: f32x4,
     s: f32x4,
     u: f32x4,
-    g: Local4,
+    /// The frames, when some lane may hit (a miss returns without copying them).
+    g: Option<Local4>,
 }
 
 impl Hits4 {
@@ -171,7 +172,7 @@ impl Hits4 {
         if self.mask & (1 << lane) == 0 {
             return None;
         }
-        let g = self.g.lane(lane);
+        let g = self.g.as_ref()?.lane(lane);
         let u = self.u.to_array()[lane];
         // The cylinder's normal is the radial direction of the hit, perpendicular to the axis.
         finish(self.t.to_array()[lane], self.s.to_array()[lane], g.cp + g.dp * u)
@@ -396,13 +397,6 @@ impl Candidates {
 }
 
 impl Local4 {
-    /// Holds no segment: the frame of a group culled whole.
-    const EMPTY: Local4 = {
-        let z = f32x4::ZERO;
-        let v = V4 { x: z, y: z, z };
-        Local4 { t0: z, a: v, inv_l2: z, sc: z, sd: z, cp: v, dp: v, cross2: z, r0: z, dr: z }
-    };
-
     /// The frames of four segments and the mask of lanes that may hit: degenerate segments
     /// and segments the ray line passes too far from are culled.
     #[inline(always)]
