@@ -52,7 +52,7 @@ impl PixelSampler {
     pub fn next_1d(&mut self) -> f32 {
         let d = self.dimension;
         self.dimension += 1;
-        if d % 4 == 0 {
+        if d.is_multiple_of(4) {
             // The table has 256 dimensions; beyond them, re-seed per block of 256 so deep
             // paths still get independent values. Four dimensions cost about what one does
             // (`sample_4d` gives the values of `sample`, four lanes at once).
