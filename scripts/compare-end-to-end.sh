@@ -11,7 +11,7 @@
 # (LLVM 15 fails to select `fminimum`: apt-get install -y libllvm19; the newest
 # /usr/lib/*/libLLVM* is passed as DRJIT_LIBLLVM_PATH unless it is set).
 #
-# Figures, per renderer the median over the rounds:
+# Figures, per renderer the median over the rounds (the lower middle one for an even count):
 #   process_wall_s  the whole process: start-up, reading the files, BVH build, render,
 #                   writing the image (Mitsuba's includes a 1-spp warm-up render that
 #                   JIT-compiles its kernels)
