@@ -12,7 +12,7 @@ use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_s
 use tress::film::Region;
 use tress::partial::{fingerprint, Checkpointer, Partial};
 use tress::render::{render_tiles, Control, TiledFilm};
-use tress::scene::{prepare, Description, World};
+use tress::scene::{prepare, prepare_owned, Description, World};
 use tress::shading::Material;
 use tress::stats::{human_bytes, peak_memory_bytes};
 
@@ -234,7 +234,7 @@ fn run(cli: Cli) -> Result<()> {
         Command::Info { scene, demo_strands, frame } => {
             let o = Overrides { demo_strands, frame, ..Default::default() };
             let desc = load(scene.as_deref(), &o)?;
-            let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
+            let (world, times) = pool(desc.settings.threads)?.install(|| prepare_owned(desc))?;
             info(&world);
             println!("build: load {:.3} s, bvh {:.3} s", times.load.as_secs_f64(), times.build.as_secs_f64());
             Ok(())
@@ -321,7 +321,8 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: 
     }
     let interrupt = Interrupt::install()?;
     let pool = pool(desc.settings.threads)?;
-    let (world, times) = pool.install(|| prepare(&desc))?;
+    // The description is not needed again: its inline strands move into the world.
+    let (world, times) = pool.install(|| prepare_owned(desc))?;
     for w in &world.warnings {
         eprintln!("warning: {w}");
     }

@@ -47,6 +47,21 @@ pub(super) struct Surface {
     pub hair: Option<(Vec3, f32, Vec3)>,
     /// Unit geometric normal facing the incoming ray.
     pub geometric: Vec3,
+    /// For hair: the strand and what is known of it at the hit.
+    pub strand_point: Option<StrandPoint>,
+}
+
+impl Surface {
+    /// The hit as the AOVs record it.
+    pub fn first_hit(&self, hit: &Hit) -> FirstHit {
+        FirstHit {
+            t: hit.t,
+            normal: self.sp.tangent.unwrap_or(self.sp.normal),
+            object: hit.object,
+            strand: self.strand_point.map(|p| p.strand),
+            strand_point: self.strand_point,
+        }
+    }
 }
 
 /// Radiance arriving along `ray`, and the first hit for AOVs.
@@ -191,19 +206,7 @@ fn shade(
     let surface = surface_at(&object.shape, hit, ray);
     let sp = &surface.sp;
     let wo = -ray.dir;
-    let first = FirstHit {
-        t: hit.t,
-        normal: sp.tangent.unwrap_or(sp.normal),
-        object: hit.object,
-        strand: match &object.shape {
-            Shape::Strands(s) => Some(s.strand_of(hit.prim)),
-            Shape::Mesh(_) => None,
-        },
-        strand_point: match (&object.shape, hit.kind) {
-            (Shape::Strands(s), HitKind::Segment { s: along, .. }) => Some(s.strand_point(hit.prim, along)),
-            _ => None,
-        },
-    };
+    let first = surface.first_hit(hit);
 
     let mut color = material.ambient(sp, world.background);
     let tube_hair = material.has_ambient_term(sp);
@@ -271,7 +274,7 @@ pub(super) fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
                 normal = geometric;
             }
             let sp = ShadingPoint { p, normal, tangent: None, color: None, backface, strand: None };
-            Surface { sp, hair: None, geometric }
+            Surface { sp, hair: None, geometric, strand_point: None }
         }
         (Shape::Strands(strands), HitKind::Segment { s, normal }) => {
             let i = hit.prim as usize;
@@ -283,19 +286,18 @@ pub(super) fn surface_at(shape: &Shape, hit: &Hit, ray: &Ray) -> Surface {
             // Reconstruct the hit on the surface from the segment itself: its error is
             // relative to the segment's coordinates, not to the ray's length.
             let p = axis_point + normal * radius;
-            let tangent = strands.tangent(hit.prim, s);
+            // One search for the strand serves the tangent, shading and the AOVs.
+            let at = strands.strand_point(hit.prim, s);
+            let tangent = strands.tangent_on(hit.prim, s, at.strand);
             let sp = ShadingPoint {
                 p,
                 normal,
                 tangent: Some(tangent),
                 color: strands.color(hit.prim, s),
                 backface: false,
-                strand: Some({
-                    let at = strands.strand_point(hit.prim, s);
-                    (at.strand, at.along)
-                }),
+                strand: Some((at.strand, at.along)),
             };
-            Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal }
+            Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal, strand_point: Some(at) }
         }
         _ => unreachable!("hit kinds match their shapes"),
     }

@@ -14,7 +14,7 @@
 //! light only (the direct integrator's image); with 1, one bounce of indirect light.
 
 use super::direct::{departure, surface_at, Counters, FirstHit};
-use crate::accel::{Hit, HitKind, LayerHit, Shape};
+use crate::accel::{Hit, LayerHit};
 use crate::light::Light;
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
@@ -114,19 +114,7 @@ pub fn trace(
         let wo = -ray.dir;
         let tube = material.shades_whole_circle();
         if vertex == 0 {
-            first = Some(FirstHit {
-                t: hit.t,
-                normal: sp.tangent.unwrap_or(sp.normal),
-                object: hit.object,
-                strand: match &object.shape {
-                    Shape::Strands(s) => Some(s.strand_of(hit.prim)),
-                    Shape::Mesh(_) => None,
-                },
-                strand_point: match (&object.shape, hit.kind) {
-                    (Shape::Strands(s), HitKind::Segment { s: along, .. }) => Some(s.strand_point(hit.prim, along)),
-                    _ => None,
-                },
-            });
+            first = Some(surface.first_hit(&hit));
         }
 
         // Next-event estimation: one sample of every light but the environment.
