@@ -12,6 +12,11 @@ use crate::scene::World;
 use crate::shading::{Material, ShadingPoint};
 use glam::Vec3;
 
+/// Transmittance below which the layers of semi-transparent hair behind are walked
+/// stochastically instead of all shaded and blended ([`trace_with`]). A quarter: with
+/// 50 % tips, the two nearest layers are blended exactly and at most one more is shaded.
+pub const BLEND_TRANSMITTANCE: f32 = 0.5;
+
 /// Per-task tallies, summed when the render ends.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Counters {
@@ -83,6 +88,8 @@ pub(super) struct At<'a> {
     pub hit: &'a Hit,
     pub material: &'a Material,
     pub wo: Vec3,
+    /// Width of the ray's footprint (its cone) at the hit: about a pixel, seen there.
+    pub footprint: f32,
 }
 
 /// The direct integrator adds specular rays only. Without `see_emitters` (light gathered
@@ -117,6 +124,12 @@ impl Indirect for Whitted {
 /// their opacity, `C = sum_i T_i a_i C_i` with `T_{i+1} = T_i (1 - a_i)`, stopping at an
 /// opaque hit or a negligible `T`; only when every collected hit let enough light through
 /// does the ray continue past them with another traversal.
+///
+/// Once less than [`BLEND_TRANSMITTANCE`] of the light is left, the layers behind (each
+/// needing its own shadow rays, through ever more hair) are no longer all shaded: the tail
+/// is walked as in stochastic transparency (Enderton et al. 2010), stopping at layer `i`
+/// with probability `a_i` and shading it with the whole remaining `T`. The expected colour
+/// is the blend's; the noise is bounded by that small `T`.
 pub(super) fn trace_with(
     world: &World,
     ray: &Ray,
@@ -145,7 +158,9 @@ pub(super) fn trace_with(
     }
     let k = world.settings.transparency_layers as usize;
     let (mut layers, mut seen) = (Vec::with_capacity(k), Vec::new());
-    let (mut color, mut transmitted, mut first, mut tmin) = (Color::ZERO, 1.0f32, None, 0.0);
+    // `transmitted`: the light passing every layer so far; `carried`: the weight of what
+    // is shaded next (equal to it while blending, frozen once the tail is walked).
+    let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, 0.0);
     loop {
         world.accel.intersect_k(ray, tmin, k, &seen, &mut layers);
         // Lights count up to where the collected hits may hide what lies behind them.
@@ -154,19 +169,29 @@ pub(super) fn trace_with(
             _ => seen_light(ray.tmax),
         };
         for layer in layers.iter().take_while(|l| light.is_none_or(|(t, _)| l.hit.t < t)) {
-            let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect);
-            first.get_or_insert(f);
-            color += transmitted * layer.opacity * c;
-            transmitted *= 1.0 - layer.opacity;
+            let a = layer.opacity;
+            let blend = carried >= BLEND_TRANSMITTANCE;
+            let last = transmitted * (1.0 - a) < NEGLIGIBLE_TRANSMITTANCE;
+            if blend || last || sampler.next_1d() < a {
+                let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect);
+                first.get_or_insert(f);
+                if !blend {
+                    // The tail stops here, with all the light that reached it.
+                    return (color + carried * c, first);
+                }
+                color += carried * a * c;
+                carried *= 1.0 - a;
+            }
+            transmitted *= 1.0 - a;
             if transmitted < NEGLIGIBLE_TRANSMITTANCE {
                 return (color, first);
             }
         }
         if let Some((_, radiance)) = light {
-            return (color + transmitted * emitted(radiance), first);
+            return (color + carried * emitted(radiance), first);
         }
         if layers.len() < k {
-            return (color + transmitted * emitted(world.background), first);
+            return (color + carried * emitted(world.background), first);
         }
         // Every hit collected let light through: continue behind the farthest.
         tmin = layers[k - 1].hit.t;
@@ -247,7 +272,7 @@ fn shade(
             color += r.weight * indirect.specular(world, &next, depth + 1, sampler, counters);
         }
     }
-    let at = At { surface: &surface, hit, material, wo };
+    let at = At { surface: &surface, hit, material, wo, footprint: ray.cone.width_at(hit.t) };
     color += indirect.diffuse(world, &at, depth, sampler, counters);
     (color, first)
 }
