@@ -7,6 +7,7 @@
 
 use super::{Accel, Hit, HitKind, Shape, Skip};
 use crate::geometry::{segment, triangle};
+use crate::math::rng::{hash_combine, unit_float};
 use crate::math::Ray;
 use bvh::RayBoxTest;
 use glam::Vec3;
@@ -92,21 +93,49 @@ fn is_partial(shape: &Shape) -> bool {
     matches!(shape, Shape::Strands(s) if s.opacity.is_some())
 }
 
+/// How a front-to-back blend treats the hits behind the first ones: blended exactly while
+/// at least `blend` of the light is left, then walked stochastically, stopping at a hit
+/// with probability equal to its opacity. The walk's random number at a hit comes from
+/// the hit's primitive and `seed`, not from the order hits are found in, so the query
+/// can stop looking behind the hit a walk will stop at, as behind an opaque one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StochasticTail {
+    /// Transmittance below which the walk turns stochastic.
+    pub blend: f32,
+    /// Seed of the walk's random numbers (one per ray).
+    pub seed: u32,
+}
+
+impl StochasticTail {
+    /// The uniform number in [0, 1) that decides whether the walk stops at `hit`.
+    #[inline]
+    pub fn draw(&self, hit: &Hit) -> f32 {
+        unit_float(hash_combine(&[self.seed, hit.object, hit.prim]))
+    }
+}
+
 /// Inserts `layer` into the hits `out` sorted by distance and keeps what a front-to-back
 /// blend needs: at most `k` hits, none behind the first one where the transmittance
 /// accumulated from the front falls below [`NEGLIGIBLE_TRANSMITTANCE`] (an opaque hit
-/// among them). Returns the distance beyond which further hits no longer matter, once
-/// there is one.
+/// among them) or where the `tail` walk stops. Returns the distance beyond which further
+/// hits no longer matter, once there is one.
 #[inline]
-fn insert_layer(out: &mut Vec<LayerHit>, layer: LayerHit, k: usize) -> Option<f32> {
+fn insert_layer(out: &mut Vec<LayerHit>, layer: LayerHit, k: usize, tail: Option<StochasticTail>) -> Option<f32> {
     let at = out.partition_point(|h| h.hit.t <= layer.hit.t);
     out.insert(at, layer);
-    let mut transmitted = 1.0f32;
+    let (mut transmitted, mut carried) = (1.0f32, 1.0f32);
     let end = out
         .iter()
         .position(|h| {
+            let stops = match tail {
+                Some(tail) if carried < tail.blend => tail.draw(&h.hit) < h.opacity,
+                _ => {
+                    carried *= 1.0 - h.opacity;
+                    false
+                }
+            };
             transmitted *= 1.0 - h.opacity;
-            transmitted < NEGLIGIBLE_TRANSMITTANCE
+            stops || transmitted < NEGLIGIBLE_TRANSMITTANCE
         })
         .map(|i| i + 1);
     out.truncate(end.unwrap_or(k).min(k));
@@ -122,7 +151,8 @@ impl Accel {
     /// The nearest hits along `ray` beyond `tmin`, sorted by distance, into `out`
     /// (cleared first): at most `k` of them (at least one), ending early at the first
     /// opaque hit or at the first hit behind which less than [`NEGLIGIBLE_TRANSMITTANCE`]
-    /// of the light is left (a blend stops there: what lies behind cannot show).
+    /// of the light is left (a blend stops there: what lies behind cannot show), or, with
+    /// a `tail`, at the hit its walk stops at.
     ///
     /// Two traversals, both culling: the nearest hit on opaque objects (meshes, strands
     /// without opacity) first, then the semi-transparent strands up to it, with the BVH
@@ -133,7 +163,15 @@ impl Accel {
     /// To continue past a full list, call again with `tmin` at its last hit and the hits
     /// found so far in `exclude`: a primitive already counted is not counted again where
     /// the ray leaves it.
-    pub fn intersect_k(&self, ray: &Ray, tmin: f32, k: usize, exclude: &[LayerHit], out: &mut Vec<LayerHit>) {
+    pub fn intersect_k(
+        &self,
+        ray: &Ray,
+        tmin: f32,
+        k: usize,
+        exclude: &[LayerHit],
+        tail: Option<StochasticTail>,
+        out: &mut Vec<LayerHit>,
+    ) {
         let k = k.max(1);
         out.clear();
         // Opaque hits before the collected ones would have ended the previous list.
@@ -154,7 +192,7 @@ impl Accel {
                         }
                         let layer =
                             LayerHit { hit: Hit { t, object, prim, kind }, opacity: opacity(&o.shape, prim, kind) };
-                        if let Some(t) = insert_layer(out, layer, k) {
+                        if let Some(t) = insert_layer(out, layer, k, tail) {
                             *cutoff = t;
                             done = true;
                         }
@@ -265,19 +303,41 @@ mod tests {
         let accel = Accel::build(vec![(Shape::Strands(strands), 0)]);
         let mut out = Vec::new();
         let ray = Ray::new(Vec3::ZERO, Vec3::Y);
-        accel.intersect_k(&ray, 0.0, 8, &[], &mut out);
+        accel.intersect_k(&ray, 0.0, 8, &[], None, &mut out);
         let ts: Vec<f32> = out.iter().map(|h| h.hit.t).collect();
         assert_eq!(out.len(), 4, "{ts:?}");
         assert!(ts.windows(2).all(|w| w[0] < w[1]));
         assert!((ts[0] - 0.95).abs() < 1e-4 && (ts[3] - 3.95).abs() < 1e-4, "{ts:?}");
         assert_eq!(out[3].opacity, 1.0);
-        accel.intersect_k(&ray, 0.0, 2, &[], &mut out);
+        accel.intersect_k(&ray, 0.0, 2, &[], None, &mut out);
         assert_eq!(out.len(), 2);
         // Continuing past the second hit finds the third and the opaque fourth.
         let (t2, seen) = (out[1].hit.t, out.clone());
-        accel.intersect_k(&ray, t2, 8, &seen, &mut out);
+        accel.intersect_k(&ray, t2, 8, &seen, None, &mut out);
         assert_eq!(out.len(), 2);
         assert!((out[0].hit.t - 2.95).abs() < 1e-4);
+    }
+
+    #[test]
+    fn a_stochastic_tail_ends_the_list_where_its_walk_stops() {
+        let accel = Accel::build(vec![(Shape::Strands(layers(8, 0.5)), 0)]);
+        let ray = Ray::new(Vec3::ZERO, Vec3::Y);
+        let mut out = Vec::new();
+        let mut lengths = [0; 9];
+        for seed in 0..200 {
+            let tail = StochasticTail { blend: 0.3, seed };
+            accel.intersect_k(&ray, 0.0, 8, &[], Some(tail), &mut out);
+            // Two layers are blended (light left 1, then 1/2), then the walk stops at the
+            // first hit whose draw is below 1/2.
+            let mut all = Vec::new();
+            accel.intersect_k(&ray, 0.0, 8, &[], None, &mut all);
+            let want =
+                all.iter().enumerate().skip(2).find(|(_, h)| tail.draw(&h.hit) < 0.5).map_or(all.len(), |(i, _)| i + 1);
+            assert_eq!(out, all[..want], "seed {seed}");
+            lengths[out.len()] += 1;
+        }
+        // The walk stops at the third layer about half the time, at the fourth a quarter.
+        assert!((80..120).contains(&lengths[3]) && (30..70).contains(&lengths[4]), "{lengths:?}");
     }
 
     #[test]
@@ -316,7 +376,7 @@ mod tests {
                     break;
                 }
             }
-            accel.intersect_k(&ray, 0.0, 5, &[], &mut out);
+            accel.intersect_k(&ray, 0.0, 5, &[], None, &mut out);
             let got: Vec<f32> = out.iter().map(|h| h.hit.t).collect();
             assert_eq!(got, want);
             checked += (all.len() > 5) as u32;

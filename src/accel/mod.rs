@@ -5,7 +5,7 @@
 pub mod bvh;
 mod layers;
 
-pub use layers::{LayerHit, NEGLIGIBLE_TRANSMITTANCE};
+pub use layers::{LayerHit, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray};

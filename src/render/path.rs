@@ -55,7 +55,7 @@ fn next_hit(
     seen.clear();
     let mut tmin = 0.0;
     loop {
-        world.accel.intersect_k(ray, tmin, k, seen, layers);
+        world.accel.intersect_k(ray, tmin, k, seen, None, layers);
         let mut transmitted = 1.0f32;
         for l in layers.iter() {
             transmitted *= 1.0 - l.opacity;
