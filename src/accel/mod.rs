@@ -5,7 +5,7 @@
 pub mod bvh;
 mod layers;
 
-pub use layers::{LayerHit, NEGLIGIBLE_TRANSMITTANCE};
+pub use layers::{LayerHit, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray};
@@ -139,12 +139,21 @@ impl Accel {
 
     /// The closest hit along the ray before `ray.tmax`.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        self.intersect_among(ray, |_| true)
+    }
+
+    /// The closest hit along the ray before `ray.tmax` on the objects `among` accepts.
+    #[inline]
+    fn intersect_among(&self, ray: &Ray, among: impl Fn(&Object) -> bool) -> Option<Hit> {
         let test = RayBoxTest::new(ray.origin, ray.dir);
         let mut tmax = ray.tmax;
         let mut best = None;
         self.top.traverse(&test, &mut tmax, |objects, tmax| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                if !among(o) {
+                    continue;
+                }
                 o.bvh.traverse(&test, tmax, |prims, tmax| {
                     if let Some((prim, t, kind)) =
                         intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false)
@@ -163,12 +172,28 @@ impl Accel {
     /// True when anything (but the skipped primitives) lies on the segment from `origin`
     /// along unit `dir` up to distance `tmax`.
     pub fn occluded(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> bool {
+        self.occluded_among(origin, dir, tmax, skip, |_| true)
+    }
+
+    /// [`Accel::occluded`] by the objects `among` accepts only.
+    #[inline]
+    fn occluded_among(
+        &self,
+        origin: Vec3,
+        dir: Vec3,
+        tmax: f32,
+        skip: Option<Skip>,
+        among: impl Fn(&Object) -> bool,
+    ) -> bool {
         let test = RayBoxTest::new(origin, dir);
         let mut t = tmax;
         let mut blocked = false;
         self.top.traverse(&test, &mut t, |objects, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                if !among(o) {
+                    continue;
+                }
                 let skip = skip.filter(|s| s.object == object);
                 o.bvh.traverse(&test, t, |prims, t| {
                     blocked = intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true).is_some();

@@ -55,6 +55,28 @@ pub struct RenderSettings {
     pub adaptive: Option<Adaptive>,
     /// Rays gathered per camera sample at the first diffuse hit by the final gather.
     pub gather_rays: u32,
+    /// The final gather's irradiance cache on diffuse surfaces; `None` gathers at every hit.
+    pub irradiance_cache: Option<IrradianceCacheSettings>,
+}
+
+/// The irradiance cache of the final gather (Ward et al. 1988): records of the gathered
+/// light on diffuse surfaces, computed before the render at image points `spacing` pixels
+/// apart (and coarser), and interpolated where their error estimate is below `accuracy`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IrradianceCacheSettings {
+    /// Ward's `a`: the largest error estimate a record is used at (smaller is more
+    /// accurate and takes more records).
+    pub accuracy: f32,
+    /// Pixels between the image points of the finest pre-pass level.
+    pub spacing: u32,
+    /// Rays gathered per record (stratified over the hemisphere).
+    pub rays: u32,
+}
+
+impl Default for IrradianceCacheSettings {
+    fn default() -> Self {
+        IrradianceCacheSettings { accuracy: 0.3, spacing: 4, rays: 256 }
+    }
 }
 
 /// The light-transport algorithm.
@@ -114,6 +136,7 @@ impl Default for RenderSettings {
             transparency_layers: 8,
             adaptive: None,
             gather_rays: 8,
+            irradiance_cache: None,
         }
     }
 }
@@ -297,6 +320,26 @@ impl Description {
         }
         if s.gather_rays == 0 || s.gather_rays > 4096 {
             return Err(PrepareError::Invalid(format!("gather_rays {} is out of range (1 to 4096)", s.gather_rays)));
+        }
+        if let Some(c) = s.irradiance_cache {
+            if !(c.accuracy.is_finite() && c.accuracy > 0.0 && c.accuracy <= 1.0) {
+                return Err(PrepareError::Invalid(format!(
+                    "irradiance cache accuracy {} is out of range (above 0, at most 1)",
+                    c.accuracy
+                )));
+            }
+            if c.spacing == 0 || c.spacing > 256 {
+                return Err(PrepareError::Invalid(format!(
+                    "irradiance cache spacing {} is out of range (1 to 256 pixels)",
+                    c.spacing
+                )));
+            }
+            if c.rays < 8 || c.rays > 65_536 {
+                return Err(PrepareError::Invalid(format!(
+                    "irradiance cache rays {} is out of range (8 to 65536)",
+                    c.rays
+                )));
+            }
         }
         if let Some(a) = s.adaptive {
             if a.min_spp == 0 || a.min_spp > a.max_spp || a.max_spp > 1 << 20 {
