@@ -305,7 +305,9 @@ impl Bvh {
             return Bvh::default();
         }
         let root = build_node(&mut items, 0, 0);
-        let mut nodes = Vec::with_capacity(items.len() / 4 + 1);
+        // About one node per 19 items on hair (docs/performance.md); the vector grows if needed
+        // and gives back what it did not use below.
+        let mut nodes = Vec::with_capacity(items.len() / 16 + 1);
         nodes.push(EMPTY_NODE);
         let bounds = match &root {
             BuildNode::Leaf { bounds, .. } => {
@@ -320,7 +322,13 @@ impl Bvh {
                 *bounds
             }
         };
-        Bvh { nodes, items: items.into_iter().map(|it| it.id).collect(), bounds: Some(bounds) }
+        drop(root);
+        nodes.shrink_to_fit();
+        // Collected into a new vector (not in place, which would keep the build items'
+        // twelve times larger allocation alive).
+        let ids: Vec<u32> = items.iter().map(|it| it.id).collect();
+        drop(items);
+        Bvh { nodes, items: ids, bounds: Some(bounds) }
     }
 }
 
