@@ -230,7 +230,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
 
 /// The nearest hit among a leaf's primitives before `tmax`, ignoring `skip`: (primitive,
 /// distance, where); with `any`, the first hit found. Segments are tested four at a time.
-#[inline]
+#[inline(always)]
 fn intersect_leaf(
     shape: &Shape,
     prims: &[u32],
