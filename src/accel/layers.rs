@@ -6,8 +6,9 @@
 //! hit (or of the nearest opaque one), so a stack of K hairs costs about one traversal.
 
 use super::lod::{LodRay, Widen};
-use super::{gather4, Accel, Hit, HitKind, Shape, Skip};
-use crate::geometry::{segment, triangle};
+use super::{gather4, Accel, Hit, HitKind, Object, Shape, Skip};
+use crate::geometry::{segment, triangle, StrandSet};
+use crate::math::rng::{hash_combine, unit_float};
 use crate::math::{Ray, RayCone};
 use bvh::RayBoxTest;
 use glam::Vec3;
@@ -62,25 +63,38 @@ fn leaf_hits(
                 }
             }
         }
-        Shape::Strands(s) => {
-            for chunk in prims.chunks(4) {
-                let lanes = gather4(s, chunk, skipped, widen);
-                let mut hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, lanes.p0, lanes.p1);
-                lanes.drop_hidden(&mut hits);
-                let mut mask = hits.mask;
-                while mask != 0 {
-                    let lane = mask.trailing_zeros() as usize;
-                    mask &= mask - 1;
-                    if let Some(h) = hits.hit(lane) {
-                        if found(
-                            lanes.prim[lane],
-                            h.t,
-                            HitKind::Segment { s: h.s, normal: h.normal },
-                            lanes.level[lane],
-                        ) {
-                            return true;
-                        }
-                    }
+        // At full detail `widen` is a constant in the loop, as in the closest-hit test.
+        Shape::Strands(s) => match widen {
+            None => return strand_hits(s, prims, (origin, dir), (tmin, tmax), skipped, None, found),
+            Some(view) => return strand_hits(s, prims, (origin, dir), (tmin, tmax), skipped, Some(view), found),
+        },
+    }
+    false
+}
+
+/// [`leaf_hits`] on the segments of a strand set.
+#[inline(always)]
+fn strand_hits(
+    s: &StrandSet,
+    prims: &[u32],
+    (origin, dir): (Vec3, Vec3),
+    (tmin, tmax): (f32, f32),
+    skipped: impl Fn(u32) -> bool,
+    widen: Widen,
+    mut found: impl FnMut(u32, f32, HitKind, u32) -> bool,
+) -> bool {
+    for chunk in prims.chunks(4) {
+        let lanes = gather4(s, chunk, &skipped, widen);
+        let mut hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, lanes.p0, lanes.p1);
+        lanes.drop_hidden(&mut hits, widen);
+        let mut mask = hits.mask;
+        while mask != 0 {
+            let lane = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            if let Some(h) = hits.hit(lane) {
+                let (prim, level) = lanes.prim_level(chunk, lane, widen);
+                if found(prim, h.t, HitKind::Segment { s: h.s, normal: h.normal }, level) {
+                    return true;
                 }
             }
         }
@@ -88,33 +102,108 @@ fn leaf_hits(
     false
 }
 
+/// True when rays may see through some of the object's primitives: strands with per-point
+/// opacity, or with level of detail that draws coarse strands semi-transparent
+/// ([`super::lod::LodParams::spread`]). Everything else blocks at its first hit.
+#[inline]
+fn is_partial(o: &Object) -> bool {
+    matches!(&o.shape, Shape::Strands(s) if s.opacity.is_some()) || o.lod().is_some_and(|l| l.has_transparency())
+}
+
+/// How a front-to-back blend treats the hits behind the first ones: blended exactly while
+/// at least `blend` of the light is left, then walked stochastically, stopping at a hit
+/// with probability equal to its opacity. The walk's random number at a hit comes from
+/// the hit's primitive and `seed`, not from the order hits are found in, so the query
+/// can stop looking behind the hit a walk will stop at, as behind an opaque one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StochasticTail {
+    /// Transmittance below which the walk turns stochastic.
+    pub blend: f32,
+    /// Seed of the walk's random numbers (one per ray).
+    pub seed: u32,
+}
+
+impl StochasticTail {
+    /// The uniform number in [0, 1) that decides whether the walk stops at `hit`.
+    #[inline]
+    pub fn draw(&self, hit: &Hit) -> f32 {
+        unit_float(hash_combine(&[self.seed, hit.object, hit.prim]))
+    }
+}
+
+/// Inserts `layer` into the hits `out` sorted by distance and keeps what a front-to-back
+/// blend needs: at most `k` hits, none behind the first one where the transmittance
+/// accumulated from the front falls below [`NEGLIGIBLE_TRANSMITTANCE`] (an opaque hit
+/// among them) or where the `tail` walk stops. Returns the distance beyond which further
+/// hits no longer matter, once there is one.
+#[inline]
+fn insert_layer(out: &mut Vec<LayerHit>, layer: LayerHit, k: usize, tail: Option<StochasticTail>) -> Option<f32> {
+    let at = out.partition_point(|h| h.hit.t <= layer.hit.t);
+    out.insert(at, layer);
+    let (mut transmitted, mut carried) = (1.0f32, 1.0f32);
+    let end = out
+        .iter()
+        .position(|h| {
+            let stops = match tail {
+                Some(tail) if carried < tail.blend => tail.draw(&h.hit) < h.opacity,
+                _ => {
+                    carried *= 1.0 - h.opacity;
+                    false
+                }
+            };
+            transmitted *= 1.0 - h.opacity;
+            stops || transmitted < NEGLIGIBLE_TRANSMITTANCE
+        })
+        .map(|i| i + 1);
+    out.truncate(end.unwrap_or(k).min(k));
+    (end.is_some() || out.len() == k).then(|| out[out.len() - 1].hit.t)
+}
+
 impl Accel {
     /// True when some strand set has per-point opacity, so rays must look past hits.
     pub fn has_transparency(&self) -> bool {
-        self.objects.iter().any(|o| {
-            matches!(&o.shape, Shape::Strands(s) if s.opacity.is_some())
-                || o.lod().is_some_and(|l| l.has_transparency())
-        })
+        self.objects.iter().any(is_partial)
     }
 
     /// The nearest hits along `ray` beyond `tmin`, sorted by distance, into `out`
     /// (cleared first): at most `k` of them (at least one), ending early at the first
-    /// opaque hit. One traversal: once `k` hits are held, or an opaque one, the BVH only
-    /// visits boxes nearer than the farthest hit kept.
+    /// opaque hit or at the first hit behind which less than [`NEGLIGIBLE_TRANSMITTANCE`]
+    /// of the light is left (a blend stops there: what lies behind cannot show), or, with
+    /// a `tail`, at the hit its walk stops at.
+    ///
+    /// Two traversals, both culling: the nearest hit on opaque objects (meshes, strands
+    /// without opacity) first, then the semi-transparent strands up to it, with the BVH
+    /// visiting only boxes nearer than the farthest hit kept once `k` hits are held or the
+    /// light left is negligible. Without the first pass, a ray through sparse fur into the
+    /// surface it grows on would walk the fur behind that surface too.
     ///
     /// To continue past a full list, call again with `tmin` at its last hit and the hits
     /// found so far in `exclude`: a primitive already counted is not counted again where
     /// the ray leaves it. Strand sets with level of detail are seen at the level of
     /// `ray.cone` at each distance.
-    pub fn intersect_k(&self, ray: &Ray, tmin: f32, k: usize, exclude: &[LayerHit], out: &mut Vec<LayerHit>) {
+    pub fn intersect_k(
+        &self,
+        ray: &Ray,
+        tmin: f32,
+        k: usize,
+        exclude: &[LayerHit],
+        tail: Option<StochasticTail>,
+        out: &mut Vec<LayerHit>,
+    ) {
         let k = k.max(1);
         out.clear();
+        // Opaque hits before the collected ones would have ended the previous list.
+        let opaque = self.intersect_among(ray, |o| !is_partial(o));
         let test = RayBoxTest::new(ray.origin, ray.dir);
         let lod_ray = LodRay::new(ray.origin, ray.dir, ray.cone);
-        let mut cutoff = ray.tmax;
+        let mut cutoff = opaque.map_or(ray.tmax, |h| h.t);
+        let mut done = false;
         self.top.traverse(&test, &mut cutoff, |objects, cutoff| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                if !is_partial(o) {
+                    continue;
+                }
                 o.traverse(&test, &lod_ray, cutoff, |prims, widen, cutoff| {
                     leaf_hits(
                         &o.shape,
@@ -129,16 +218,9 @@ impl Accel {
                             }
                             let hit = Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) };
                             let layer = LayerHit { hit, opacity: opacity(&o.shape, prim, kind) * o.lod_opacity(level) };
-                            let at = out.partition_point(|h| h.hit.t <= t);
-                            out.insert(at, layer);
-                            // Nothing behind an opaque hit is seen; keep at most k.
-                            if layer.opacity >= 1.0 {
-                                out.truncate(at + 1);
-                            }
-                            out.truncate(k);
-                            let last = out[out.len() - 1];
-                            if out.len() == k || last.opacity >= 1.0 {
-                                *cutoff = last.hit.t;
+                            if let Some(t) = insert_layer(out, layer, k, tail) {
+                                *cutoff = t;
+                                done = true;
                             }
                             false
                         },
@@ -148,14 +230,20 @@ impl Accel {
             }
             false
         });
+        if let Some(hit) = opaque.filter(|_| !done) {
+            out.push(LayerHit { hit, opacity: 1.0 });
+        }
     }
 
     /// The fraction of light that passes from `origin` along unit `dir` up to distance
     /// `tmax`, ignoring `skip`: the product of `1 - opacity` over every hit (thesis section
     /// 2.2.8's transparency, applied to shadow rays so hair casts partial shadows). Meshes
     /// and opaque strands block; a product below [`NEGLIGIBLE_TRANSMITTANCE`] counts as 0.
-    /// The product does not depend on the order hits are found in, so one unordered
-    /// traversal suffices. Strands are seen at full detail.
+    ///
+    /// An any-hit query on the opaque objects goes first: a shadow ray they block needs
+    /// no walk through the semi-transparent strands. The product does not depend on the
+    /// order hits are found in, so one unordered traversal of those strands suffices.
+    /// Strands are seen at full detail.
     pub fn transmittance(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> f32 {
         self.transmittance_cone(origin, dir, tmax, skip, RayCone::default())
     }
@@ -164,6 +252,9 @@ impl Accel {
     /// with level of detail are pruned as a ray with that cone sees them (thesis section
     /// 2.2.2: shadow rays need a level too).
     pub fn transmittance_cone(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>, cone: RayCone) -> f32 {
+        if self.occluded_among(origin, dir, tmax, skip, cone, |o| !is_partial(o)) {
+            return 0.0;
+        }
         let test = RayBoxTest::new(origin, dir);
         let lod_ray = LodRay::new(origin, dir, cone);
         let mut t = tmax;
@@ -171,6 +262,9 @@ impl Accel {
         self.top.traverse(&test, &mut t, |objects, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                if !is_partial(o) {
+                    continue;
+                }
                 let skip = skip.filter(|s| s.object == object);
                 let blocked = o.traverse(&test, &lod_ray, t, |prims, widen, t| {
                     leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), skip, widen, |prim, _, kind, level| {
@@ -243,19 +337,41 @@ mod tests {
         let accel = Accel::build(vec![(Shape::Strands(strands), 0)]);
         let mut out = Vec::new();
         let ray = Ray::new(Vec3::ZERO, Vec3::Y);
-        accel.intersect_k(&ray, 0.0, 8, &[], &mut out);
+        accel.intersect_k(&ray, 0.0, 8, &[], None, &mut out);
         let ts: Vec<f32> = out.iter().map(|h| h.hit.t).collect();
         assert_eq!(out.len(), 4, "{ts:?}");
         assert!(ts.windows(2).all(|w| w[0] < w[1]));
         assert!((ts[0] - 0.95).abs() < 1e-4 && (ts[3] - 3.95).abs() < 1e-4, "{ts:?}");
         assert_eq!(out[3].opacity, 1.0);
-        accel.intersect_k(&ray, 0.0, 2, &[], &mut out);
+        accel.intersect_k(&ray, 0.0, 2, &[], None, &mut out);
         assert_eq!(out.len(), 2);
         // Continuing past the second hit finds the third and the opaque fourth.
         let (t2, seen) = (out[1].hit.t, out.clone());
-        accel.intersect_k(&ray, t2, 8, &seen, &mut out);
+        accel.intersect_k(&ray, t2, 8, &seen, None, &mut out);
         assert_eq!(out.len(), 2);
         assert!((out[0].hit.t - 2.95).abs() < 1e-4);
+    }
+
+    #[test]
+    fn a_stochastic_tail_ends_the_list_where_its_walk_stops() {
+        let accel = Accel::build(vec![(Shape::Strands(layers(8, 0.5)), 0)]);
+        let ray = Ray::new(Vec3::ZERO, Vec3::Y);
+        let mut out = Vec::new();
+        let mut lengths = [0; 9];
+        for seed in 0..200 {
+            let tail = StochasticTail { blend: 0.3, seed };
+            accel.intersect_k(&ray, 0.0, 8, &[], Some(tail), &mut out);
+            // Two layers are blended (light left 1, then 1/2), then the walk stops at the
+            // first hit whose draw is below 1/2.
+            let mut all = Vec::new();
+            accel.intersect_k(&ray, 0.0, 8, &[], None, &mut all);
+            let want =
+                all.iter().enumerate().skip(2).find(|(_, h)| tail.draw(&h.hit) < 0.5).map_or(all.len(), |(i, _)| i + 1);
+            assert_eq!(out, all[..want], "seed {seed}");
+            lengths[out.len()] += 1;
+        }
+        // The walk stops at the third layer about half the time, at the fourth a quarter.
+        assert!((80..120).contains(&lengths[3]) && (30..70).contains(&lengths[4]), "{lengths:?}");
     }
 
     #[test]
@@ -267,26 +383,39 @@ mod tests {
             let (a, b) = (v(&mut rng), v(&mut rng));
             strands.push_strand([(a, 0.02), (a.lerp(b, 0.5), 0.02), (b, 0.02)]);
         }
-        strands.opacity = Some((0..strands.points.len()).map(|_| rng.random_range(0.1..0.9)).collect());
+        strands.opacity = Some((0..strands.points.len()).map(|_| rng.random_range(0.1..0.95)).collect());
         let accel = Accel::build(vec![(Shape::Strands(strands.clone()), 0)]);
-        let (mut out, mut checked) = (Vec::new(), 0);
+        let (mut out, mut checked, mut cut) = (Vec::new(), 0, 0);
         for _ in 0..500 {
             let origin = v(&mut rng) * 3.0;
             let ray = Ray::new(origin, (v(&mut rng) * 0.3 - origin).normalize());
-            let mut all: Vec<f32> = strands
+            let mut all: Vec<(f32, f32)> = strands
                 .segment_starts()
                 .into_iter()
                 .filter_map(|p| {
                     let (p0, p1) = (strands.points[p as usize], strands.points[p as usize + 1]);
-                    segment::intersect_cylinder(ray.origin, ray.dir, 0.0, f32::INFINITY, p0, p1).map(|h| h.t)
+                    segment::intersect_cylinder(ray.origin, ray.dir, 0.0, f32::INFINITY, p0, p1)
+                        .map(|h| (h.t, strands.opacity_at(p, h.s)))
                 })
                 .collect();
-            all.sort_by(f32::total_cmp);
-            accel.intersect_k(&ray, 0.0, 5, &[], &mut out);
+            all.sort_by(|a, b| a.0.total_cmp(&b.0));
+            // The five nearest, up to the one behind which a negligible part of the light is left.
+            let mut transmitted = 1.0f32;
+            let mut want = Vec::new();
+            for &(t, a) in all.iter().take(5) {
+                want.push(t);
+                transmitted *= 1.0 - a;
+                if transmitted < NEGLIGIBLE_TRANSMITTANCE {
+                    cut += 1;
+                    break;
+                }
+            }
+            accel.intersect_k(&ray, 0.0, 5, &[], None, &mut out);
             let got: Vec<f32> = out.iter().map(|h| h.hit.t).collect();
-            assert_eq!(got, all.iter().copied().take(5).collect::<Vec<_>>());
+            assert_eq!(got, want);
             checked += (all.len() > 5) as u32;
         }
         assert!(checked > 20, "the test needs rays through many strands: {checked}");
+        assert!(cut > 0, "the test needs stacks that stop the light before the fifth hit");
     }
 }

@@ -611,7 +611,7 @@ mod tests {
             let mut ray = Ray::new(origin, -Vec3::Z);
             // Footprints thinner than a hair at the curtain: level 0, opaque, whatever the jitter.
             ray.cone = if i % 2 == 0 { RayCone::default() } else { RayCone { width: 0.0, spread: 0.0009 } };
-            accel.intersect_k(&ray, 0.0, 4, &[], &mut layers);
+            accel.intersect_k(&ray, 0.0, 4, &[], None, &mut layers);
             assert!(layers.len() <= 1, "ray {i}: an opaque hit ends the list");
             if let Some(l) = layers.first() {
                 assert_eq!((l.hit.level, l.opacity, l.hit.radius_scale), (0, 1.0, 1.0), "ray {i}");
@@ -693,7 +693,7 @@ mod tests {
             // the same levels.
             let blocked = accel.transmittance_cone(ray.origin, ray.dir, 12.0, None, ray.cone) == 0.0;
             assert_eq!(blocked, expected.is_some_and(|e| e.0 < 12.0), "ray {i}");
-            accel.intersect_k(&ray, 0.0, 3, &[], &mut layers);
+            accel.intersect_k(&ray, 0.0, 3, &[], None, &mut layers);
             assert_eq!(layers.first().map(|l| (l.hit.prim, l.hit.level)), expected.map(|e| (e.1, e.2)), "ray {i}");
         }
         assert!(hits > 300 && coarse > 50, "the test needs hits at coarse levels: {hits} {coarse}");

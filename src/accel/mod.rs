@@ -8,7 +8,7 @@ pub mod bvh;
 mod layers;
 pub mod lod;
 
-pub use layers::{LayerHit, NEGLIGIBLE_TRANSMITTANCE};
+pub use layers::{LayerHit, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray, RayCone};
@@ -100,12 +100,22 @@ impl Object {
         tmax: &mut f32,
         mut leaf: impl FnMut(&[u32], Widen, &mut f32) -> bool,
     ) -> bool {
-        let view = self.lod.as_ref().map(|l| l.view(ray));
         let mut stop = false;
-        self.bvh.traverse(test, tmax, |prims, t| {
-            stop = leaf(prims, view.as_ref(), t);
-            stop
-        });
+        // Branch once per object: without level of detail, `widen` is a constant `None`
+        // in the inlined leaf test, which is then the plain one.
+        match &self.lod {
+            None => self.bvh.traverse(test, tmax, |prims, t| {
+                stop = leaf(prims, None, t);
+                stop
+            }),
+            Some(lod) => {
+                let view = lod.view(ray);
+                self.bvh.traverse(test, tmax, |prims, t| {
+                    stop = leaf(prims, Some(&view), t);
+                    stop
+                })
+            }
+        }
         stop
     }
 
@@ -224,6 +234,12 @@ impl Accel {
     /// The closest hit along the ray before `ray.tmax`.
     /// Strand sets with level of detail use the level of `ray.cone` at each distance.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        self.intersect_among(ray, |_| true)
+    }
+
+    /// The closest hit along the ray before `ray.tmax` on the objects `among` accepts.
+    #[inline]
+    fn intersect_among(&self, ray: &Ray, among: impl Fn(&Object) -> bool) -> Option<Hit> {
         let test = RayBoxTest::new(ray.origin, ray.dir);
         let lod_ray = LodRay::new(ray.origin, ray.dir, ray.cone);
         let mut tmax = ray.tmax;
@@ -231,6 +247,9 @@ impl Accel {
         self.top.traverse(&test, &mut tmax, |objects, tmax| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                if !among(o) {
+                    continue;
+                }
                 o.traverse(&test, &lod_ray, tmax, |prims, widen, tmax| {
                     if let Some((prim, t, kind, level)) =
                         intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false, widen)
@@ -249,13 +268,31 @@ impl Accel {
     /// True when anything (but the skipped primitives) lies on the segment from `origin`
     /// along unit `dir` up to distance `tmax`, with strands at full detail.
     pub fn occluded(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> bool {
+        self.occluded_among(origin, dir, tmax, skip, RayCone::default(), |_| true)
+    }
+
+    /// [`Accel::occluded`] by the objects `among` accepts only, strand sets with level of
+    /// detail seen as a ray with footprint `cone` sees them.
+    #[inline]
+    fn occluded_among(
+        &self,
+        origin: Vec3,
+        dir: Vec3,
+        tmax: f32,
+        skip: Option<Skip>,
+        cone: RayCone,
+        among: impl Fn(&Object) -> bool,
+    ) -> bool {
         let test = RayBoxTest::new(origin, dir);
-        let lod_ray = LodRay::new(origin, dir, RayCone::default());
+        let lod_ray = LodRay::new(origin, dir, cone);
         let mut t = tmax;
         let mut blocked = false;
         self.top.traverse(&test, &mut t, |objects, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
+                if !among(o) {
+                    continue;
+                }
                 let skip = skip.filter(|s| s.object == object);
                 blocked = o.traverse(&test, &lod_ray, t, |prims, widen, t| {
                     intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true, widen).is_some()
@@ -293,7 +330,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
 /// distance, where, level); with `any`, the first hit found. Segments are tested four at a
 /// time, their radii widened for the ray's level of detail by `widen`.
 #[allow(clippy::too_many_arguments)]
-#[inline]
+#[inline(always)]
 fn intersect_leaf(
     shape: &Shape,
     prims: &[u32],
@@ -319,24 +356,43 @@ fn intersect_leaf(
                 }
             }
         }
-        Shape::Strands(s) => {
-            for chunk in prims.chunks(4) {
-                let lanes = gather4(s, chunk, skipped, widen);
-                let mut hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, lanes.p0, lanes.p1);
-                lanes.drop_hidden(&mut hits);
-                if any && hits.mask != 0 {
-                    // Any lane's hit will do: skip forming the normal.
-                    let lane = hits.mask.trailing_zeros() as usize;
-                    let kind = HitKind::Segment { s: 0.0, normal: Vec3::ZERO };
-                    return Some((lanes.prim[lane], hits.t()[lane], kind, lanes.level[lane]));
-                }
-                if let Some(lane) = hits.nearest() {
-                    if let Some(h) = hits.hit(lane) {
-                        tmax = h.t;
-                        let kind = HitKind::Segment { s: h.s, normal: h.normal };
-                        best = Some((lanes.prim[lane], h.t, kind, lanes.level[lane]));
-                    }
-                }
+        // Two copies of the loop: at full detail `widen` is a constant there, and the
+        // segments are tested as they are, without the level of detail's per-lane work.
+        Shape::Strands(s) => match widen {
+            None => return strand_leaf(s, prims, (origin, dir), tmax, skipped, any, None),
+            Some(view) => return strand_leaf(s, prims, (origin, dir), tmax, skipped, any, Some(view)),
+        },
+    }
+    best
+}
+
+/// [`intersect_leaf`] on the segments of a strand set.
+#[inline(always)]
+fn strand_leaf(
+    s: &StrandSet,
+    prims: &[u32],
+    (origin, dir): (Vec3, Vec3),
+    mut tmax: f32,
+    skipped: impl Fn(u32) -> bool,
+    any: bool,
+    widen: Widen,
+) -> Option<(u32, f32, HitKind, u32)> {
+    let mut best = None;
+    for chunk in prims.chunks(4) {
+        let lanes = gather4(s, chunk, &skipped, widen);
+        let mut hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, lanes.p0, lanes.p1);
+        lanes.drop_hidden(&mut hits, widen);
+        if any && hits.mask != 0 {
+            // Any lane's hit will do: skip forming the normal.
+            let lane = hits.mask.trailing_zeros() as usize;
+            let (prim, level) = lanes.prim_level(chunk, lane, widen);
+            return Some((prim, hits.t()[lane], HitKind::Segment { s: 0.0, normal: Vec3::ZERO }, level));
+        }
+        if let Some(lane) = hits.nearest() {
+            if let Some(h) = hits.hit(lane) {
+                tmax = h.t;
+                let (prim, level) = lanes.prim_level(chunk, lane, widen);
+                best = Some((prim, h.t, HitKind::Segment { s: h.s, normal: h.normal }, level));
             }
         }
     }
@@ -348,17 +404,31 @@ struct Lanes4 {
     /// End points `[x, y, z, radius]`, radii widened for the ray's level of detail.
     p0: [f32x4; 4],
     p1: [f32x4; 4],
-    /// Each lane's segment (its first point), level, and the distance from which a hit on
-    /// it does not count (its pruning group is hidden there; infinite without LOD).
+    /// With level of detail only: each lane's segment (its first point), level, and the
+    /// distance from which a hit on it does not count (its pruning group is hidden there).
     prim: [u32; 4],
     level: [u32; 4],
     cut: [f32; 4],
 }
 
 impl Lanes4 {
-    /// Clears the lanes of `hits` that lie where their group is hidden.
+    /// The segment (its first point) and level of lane `lane`, gathered from the item ids
+    /// `ids` with `widen`.
     #[inline(always)]
-    fn drop_hidden(&self, hits: &mut segment::Hits4) {
+    fn prim_level(&self, ids: &[u32], lane: usize, widen: Widen) -> (u32, u32) {
+        match widen {
+            None => (ids[lane], 0),
+            Some(_) => (self.prim[lane], self.level[lane]),
+        }
+    }
+
+    /// Clears the lanes of `hits` that lie where their group is hidden (none at full
+    /// detail, `widen` being `None`: then the lanes are not looked at).
+    #[inline(always)]
+    fn drop_hidden(&self, hits: &mut segment::Hits4, widen: Widen) {
+        if widen.is_none() {
+            return;
+        }
         let t = hits.t();
         for (lane, (&t, &cut)) in t.iter().zip(&self.cut).enumerate() {
             if t >= cut {
@@ -376,15 +446,20 @@ fn gather4(s: &StrandSet, ids: &[u32], skipped: impl Fn(u32) -> bool, widen: Wid
     let mut lanes =
         Lanes4 { p0: [f32x4::ZERO; 4], p1: [f32x4::ZERO; 4], prim: [0; 4], level: [0; 4], cut: [f32::INFINITY; 4] };
     for (lane, &id) in ids.iter().enumerate() {
-        let (p, group) = widen.map_or((id, 0), |v| v.decode(id));
-        lanes.prim[lane] = p;
-        if skipped(p) {
-            continue;
-        }
-        let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
         match widen {
-            None => (lanes.p0[lane], lanes.p1[lane]) = (f32x4::new(a), f32x4::new(b)),
+            None => {
+                if !skipped(id) {
+                    lanes.p0[lane] = f32x4::new(s.points[id as usize]);
+                    lanes.p1[lane] = f32x4::new(s.points[id as usize + 1]);
+                }
+            }
             Some(view) => {
+                let (p, group) = view.decode(id);
+                lanes.prim[lane] = p;
+                if skipped(p) {
+                    continue;
+                }
+                let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
                 if let Some((scale, level, cut)) = view.segment(a, b, group) {
                     lanes.p0[lane] = f32x4::new([a[0], a[1], a[2], a[3] * scale]);
                     lanes.p1[lane] = f32x4::new([b[0], b[1], b[2], b[3] * scale]);

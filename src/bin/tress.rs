@@ -12,7 +12,7 @@ use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_s
 use tress::film::Region;
 use tress::partial::{fingerprint, Checkpointer, Partial};
 use tress::render::{render_tiles, Control, TiledFilm};
-use tress::scene::{prepare, Description, World};
+use tress::scene::{prepare, prepare_owned, Description, World};
 use tress::shading::Material;
 use tress::stats::{human_bytes, peak_memory_bytes};
 
@@ -135,6 +135,13 @@ struct Overrides {
     /// after every hit, the slow way).
     #[arg(long)]
     transparency_layers: Option<u32>,
+    /// Final gather: the irradiance cache on diffuse surfaces, on or off (the scene's
+    /// `irradiance_cache` otherwise).
+    #[arg(long, value_name = "on|off", value_parser = parse_on_off)]
+    irradiance_cache: Option<bool>,
+    /// Final gather: the irradiance cache's accuracy (Ward's a; turns the cache on).
+    #[arg(long, value_name = "A")]
+    cache_accuracy: Option<f32>,
     /// Strands in the demo scene (ignored for scene files).
     #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
     demo_strands: u32,
@@ -171,6 +178,14 @@ fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("`{s}` is not WIDTHxHEIGHT"))?;
     let parse = |v: &str| v.trim().parse::<u32>().map_err(|_| format!("`{s}` is not WIDTHxHEIGHT"));
     Ok((parse(w)?, parse(h)?))
+}
+
+fn parse_on_off(s: &str) -> Result<bool, String> {
+    match s {
+        "on" => Ok(true),
+        "off" => Ok(false),
+        _ => Err(format!("`{s}` is not on or off")),
+    }
 }
 
 fn parse_integrator(s: &str) -> Result<tress::scene::Integrator, String> {
@@ -216,6 +231,15 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     if let Some(k) = o.transparency_layers {
         s.transparency_layers = k;
     }
+    match o.irradiance_cache {
+        Some(false) => s.irradiance_cache = None,
+        Some(true) => s.irradiance_cache = Some(s.irradiance_cache.unwrap_or_default()),
+        None => {}
+    }
+    if let Some(a) = o.cache_accuracy {
+        s.irradiance_cache =
+            Some(tress::scene::IrradianceCacheSettings { accuracy: a, ..s.irradiance_cache.unwrap_or_default() });
+    }
     desc.validate()?;
     Ok(desc)
 }
@@ -240,7 +264,7 @@ fn run(cli: Cli) -> Result<()> {
         Command::Info { scene, demo_strands, frame } => {
             let o = Overrides { demo_strands, frame, ..Default::default() };
             let desc = load(scene.as_deref(), &o)?;
-            let (world, times) = pool(desc.settings.threads)?.install(|| prepare(&desc))?;
+            let (world, times) = pool(desc.settings.threads)?.install(|| prepare_owned(desc))?;
             info(&world);
             println!("build: load {:.3} s, bvh {:.3} s", times.load.as_secs_f64(), times.build.as_secs_f64());
             Ok(())
@@ -327,7 +351,8 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: 
     }
     let interrupt = Interrupt::install()?;
     let pool = pool(desc.settings.threads)?;
-    let (world, times) = pool.install(|| prepare(&desc))?;
+    // The description is not needed again: its inline strands move into the world.
+    let (world, times) = pool.install(|| prepare_owned(desc))?;
     for w in &world.warnings {
         eprintln!("warning: {w}");
     }
@@ -422,6 +447,9 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: 
     );
     eprintln!("render        {secs:.3} s ({:?} integrator)", s.integrator);
     eprintln!("rays          {} ({:.2} M rays/s)", stats.rays, stats.rays as f64 / secs / 1e6);
+    if stats.irradiance_records > 0 {
+        eprintln!("irradiance    {} cache records", stats.irradiance_records);
+    }
     if let Some(peak) = peak_memory_bytes() {
         eprintln!("peak memory   {}", human_bytes(peak));
     }

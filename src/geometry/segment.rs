@@ -56,8 +56,7 @@ pub fn intersect_cylinder(
     p1: [f32; 4],
 ) -> Option<SegmentHit> {
     // One implementation serves one segment and four: the others lanes hold no surface.
-    let (p0, p1) = (lane0(p0), lane0(p1));
-    let hits = intersect_cylinder4(origin, dir, tmin, tmax, p0, p1);
+    let hits = intersect_cylinder4(origin, dir, tmin, tmax, lane0(p0), lane0(p1));
     hits.nearest().and_then(|lane| hits.hit(lane))
 }
 
@@ -73,8 +72,14 @@ fn lane0(p: [f32; 4]) -> [f32x4; 4] {
 /// Always inlined: its arguments and result are a few hundred bytes, which a call would copy.
 #[inline(always)]
 pub fn intersect_cylinder4(origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, p0: [f32x4; 4], p1: [f32x4; 4]) -> Hits4 {
-    let (g, mut valid) = Local4::new(origin, dir, p0, p1);
-    let miss = Hits4 { mask: 0, t: f32x4::ZERO, s: f32x4::ZERO, u: f32x4::ZERO, g };
+    let miss = Hits4 { mask: 0, t: f32x4::ZERO, s: f32x4::ZERO, u: f32x4::ZERO, g: None };
+    // Most segments of a leaf pass far from the ray: the cheap bound drops whole groups of
+    // four before the exact frame is built.
+    let near = Candidates::new(origin, dir, p0, p1);
+    if near.near().to_bitmask() == 0 {
+        return miss;
+    }
+    let (g, mut valid) = Local4::from_candidates(origin, dir, near);
     if valid.to_bitmask() == 0 {
         return miss;
     }
@@ -123,7 +128,7 @@ pub fn intersect_cylinder4(origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, p0: [f
     let far_ok = accept(far);
     let u = near_ok.select(near, far);
     let mask = (valid & (near_ok | far_ok)).to_bitmask();
-    Hits4 { mask, t: g.t0 + u, s: g.sc + u * g.sd, u, g }
+    Hits4 { mask, t: g.t0 + u, s: g.sc + u * g.sd, u, g: Some(g) }
 }
 
 /// The result of [`intersect_cylinder4`]: which lanes hit, and where.
@@ -133,7 +138,8 @@ pub struct Hits4 {
     t: f32x4,
     s: f32x4,
     u: f32x4,
-    g: Local4,
+    /// The frames, when some lane may hit (a miss returns without copying them).
+    g: Option<Local4>,
 }
 
 impl Hits4 {
@@ -166,7 +172,7 @@ impl Hits4 {
         if self.mask & (1 << lane) == 0 {
             return None;
         }
-        let g = self.g.lane(lane);
+        let g = self.g.as_ref()?.lane(lane);
         let u = self.u.to_array()[lane];
         // The cylinder's normal is the radial direction of the hit, perpendicular to the axis.
         finish(self.t.to_array()[lane], self.s.to_array()[lane], g.cp + g.dp * u)
@@ -267,7 +273,7 @@ struct Local {
 }
 
 /// Three-vectors of four lanes.
-#[derive(Clone, Copy, Default)]
+#[derive(Clone, Copy)]
 struct V4 {
     x: f32x4,
     y: f32x4,
@@ -310,7 +316,7 @@ impl V4 {
 }
 
 /// The ray and four segments, each in a frame centred on its `p0`.
-#[derive(Clone, Copy, Default)]
+#[derive(Clone, Copy)]
 struct Local4 {
     t0: f32x4,
     a: V4,
@@ -324,9 +330,76 @@ struct Local4 {
     dr: f32x4,
 }
 
+/// Four segments in structure-of-arrays form, with the lanes that may be hit: the first,
+/// cheap stage of [`Local4::new`].
+struct Candidates {
+    q0: V4,
+    a: V4,
+    l2: f32x4,
+    r0: f32x4,
+    r1: f32x4,
+    /// `n = dir x a`, its squared length and the larger radius, shared with the exact stage.
+    n: V4,
+    n2: f32x4,
+    rmax: f32x4,
+    /// Lanes holding a surface.
+    valid: f32x4,
+    /// Lanes whose axis line the ray line surely passes too far from to hit.
+    far: f32x4,
+}
+
+impl Candidates {
+    /// Loads four segments and culls degenerate ones and those whose axis line the ray line
+    /// passes farther from than the larger radius, by a conservative bound computed from the
+    /// plainly rounded offset `origin - p0`.
+    ///
+    /// The exact stage culls a lane when `m^2 > rmax^2 |n|^2 (1 + 2^-10)` with `m = c.n`
+    /// computed from the exactly placed point `c`. Here `m` is `w.n` with `w = origin - p0`
+    /// rounded: `c - w` lies along `dir`, perpendicular to `n`, so both are the same value
+    /// up to rounding, which is below `2^-21 |w| |n|` for the two of them together (one
+    /// rounding per component of `w`, three per dot product; `c` is no longer than `w`).
+    /// Subtracting `e = 3 * 2^-18 |w|_inf |n|_inf`, eight times that bound, and comparing
+    /// against a threshold widened by another 2^-10 culls only lanes the exact stage would
+    /// cull: the result is the same, bit for bit, and groups of four far segments skip the
+    /// TwoSum transform, the division and the frame.
+    #[inline(always)]
+    fn new(origin: Vec3, dir: Vec3, p0: [f32x4; 4], p1: [f32x4; 4]) -> Candidates {
+        // Structure of arrays: component k of the four points.
+        let ([x0, y0, z0, r0], [x1, y1, z1, r1]) = (f32x4::transpose(p0), f32x4::transpose(p1));
+        let (q0, q1) = (V4 { x: x0, y: y0, z: z0 }, V4 { x: x1, y: y1, z: z1 });
+        // Zero radius at both ends, a negative radius or NaN: no surface. A single zero end
+        // is a tapered tip and stays valid. (Comparisons with NaN are false.)
+        let mut valid = r0.simd_ge(f32x4::ZERO) & r1.simd_ge(f32x4::ZERO) & (r0 + r1).simd_gt(f32x4::ZERO);
+        let a = q1.sub(q0);
+        let l2 = a.length_squared();
+        valid &= l2.simd_gt(f32x4::ZERO); // zero-length segment: no axis, no side surface
+        let n = V4::splat(dir).cross(a);
+        let w = V4::splat(origin).sub(q0);
+        let n2 = n.length_squared();
+        let inf_norm = |v: V4| v.x.abs().fast_max(v.y.abs()).fast_max(v.z.abs());
+        let e = f32x4::splat(3.0 / 262_144.0) * inf_norm(w) * inf_norm(n);
+        let m = w.dot(n).abs() - e;
+        let rmax = r0.fast_max(r1);
+        let far = m.simd_gt(f32x4::ZERO) & (m * m).simd_gt(rmax * rmax * n2 * f32x4::splat(1.0 + 1.0 / 512.0));
+        Candidates { q0, a, l2, r0, r1, n, n2, rmax, valid, far }
+    }
+
+    /// Lanes holding a surface the ray line may come near enough to hit.
+    #[inline(always)]
+    fn near(&self) -> f32x4 {
+        self.valid & !self.far
+    }
+}
+
 impl Local4 {
     /// The frames of four segments and the mask of lanes that may hit: degenerate segments
     /// and segments the ray line passes too far from are culled.
+    #[inline(always)]
+    fn new(origin: Vec3, dir: Vec3, p0: [f32x4; 4], p1: [f32x4; 4]) -> (Local4, f32x4) {
+        Local4::from_candidates(origin, dir, Candidates::new(origin, dir, p0, p1))
+    }
+
+    /// The exact stage of [`Local4::new`].
     ///
     /// Translating the origin to p0's frame (`origin - p0`) in f32 would already round away
     /// up to half an ulp of |origin|, 3e-5 at 1e3 units, and stepping along the ray would
@@ -340,38 +413,14 @@ impl Local4 {
     /// Everything after works with lengths of the segment's scale; the only loss left is the
     /// rounding of t = t0 + u itself. Cost: about 35 extra flops, no division.
     #[inline(always)]
-    fn new(origin: Vec3, dir: Vec3, p0: [f32x4; 4], p1: [f32x4; 4]) -> (Local4, f32x4) {
-        // Structure of arrays: component k of the four points.
-        let ([x0, y0, z0, r0], [x1, y1, z1, r1]) = (f32x4::transpose(p0), f32x4::transpose(p1));
-        let (q0, q1) = (V4 { x: x0, y: y0, z: z0 }, V4 { x: x1, y: y1, z: z1 });
-        // Zero radius at both ends, a negative radius or NaN: no surface. A single zero end
-        // is a tapered tip and stays valid. (Comparisons with NaN are false.)
-        let mut valid = r0.simd_ge(f32x4::ZERO) & r1.simd_ge(f32x4::ZERO) & (r0 + r1).simd_gt(f32x4::ZERO);
-        let a = q1.sub(q0);
-        let l2 = a.length_squared();
-        valid &= l2.simd_gt(f32x4::ZERO); // zero-length segment: no axis, no side surface
-
-        // Most segments of a leaf pass far from the ray, so cull them first with a cheap line
-        // distance (Cychosz & Waggenspack's d = |o.n| / |n|, n = dir x a) from the plain f32
-        // offset origin - p0, before paying for the exact frame below. That offset and the
-        // dot product round by at most about 7 * 2^-24 (|origin| + |p0|) |n|; the slack of
-        // 2^-18 of that magnitude, and 2^-9 of the radius (twice the exact test's), keeps
-        // the cull conservative: it only drops lanes the exact test would drop too.
-        let d = V4::splat(dir);
-        let n = d.cross(a);
-        let rmax = r0.fast_max(r1);
-        let rough = V4::splat(origin).sub(q0).dot(n);
-        let magnitude = f32x4::splat(origin.abs().max_element()) + q0.x.abs().fast_max(q0.y.abs()).fast_max(q0.z.abs());
-        let reach = rmax * f32x4::splat(1.0 + 1.0 / 512.0) + magnitude * f32x4::splat(1.0 / 262_144.0);
-        valid &= !(rough * rough).simd_gt(reach * reach * n.length_squared());
-        if valid.to_bitmask() == 0 {
-            return (Local4::default(), valid);
-        }
-
+    fn from_candidates(origin: Vec3, dir: Vec3, k: Candidates) -> (Local4, f32x4) {
+        let mut valid = k.near();
+        let Candidates { q0, a, l2, r0, r1, n, n2, rmax, .. } = k;
         let (hx, lx) = two_sum(f32x4::splat(origin.x), -q0.x);
         let (hy, ly) = two_sum(f32x4::splat(origin.y), -q0.y);
         let (hz, lz) = two_sum(f32x4::splat(origin.z), -q0.z);
         let (hi, lo) = (V4 { x: hx, y: hy, z: hz }, V4 { x: lx, y: ly, z: lz });
+        let d = V4::splat(dir);
         let t0 = high12(-hi.dot(d));
         let dh_s = Vec3::new(high12_1(dir.x), high12_1(dir.y), high12_1(dir.z));
         // dl is exact and has at most 12 significant bits too. hi + t0 dh cancels exactly
@@ -386,7 +435,7 @@ impl Local4 {
         // culling a grazing hit that the full test would find. (A ray parallel to the axis
         // has n = 0 and passes on.)
         let m = c.dot(n);
-        valid &= !(m * m).simd_gt(rmax * rmax * n.length_squared() * f32x4::splat(1.0 + 1.0 / 1024.0));
+        valid &= !(m * m).simd_gt(rmax * rmax * n2 * f32x4::splat(1.0 + 1.0 / 1024.0));
 
         let inv_l2 = f32x4::ONE / l2;
         valid &= inv_l2.is_finite();
@@ -900,6 +949,43 @@ mod tests {
         }
         eprintln!("far origin: {hits} hits, worst |t - t_ref| {worst_t:.2e}, rebuilt point {worst_rebuilt:.2e}, origin + t dir off surface {worst_ray_point:.2e}");
         assert!(hits > 800);
+    }
+
+    #[test]
+    fn cheap_bound_culls_only_what_the_exact_test_culls() {
+        // Rays aimed within 0.3 % of the larger radius (just inside and just outside it) from
+        // near and far, at scales from 1e-3 to 1e3: a lane the cheap bound drops must also be
+        // dropped by the exact test. Rays passing at three radii from up to the segment's
+        // scale away must all be dropped by the bound.
+        let mut rng = Lcg(7);
+        let (mut dropped, mut kept_far) = (0, 0);
+        for i in 0..40_000 {
+            let clear = i % 2 == 1;
+            let scale = 10f32.powf(rng.range(-3.0, 3.0));
+            let base = rng.unit() * scale * rng.range(0.0, 2.0);
+            let axis = rng.unit() * scale * 0.05;
+            let r = scale * 0.002 * rng.range(0.1, 1.0);
+            let (p0, p1) = (pt(base, r), pt(base + axis, r * rng.range(0.2, 1.0)));
+            let (miss, far) = if clear {
+                (rng.range(3.0, 4.0), rng.range(-3.0, 0.0))
+            } else {
+                (rng.range(0.998, 1.003), rng.range(-1.0, 4.0))
+            };
+            let target = base + axis * rng.range(-0.2, 1.2) + perp(axis) * (r * miss);
+            // A clear ray runs perpendicular to the axis and to its offset, so the lines pass
+            // three radii apart; a grazing one comes from any direction.
+            let from = if clear { axis.cross(perp(axis)).normalize() } else { rng.unit() };
+            let o = target + from * scale * 10f32.powf(far);
+            let d = (target - o).normalize();
+            let k = Candidates::new(o, d, lane0(p0), lane0(p1));
+            let cheap = k.near().to_bitmask() & 1 != 0;
+            let exact = Local4::from_candidates(o, d, Candidates { far: f32x4::ZERO, ..k }).1.to_bitmask() & 1 != 0;
+            assert!(cheap || !exact, "the bound culled a lane the exact test keeps: o {o:?} d {d:?} {p0:?} {p1:?}");
+            assert!(!(clear && cheap), "a ray three radii away passed the bound: o {o:?} d {d:?} {p0:?} {p1:?}");
+            dropped += usize::from(!cheap && !clear);
+            kept_far += usize::from(cheap && !exact);
+        }
+        eprintln!("grazing rays: the bound dropped {dropped}, kept {kept_far} that the exact test dropped");
     }
 
     fn p0_vec(p: [f32; 4]) -> Vec3 {

@@ -114,7 +114,13 @@ impl StrandSet {
     /// Shading tangent at parameter `s` in [0, 1] along the segment starting at point `i`:
     /// the point tangents interpolated, so shading is smooth across segment joints.
     pub fn tangent(&self, i: u32, s: f32) -> Vec3 {
-        let strand = self.strand_of(i) as usize;
+        self.tangent_on(i, s, self.strand_of(i))
+    }
+
+    /// [`StrandSet::tangent`] when the caller knows the strand that owns point `i` (from
+    /// [`StrandSet::strand_point`]), sparing the search for it.
+    pub fn tangent_on(&self, i: u32, s: f32, strand: u32) -> Vec3 {
+        let strand = strand as usize;
         let t0 = self.tangent_in(i, strand);
         let t1 = self.tangent_in(i + 1, strand);
         t0.lerp(t1, s).try_normalize().unwrap_or(t0)

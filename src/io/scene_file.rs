@@ -12,7 +12,7 @@ use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, P
 use crate::light::Light;
 use crate::scene::{
     Adaptive, CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, Integrator,
-    MeshEntry, MeshSource, RenderSettings,
+    IrradianceCacheSettings, MeshEntry, MeshSource, RenderSettings,
 };
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use crate::shading::{tube::Tube, Material};
@@ -140,6 +140,25 @@ struct RenderToml {
     gather_rays: Option<u32>,
     #[serde(default)]
     adaptive: Option<AdaptiveToml>,
+    #[serde(default)]
+    irradiance_cache: Option<IrradianceCacheToml>,
+}
+
+/// `irradiance_cache = true`, or `irradiance_cache = { accuracy = 0.3, spacing = 4, rays = 256 }`
+/// (each key optional).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum IrradianceCacheToml {
+    On(bool),
+    With(IrradianceCacheTable),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct IrradianceCacheTable {
+    accuracy: Option<f32>,
+    spacing: Option<u32>,
+    rays: Option<u32>,
 }
 
 /// `adaptive = { min_spp = 4, max_spp = 64, threshold = 0.05 }`.
@@ -169,6 +188,7 @@ impl Default for RenderToml {
             transparency_layers: None,
             gather_rays: None,
             adaptive: None,
+            irradiance_cache: None,
         }
     }
 }
@@ -827,6 +847,18 @@ pub fn parse_scene_frame(
             max_spp: a.max_spp,
             threshold: a.threshold,
         }),
+        irradiance_cache: match &r.irradiance_cache {
+            None | Some(IrradianceCacheToml::On(false)) => None,
+            Some(IrradianceCacheToml::On(true)) => Some(IrradianceCacheSettings::default()),
+            Some(IrradianceCacheToml::With(t)) => {
+                let d = IrradianceCacheSettings::default();
+                Some(IrradianceCacheSettings {
+                    accuracy: t.accuracy.unwrap_or(d.accuracy),
+                    spacing: t.spacing.unwrap_or(d.spacing),
+                    rays: t.rays.unwrap_or(d.rays),
+                })
+            }
+        },
     };
     let mut lights = Vec::new();
     for (i, l) in scene.light.iter().enumerate() {

@@ -3,7 +3,7 @@
 //! and refraction up to the maximum depth, and semi-transparent hair blended in layers.
 //! The final gather reuses it with an indirect term ([`Indirect`]).
 
-use crate::accel::{Hit, HitKind, Object, Shape, Skip, NEGLIGIBLE_TRANSMITTANCE};
+use crate::accel::{Hit, HitKind, Object, Shape, Skip, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
 use crate::geometry::StrandPoint;
 use crate::light::{Light, LightSample};
 use crate::math::rng::PixelSampler;
@@ -11,6 +11,13 @@ use crate::math::{offset_origin, Color, Ray, RayCone};
 use crate::scene::World;
 use crate::shading::{Material, ShadingPoint};
 use glam::Vec3;
+
+/// Transmittance below which the layers of semi-transparent hair behind are walked
+/// stochastically instead of all shaded and blended ([`trace_with`]). A half: behind a
+/// layer of 50 % (or denser) hair the rest is walked, so a camera ray shades at most two
+/// layers, and 50 %-tip fur renders in about 1.9 times the time of opaque fur instead of
+/// 3.2 times (`cargo bench --bench transparency`).
+pub const BLEND_TRANSMITTANCE: f32 = 0.5;
 
 /// Per-task tallies, summed when the render ends.
 #[derive(Clone, Copy, Debug, Default)]
@@ -49,6 +56,22 @@ pub(super) struct Surface {
     pub hair: Option<(Vec3, f32, Vec3)>,
     /// Unit geometric normal facing the incoming ray.
     pub geometric: Vec3,
+    /// For hair: the strand and what is known of it at the hit.
+    pub strand_point: Option<StrandPoint>,
+}
+
+impl Surface {
+    /// The hit as the AOVs record it.
+    pub fn first_hit(&self, hit: &Hit) -> FirstHit {
+        FirstHit {
+            t: hit.t,
+            normal: self.sp.tangent.unwrap_or(self.sp.normal),
+            object: hit.object,
+            strand: self.strand_point.map(|p| p.strand),
+            strand_point: self.strand_point,
+            lod_level: self.strand_point.map(|_| hit.level),
+        }
+    }
 }
 
 /// Radiance arriving along `ray`, and the first hit for AOVs.
@@ -87,6 +110,8 @@ pub(super) struct At<'a> {
     pub wo: Vec3,
     /// The footprint of the ray that made the hit (gathered rays continue it).
     pub cone: RayCone,
+    /// Width of the ray's footprint (its cone) at the hit: about a pixel, seen there.
+    pub footprint: f32,
 }
 
 /// The direct integrator adds specular rays only. Without `see_emitters` (light gathered
@@ -121,6 +146,13 @@ impl Indirect for Whitted {
 /// their opacity, `C = sum_i T_i a_i C_i` with `T_{i+1} = T_i (1 - a_i)`, stopping at an
 /// opaque hit or a negligible `T`; only when every collected hit let enough light through
 /// does the ray continue past them with another traversal.
+///
+/// Once less than [`BLEND_TRANSMITTANCE`] of the light is left, the layers behind (each
+/// needing its own shadow rays, through ever more hair) are no longer all shaded: the tail
+/// is walked as in stochastic transparency (Enderton et al. 2010), stopping at layer `i`
+/// with probability `a_i` and shading it with the whole remaining `T` ([`StochasticTail`]:
+/// the multi-hit query stops looking behind that layer, too). The expected colour
+/// is the blend's; the noise is bounded by that small `T`.
 pub(super) fn trace_with(
     world: &World,
     ray: &Ray,
@@ -149,28 +181,41 @@ pub(super) fn trace_with(
     }
     let k = world.settings.transparency_layers as usize;
     let (mut layers, mut seen) = (Vec::with_capacity(k), Vec::new());
-    let (mut color, mut transmitted, mut first, mut tmin) = (Color::ZERO, 1.0f32, None, 0.0);
+    // `transmitted`: the light passing every layer so far; `carried`: the weight of what
+    // is shaded next (equal to it while blending, frozen once the tail is walked).
+    let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, 0.0);
+    let tail = StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 };
     loop {
-        world.accel.intersect_k(ray, tmin, k, &seen, &mut layers);
+        world.accel.intersect_k(ray, tmin, k, &seen, Some(tail), &mut layers);
         // Lights count up to where the collected hits may hide what lies behind them.
         let light = match layers.last() {
             Some(l) if layers.len() == k || l.opacity >= 1.0 => seen_light(l.hit.t),
             _ => seen_light(ray.tmax),
         };
         for layer in layers.iter().take_while(|l| light.is_none_or(|(t, _)| l.hit.t < t)) {
-            let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect);
-            first.get_or_insert(f);
-            color += transmitted * layer.opacity * c;
-            transmitted *= 1.0 - layer.opacity;
+            let a = layer.opacity;
+            let blend = carried >= BLEND_TRANSMITTANCE;
+            let last = transmitted * (1.0 - a) < NEGLIGIBLE_TRANSMITTANCE;
+            if blend || last || tail.draw(&layer.hit) < a {
+                let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect);
+                first.get_or_insert(f);
+                if !blend {
+                    // The tail stops here, with all the light that reached it.
+                    return (color + carried * c, first);
+                }
+                color += carried * a * c;
+                carried *= 1.0 - a;
+            }
+            transmitted *= 1.0 - a;
             if transmitted < NEGLIGIBLE_TRANSMITTANCE {
                 return (color, first);
             }
         }
         if let Some((_, radiance)) = light {
-            return (color + transmitted * emitted(radiance), first);
+            return (color + carried * emitted(radiance), first);
         }
         if layers.len() < k {
-            return (color + transmitted * emitted(world.background), first);
+            return (color + carried * emitted(world.background), first);
         }
         // Every hit collected let light through: continue behind the farthest.
         tmin = layers[k - 1].hit.t;
@@ -195,20 +240,7 @@ fn shade(
     let surface = surface_at(object, hit, ray);
     let sp = &surface.sp;
     let wo = -ray.dir;
-    let first = FirstHit {
-        t: hit.t,
-        normal: sp.tangent.unwrap_or(sp.normal),
-        object: hit.object,
-        strand: match &object.shape {
-            Shape::Strands(s) => Some(s.strand_of(hit.prim)),
-            Shape::Mesh(_) => None,
-        },
-        strand_point: match (&object.shape, hit.kind) {
-            (Shape::Strands(s), HitKind::Segment { s: along, .. }) => Some(s.strand_point(hit.prim, along)),
-            _ => None,
-        },
-        lod_level: matches!(object.shape, Shape::Strands(_)).then_some(hit.level),
-    };
+    let first = surface.first_hit(hit);
 
     let mut color = material.ambient(sp, world.background);
     let tube_hair = material.has_ambient_term(sp);
@@ -254,7 +286,7 @@ fn shade(
             color += r.weight * indirect.specular(world, &next, depth + 1, sampler, counters);
         }
     }
-    let at = At { surface: &surface, hit, material, wo, cone: ray.cone };
+    let at = At { surface: &surface, hit, material, wo, cone: ray.cone, footprint: ray.cone.width_at(hit.t) };
     color += indirect.diffuse(world, &at, depth, sampler, counters);
     (color, first)
 }
@@ -279,7 +311,7 @@ pub(super) fn surface_at(object: &Object, hit: &Hit, ray: &Ray) -> Surface {
                 normal = geometric;
             }
             let sp = ShadingPoint { p, normal, tangent: None, color: None, backface, strand: None };
-            Surface { sp, hair: None, geometric }
+            Surface { sp, hair: None, geometric, strand_point: None }
         }
         (Shape::Strands(strands), HitKind::Segment { s, normal }) => {
             let i = hit.prim as usize;
@@ -292,19 +324,18 @@ pub(super) fn surface_at(object: &Object, hit: &Hit, ray: &Ray) -> Surface {
             // Reconstruct the hit on the surface from the segment itself: its error is
             // relative to the segment's coordinates, not to the ray's length.
             let p = axis_point + normal * radius;
-            let tangent = strands.tangent(hit.prim, s);
+            // One search for the strand serves the tangent, shading and the AOVs.
+            let at = strands.strand_point(hit.prim, s);
+            let tangent = strands.tangent_on(hit.prim, s, at.strand);
             let sp = ShadingPoint {
                 p,
                 normal,
                 tangent: Some(tangent),
                 color: object.lod_color(hit.level, strands.color(hit.prim, s)),
                 backface: false,
-                strand: Some({
-                    let at = strands.strand_point(hit.prim, s);
-                    (at.strand, at.along)
-                }),
+                strand: Some((at.strand, at.along)),
             };
-            Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal }
+            Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal, strand_point: Some(at) }
         }
         _ => unreachable!("hit kinds match their shapes"),
     }

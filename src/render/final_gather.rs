@@ -6,19 +6,23 @@
 //! transmits from behind). Each gathered ray returns the direct light at the point it
 //! reaches; lights and the environment it sees directly count nothing, since the direct
 //! part of the shading already sampled them, nor do lights it sees through a mirror
-//! (no caustics: a few very bright samples would be fireflies). No irradiance cache yet:
-//! every camera sample gathers anew.
+//! (no caustics: a few very bright samples would be fireflies). With the irradiance cache
+//! ([`IrradianceCache`]), diffuse surfaces read the gathered light from it where a record
+//! serves, and gather anew elsewhere; hair always gathers anew.
 
 use super::direct::{departure, trace_with, At, Counters, FirstHit, Indirect, Whitted};
+use super::irradiance_cache::{cached_albedo, IrradianceCache};
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
 use crate::scene::World;
 use crate::shading::Material;
 
-/// The final-gather integrator's indirect term.
-struct FinalGather;
+/// The final-gather integrator's indirect term, with the irradiance cache when there is one.
+struct FinalGather<'a> {
+    cache: Option<&'a IrradianceCache>,
+}
 
-impl Indirect for FinalGather {
+impl Indirect for FinalGather<'_> {
     fn specular(
         &self,
         world: &World,
@@ -41,6 +45,11 @@ impl Indirect for FinalGather {
         if matches!(at.material, Material::Mirror { .. } | Material::Glass { .. }) {
             return Color::ZERO;
         }
+        if let (Some(cache), Some(albedo)) = (self.cache, cached_albedo(at)) {
+            if let Some(e) = cache.lookup(at.surface.sp.p, at.surface.sp.normal) {
+                return albedo * e;
+            }
+        }
         let n = world.settings.gather_rays;
         let mut sum = Color::ZERO;
         for _ in 0..n {
@@ -55,12 +64,14 @@ impl Indirect for FinalGather {
     }
 }
 
-/// Radiance along a camera ray by final gathering, and the first hit for AOVs.
+/// Radiance along a camera ray by final gathering, and the first hit for AOVs; diffuse
+/// surfaces read `cache` where one of its records serves.
 pub fn trace(
     world: &World,
+    cache: Option<&IrradianceCache>,
     ray: &Ray,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    trace_with(world, ray, 0, sampler, counters, &FinalGather, true)
+    trace_with(world, ray, 0, sampler, counters, &FinalGather { cache }, true)
 }

@@ -6,10 +6,12 @@
 mod adaptive;
 mod direct;
 mod final_gather;
+mod irradiance_cache;
 mod path;
 mod tiled;
 
-pub use direct::{trace, Counters, FirstHit};
+pub use direct::{trace, Counters, FirstHit, BLEND_TRANSMITTANCE};
+pub use irradiance_cache::IrradianceCache;
 pub use tiled::{render_tiles, tile_count_of, AfterTile, Control, TileMask, TiledFilm};
 
 use crate::film::{Film, Pixel};
@@ -29,6 +31,8 @@ pub struct RenderStats {
     pub rays: u64,
     /// Wall-clock time of the render (not of preparing the scene).
     pub elapsed: Duration,
+    /// Records in the final gather's irradiance cache (0 without one).
+    pub irradiance_records: u64,
 }
 
 /// Something told of progress: called with the number of tiles finished since the last call.
@@ -55,16 +59,29 @@ pub fn render(world: &World, progress: Option<&dyn Progress>) -> (Film, RenderSt
     (state.film, stats)
 }
 
-/// Radiance along a camera ray by the world's integrator, and the first hit.
+/// Radiance along a camera ray by the world's integrator, and the first hit. The final
+/// gather gathers at every hit here (the irradiance cache needs a pre-pass over the image:
+/// [`trace_camera_cached`]).
 pub fn trace_camera(
     world: &World,
     ray: &Ray,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
+    trace_camera_cached(world, None, ray, sampler, counters)
+}
+
+/// [`trace_camera`], the final gather reading `cache` on diffuse surfaces.
+pub fn trace_camera_cached(
+    world: &World,
+    cache: Option<&IrradianceCache>,
+    ray: &Ray,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+) -> (Color, Option<FirstHit>) {
     match world.settings.integrator {
         Integrator::Direct => trace(world, ray, 0, sampler, counters),
-        Integrator::FinalGather => final_gather::trace(world, ray, sampler, counters),
+        Integrator::FinalGather => final_gather::trace(world, cache, ray, sampler, counters),
         Integrator::Path => path::trace(world, ray, sampler, counters),
     }
 }
@@ -74,7 +91,7 @@ pub fn trace_camera(
 /// `min_spp` while they disagree ([`adaptive::Spread`]), up to `max_spp`; sample `s` is
 /// the same whatever the batches, so a pixel refined to `n` samples equals a fixed-rate
 /// render at `n`.
-fn render_pixel(world: &World, x: u32, y: u32, counters: &mut Counters) -> Pixel {
+fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, counters: &mut Counters) -> Pixel {
     let (min, max, threshold) = match world.settings.adaptive {
         Some(a) => (a.min_spp, a.max_spp, Some(a.threshold)),
         None => (world.settings.spp, world.settings.spp, None),
@@ -90,7 +107,7 @@ fn render_pixel(world: &World, x: u32, y: u32, counters: &mut Counters) -> Pixel
             let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
             let (jx, jy) = sampler.next_2d();
             let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
-            let (color, first) = trace_camera(world, &ray, &mut sampler, counters);
+            let (color, first) = trace_camera_cached(world, cache, &ray, &mut sampler, counters);
             sum += color;
             spread.add(color, first.map(|f| (f.object, f.strand)));
             if let Some(f) = first {

@@ -14,7 +14,7 @@
 //! light only (the direct integrator's image); with 1, one bounce of indirect light.
 
 use super::direct::{departure, surface_at, Counters, FirstHit};
-use crate::accel::{Hit, HitKind, LayerHit, Shape};
+use crate::accel::{Hit, LayerHit, NEGLIGIBLE_TRANSMITTANCE};
 use crate::light::Light;
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
@@ -38,7 +38,9 @@ fn hittable(light: &Light) -> bool {
 }
 
 /// The hit a path stops at: the nearest opaque hit, or a partial one chosen with
-/// probability equal to its opacity, front to back.
+/// probability equal to its opacity, front to back; a ray never goes past a stack of
+/// partial hits that lets less than [`NEGLIGIBLE_TRANSMITTANCE`] through (a bias below
+/// that fraction, where the multi-hit query stops looking).
 fn next_hit(
     world: &World,
     ray: &Ray,
@@ -53,9 +55,12 @@ fn next_hit(
     seen.clear();
     let mut tmin = 0.0;
     loop {
-        world.accel.intersect_k(ray, tmin, k, seen, layers);
+        world.accel.intersect_k(ray, tmin, k, seen, None, layers);
+        let mut transmitted = 1.0f32;
         for l in layers.iter() {
-            if l.opacity >= 1.0 || sampler.next_1d() < l.opacity {
+            transmitted *= 1.0 - l.opacity;
+            // The list ends where less than NEGLIGIBLE_TRANSMITTANCE passes: stop there.
+            if transmitted < NEGLIGIBLE_TRANSMITTANCE || sampler.next_1d() < l.opacity {
                 return Some(l.hit);
             }
         }
@@ -114,20 +119,7 @@ pub fn trace(
         let wo = -ray.dir;
         let tube = material.shades_whole_circle();
         if vertex == 0 {
-            first = Some(FirstHit {
-                t: hit.t,
-                normal: sp.tangent.unwrap_or(sp.normal),
-                object: hit.object,
-                strand: match &object.shape {
-                    Shape::Strands(s) => Some(s.strand_of(hit.prim)),
-                    Shape::Mesh(_) => None,
-                },
-                strand_point: match (&object.shape, hit.kind) {
-                    (Shape::Strands(s), HitKind::Segment { s: along, .. }) => Some(s.strand_point(hit.prim, along)),
-                    _ => None,
-                },
-                lod_level: matches!(object.shape, Shape::Strands(_)).then_some(hit.level),
-            });
+            first = Some(surface.first_hit(&hit));
         }
 
         // Next-event estimation: one sample of every light but the environment.

@@ -2,9 +2,9 @@
 //! and resumed, or be split over machines: every pixel depends only on (seed, pixel,
 //! sample), so any set of tiles, rendered in any order or process, gives the same pixels.
 
-use super::{render_pixel, Counters, Progress, RenderStats, TILE};
+use super::{render_pixel, Counters, IrradianceCache, Progress, RenderStats, TILE};
 use crate::film::{Film, Region};
-use crate::scene::World;
+use crate::scene::{Integrator, World};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
@@ -151,6 +151,15 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
     let cancelled = || control.cancel.is_some_and(|c| c.load(Ordering::Relaxed));
     let region = state.region;
     let shared = Mutex::new(state);
+    // The irradiance cache's pre-pass covers the whole image whatever the tiles, so every
+    // set of tiles reads the same cache.
+    let mut pre_pass = Counters::default();
+    let cache = match (world.settings.integrator, world.settings.irradiance_cache) {
+        (Integrator::FinalGather, Some(settings)) if !todo.is_empty() => {
+            Some(IrradianceCache::build(world, settings, &mut pre_pass))
+        }
+        _ => None,
+    };
     let rays: u64 = todo
         .into_par_iter()
         .map(|t| {
@@ -165,7 +174,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
                     return 0;
                 }
                 let (x, y) = (tile.x + i as u32 % tile.width, tile.y + i as u32 / tile.width);
-                *p = render_pixel(world, x, y, &mut counters);
+                *p = render_pixel(world, cache.as_ref(), x, y, &mut counters);
             }
             {
                 let mut s = lock(&shared);
@@ -182,7 +191,8 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
         })
         .sum();
     let state = shared.into_inner().unwrap_or_else(|e| e.into_inner());
-    (state, RenderStats { rays, elapsed: start.elapsed() })
+    let irradiance_records = cache.as_ref().map_or(0, |c| c.len() as u64);
+    (state, RenderStats { rays: rays + pre_pass.rays, elapsed: start.elapsed(), irradiance_records })
 }
 
 /// Locks the state; a panic elsewhere cannot leave it half-written (tiles are pasted whole
