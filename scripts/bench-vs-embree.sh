@@ -24,7 +24,7 @@ trap 'rm -rf "$out"' EXIT
 pick() { grep -E "$2" "$1" | head -1 | sed -E "s#.*$3 +([0-9.]+).*#\1#"; }
 line() { awk -v n="$1" -v t="$2" -v e="$3" 'BEGIN { if (t == "" || e == "" || e + 0 == 0) printf "%s tress=%s embree=%s ratio=n/a\n", n, t, e; else printf "%s tress=%s embree=%s ratio=%.2f\n", n, t, e, t / e }'; }
 echo
-line build_ms "$(pick "$out/tress.txt" 'RESULT build_ms' 'median')" "$(pick "$out/embree.txt" 'RESULT build_ms' 'median')"
+line build_ms "$(pick "$out/tress.txt" 'RESULT build_ms' 'build_ms median')" "$(pick "$out/embree.txt" 'RESULT build_ms' 'build_ms median')"
 line build_cpu_ms "$(pick "$out/tress.txt" 'RESULT build_ms' 'all threads\) median')" "$(pick "$out/embree.txt" 'RESULT build_ms' 'all threads\) median')"
 line bytes_per_segment "$(pick "$out/tress.txt" 'RESULT mem' 'total/segment')" "$(pick "$out/embree.txt" 'RESULT mem' 'total/segment')"
 line bvh_bytes_per_segment "$(pick "$out/tress.txt" 'RESULT mem' 'bvh/segment')" "$(pick "$out/embree.txt" 'RESULT mem' 'bvh/segment')"
