@@ -239,6 +239,10 @@ fn shade(
 
     let mut color = material.ambient(sp, world.background);
     let tube_hair = material.has_ambient_term(sp);
+    // Shadow rays through semi-transparent hair are estimated: unbiased, and they stop
+    // early in dense fur (`Accel::transmittance_estimate`). The seed is a hash, not a
+    // sample dimension, so the following dimensions keep their values.
+    let shadow_seed = world.accel.has_transparency().then(|| sampler.hash());
     for light in &world.lights {
         if tube_hair && light.background() != Color::ZERO {
             continue; // the tube model's ambient term already stands for the environment
@@ -262,8 +266,12 @@ fn shade(
         counters.rays += 1;
         // Stop short of the light by a relative margin so its own surface does not block.
         let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
-        // Hair lets light through by its opacity; meshes and opaque strands block it.
-        let transmitted = world.accel.transmittance(d.origin, ls.dir, tmax, d.skip);
+        // Hair lets light through by its opacity; meshes and opaque strands block it. The
+        // estimate stops at the first hits like an opaque shadow ray, most of the time.
+        let transmitted = match shadow_seed {
+            Some(seed) => world.accel.transmittance_estimate(d.origin, ls.dir, tmax, d.skip, seed),
+            None => world.accel.transmittance(d.origin, ls.dir, tmax, d.skip),
+        };
         if transmitted > 0.0 {
             color += f * ls.value * transmitted;
         }
