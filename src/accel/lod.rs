@@ -565,7 +565,7 @@ mod tests {
         let (mut sum, mut sq) = (0.0, 0.0);
         for _ in 0..n {
             let origin = Vec3::new(rng.random(), 0.1 + 0.8 * rng.random::<f32>(), 1.0);
-            let a = 1.0 - accel.transmittance_cone(origin, -Vec3::Z, 2.0, None, cone) as f64;
+            let a = 1.0 - accel.transmittance_cone(origin, -Vec3::Z, 2.0, None, cone, None) as f64;
             (sum, sq) = (sum + a, sq + a * a);
         }
         let mean = sum / n as f64;
@@ -615,7 +615,7 @@ mod tests {
             assert!(layers.len() <= 1, "ray {i}: an opaque hit ends the list");
             if let Some(l) = layers.first() {
                 assert_eq!((l.hit.level, l.opacity, l.hit.radius_scale), (0, 1.0, 1.0), "ray {i}");
-                assert_eq!(accel.transmittance_cone(origin, -Vec3::Z, 2.0, None, ray.cone), 0.0);
+                assert_eq!(accel.transmittance_cone(origin, -Vec3::Z, 2.0, None, ray.cone, None), 0.0);
                 hits += 1;
             }
         }
@@ -691,7 +691,7 @@ mod tests {
             }
             // Shadow rays (transmittance through opaque strands) and the multi-hit query see
             // the same levels.
-            let blocked = accel.transmittance_cone(ray.origin, ray.dir, 12.0, None, ray.cone) == 0.0;
+            let blocked = accel.transmittance_cone(ray.origin, ray.dir, 12.0, None, ray.cone, None) == 0.0;
             assert_eq!(blocked, expected.is_some_and(|e| e.0 < 12.0), "ray {i}");
             accel.intersect_k(&ray, 0.0, 3, &[], None, &mut layers);
             assert_eq!(layers.first().map(|l| (l.hit.prim, l.hit.level)), expected.map(|e| (e.1, e.2)), "ray {i}");

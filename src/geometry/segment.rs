@@ -149,6 +149,12 @@ impl Hits4 {
         self.t.to_array()
     }
 
+    /// Axis parameters of the four lanes (meaningful where `mask` is set).
+    #[inline]
+    pub fn s(&self) -> [f32; 4] {
+        self.s.to_array()
+    }
+
     /// The hitting lane with the smallest distance.
     #[inline]
     pub fn nearest(&self) -> Option<usize> {

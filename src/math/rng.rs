@@ -63,6 +63,14 @@ impl PixelSampler {
         self.block[(d % 4) as usize]
     }
 
+    /// A hash of the sample and its current dimension, without advancing: a seed for
+    /// random decisions that need no stratification (stochastic shadow rays), so taking
+    /// one leaves the values of the following dimensions as they were.
+    #[inline]
+    pub fn hash(&self) -> u32 {
+        hash_combine(&[self.seed, self.index, self.dimension])
+    }
+
     /// Next two values in [0, 1)^2.
     #[inline]
     pub fn next_2d(&mut self) -> (f32, f32) {

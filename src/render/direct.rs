@@ -244,6 +244,10 @@ fn shade(
 
     let mut color = material.ambient(sp, world.background);
     let tube_hair = material.has_ambient_term(sp);
+    // Shadow rays through semi-transparent hair are estimated: unbiased, and they stop
+    // early in dense fur (`Accel::transmittance_estimate`). The seed is a hash, not a
+    // sample dimension, so the following dimensions keep their values.
+    let shadow_seed = world.accel.has_transparency().then(|| sampler.hash());
     for light in &world.lights {
         if tube_hair && light.background() != Color::ZERO {
             continue; // the tube model's ambient term already stands for the environment
@@ -268,9 +272,10 @@ fn shade(
         // Stop short of the light by a relative margin so its own surface does not block.
         let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
         // Hair lets light through by its opacity; meshes and opaque strands block it. The
-        // shadow ray starts with the camera ray's footprint at the hit (level of detail).
+        // estimate stops at the first hits like an opaque shadow ray, most of the time.
+        // The shadow ray starts with the camera ray's footprint at the hit (level of detail).
         let cone = ray.cone.propagate(hit.t, 0.0);
-        let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone);
+        let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone, shadow_seed);
         if transmitted > 0.0 {
             color += f * ls.value * transmitted;
         }

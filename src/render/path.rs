@@ -133,7 +133,7 @@ pub fn trace(
             counters.rays += 1;
             let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
             let cone = ray.cone.propagate(hit.t, 0.0);
-            let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone);
+            let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone, None);
             if transmitted > 0.0 {
                 let w = if hittable(light) {
                     power_heuristic(light.pdf(sp.p, ls.dir), material.scatter_pdf(sp, wo, ls.dir))
