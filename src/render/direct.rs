@@ -87,7 +87,11 @@ pub fn trace(
 
 /// What an integrator adds to direct light at a hit; the direct integrator and the final
 /// gather differ only here.
-pub(super) trait Indirect {
+pub(super) trait Indirect: Sized {
+    /// Whether specular rays see lights directly (see [`Whitted`]).
+    fn specular_sees_emitters(&self) -> bool {
+        true
+    }
     /// Radiance arriving along a specular (mirror, glass) ray, `depth` bounces deep.
     fn specular(
         &self,
@@ -96,7 +100,9 @@ pub(super) trait Indirect {
         depth: u32,
         sampler: &mut PixelSampler,
         counters: &mut Counters,
-    ) -> Color;
+    ) -> Color {
+        trace_with(world, ray, depth, sampler, counters, self, self.specular_sees_emitters()).0
+    }
     /// Indirect light reflected towards `-ray.dir` at a hit, besides the specular rays.
     fn diffuse(&self, world: &World, at: &At, depth: u32, sampler: &mut PixelSampler, counters: &mut Counters)
         -> Color;
@@ -122,15 +128,8 @@ pub(super) struct Whitted {
 }
 
 impl Indirect for Whitted {
-    fn specular(
-        &self,
-        world: &World,
-        ray: &Ray,
-        depth: u32,
-        sampler: &mut PixelSampler,
-        counters: &mut Counters,
-    ) -> Color {
-        trace_with(world, ray, depth, sampler, counters, self, self.see_emitters).0
+    fn specular_sees_emitters(&self) -> bool {
+        self.see_emitters
     }
     fn diffuse(&self, _: &World, _: &At, _: u32, _: &mut PixelSampler, _: &mut Counters) -> Color {
         Color::ZERO

@@ -23,17 +23,6 @@ struct FinalGather<'a> {
 }
 
 impl Indirect for FinalGather<'_> {
-    fn specular(
-        &self,
-        world: &World,
-        ray: &Ray,
-        depth: u32,
-        sampler: &mut PixelSampler,
-        counters: &mut Counters,
-    ) -> Color {
-        trace_with(world, ray, depth, sampler, counters, self, true).0
-    }
-
     fn diffuse(
         &self,
         world: &World,

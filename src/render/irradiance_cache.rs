@@ -175,17 +175,6 @@ struct Recorder<'a> {
 }
 
 impl Indirect for Recorder<'_> {
-    fn specular(
-        &self,
-        world: &World,
-        ray: &Ray,
-        depth: u32,
-        sampler: &mut PixelSampler,
-        counters: &mut Counters,
-    ) -> Color {
-        trace_with(world, ray, depth, sampler, counters, self, true).0
-    }
-
     fn diffuse(
         &self,
         world: &World,
