@@ -2,7 +2,7 @@
 //! Answers closest-hit and any-hit (shadow) queries for the integrators, and multi-hit
 //! queries for semi-transparent hair ([`Accel::intersect_k`], [`Accel::transmittance`]).
 //! A strand set with level of detail keeps one BVH whose items carry their pruning group
-//! ([`lod`]); every query sees it at the level of its ray's cone ([`Object::traverse`]).
+//! ([`lod`]); every query sees it at the level of its ray's cone (`Object::traverse`).
 
 pub mod bvh;
 mod layers;

@@ -9,7 +9,7 @@
 //!
 //! Statements end with `;`; words are separated by white space; strings are double quoted
 //! with backslash escapes; `//` and `/* */` are comments. Values are kept per `setAttr` and
-//! only interpreted when an attribute is used ([`Graph::numbers`] and friends), so an
+//! only interpreted when an attribute is used (the typed getters of `Graph`), so an
 //! unusual value on an attribute tress never reads is no error, while a malformed value on
 //! one it reads is, with its line.
 
