@@ -2,7 +2,7 @@
 //! hairs (thesis section 2.1.3; shared/spec/maya-fur-hair.md section 5).
 //!
 //! Guides come from a `.hair` file or are grown as follicles on a mesh
-//! ([`follicles`], what Maya's Create Hair dialog does); [`expand`] turns them into a
+//! ([`follicles`], what Maya's Create Hair dialog does); [`mod@expand`] turns them into a
 //! [`StrandSet`] of render hairs with the attributes of a [`HairSystem`]. Everything is a
 //! pure function of its inputs and a seed, so a scene gives the same hair on any number
 //! of threads.

@@ -13,7 +13,7 @@ use crate::shading::{Material, ShadingPoint};
 use glam::Vec3;
 
 /// Transmittance below which the layers of semi-transparent hair behind are walked
-/// stochastically instead of all shaded and blended ([`trace_with`]). A half: behind a
+/// stochastically instead of all shaded and blended (`trace_with`). A half: behind a
 /// layer of 50 % (or denser) hair the rest is walked, so a camera ray shades at most two
 /// layers. With the stochastic shadow transmittance of [`crate::accel::EXACT_SHADOW_TRANSMITTANCE`],
 /// 50 %-tip fur renders in about 1.6 times the time of opaque fur instead of 3.2 times
