@@ -5,15 +5,12 @@
 //! every hit it needs, and the BVH keeps culling with the distance of the K-th nearest
 //! hit (or of the nearest opaque one), so a stack of K hairs costs about one traversal.
 
-use super::lod::{LodRay, Widen};
+use super::lod::Widen;
 use super::{gather4, Accel, Hit, HitKind, Object, Shape, Skip};
 use crate::geometry::{segment, triangle, StrandSet};
 use crate::math::rng::{hash_combine, unit_float};
 use crate::math::{Ray, RayCone};
-use bvh::RayBoxTest;
 use glam::Vec3;
-
-use super::bvh;
 
 /// Transmittance below which a shadow ray counts as blocked and a stack of partial hits
 /// stops: light attenuated below 1/1000 adds less than the 8-bit output resolves.
@@ -215,40 +212,29 @@ impl Accel {
         out.clear();
         // Opaque hits before the collected ones would have ended the previous list.
         let opaque = self.intersect_among(ray, |o| !is_partial(o));
-        let test = RayBoxTest::new(ray.origin, ray.dir);
-        let lod_ray = LodRay::new(ray.origin, ray.dir, ray.cone);
         let mut cutoff = opaque.map_or(ray.tmax, |h| h.t);
         let mut done = false;
-        self.top.traverse(&test, &mut cutoff, |objects, cutoff| {
-            for &object in objects {
-                let o = &self.objects[object as usize];
-                if !is_partial(o) {
-                    continue;
-                }
-                o.traverse(&test, &lod_ray, cutoff, |prims, widen, cutoff| {
-                    leaf_hits(
-                        &o.shape,
-                        prims,
-                        (ray.origin, ray.dir),
-                        (tmin, *cutoff),
-                        (None, true),
-                        widen,
-                        |prim, t, kind, level| {
-                            if t >= *cutoff || exclude.iter().any(|e| e.hit.object == object && e.hit.prim == prim) {
-                                return false;
-                            }
-                            let hit = Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) };
-                            let layer = LayerHit { hit, opacity: opacity(&o.shape, prim, kind) * o.lod_opacity(level) };
-                            if let Some(t) = insert_layer(out, layer, k, tail) {
-                                *cutoff = t;
-                                done = true;
-                            }
-                            false
-                        },
-                    );
+        self.walk(ray.origin, ray.dir, ray.cone, &mut cutoff, is_partial, |object, o, prims, widen, cutoff| {
+            leaf_hits(
+                &o.shape,
+                prims,
+                (ray.origin, ray.dir),
+                (tmin, *cutoff),
+                (None, true),
+                widen,
+                |prim, t, kind, level| {
+                    if t >= *cutoff || exclude.iter().any(|e| e.hit.object == object && e.hit.prim == prim) {
+                        return false;
+                    }
+                    let hit = Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) };
+                    let layer = LayerHit { hit, opacity: opacity(&o.shape, prim, kind) * o.lod_opacity(level) };
+                    if let Some(t) = insert_layer(out, layer, k, tail) {
+                        *cutoff = t;
+                        done = true;
+                    }
                     false
-                });
-            }
+                },
+            );
             false
         });
         if let Some(hit) = opaque.filter(|_| !done) {
@@ -300,46 +286,24 @@ impl Accel {
         if self.occluded_among(origin, dir, tmax, skip, cone, |o| !is_partial(o)) {
             return 0.0;
         }
-        let test = RayBoxTest::new(origin, dir);
-        let lod_ray = LodRay::new(origin, dir, cone);
         let mut t = tmax;
         let mut transmitted = 1.0f32;
-        self.top.traverse(&test, &mut t, |objects, t| {
-            for &object in objects {
-                let o = &self.objects[object as usize];
-                if !is_partial(o) {
-                    continue;
+        let blocked = self.walk(origin, dir, cone, &mut t, is_partial, |object, o, prims, widen, t| {
+            let skip = skip.filter(|s| s.object == object);
+            leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), (skip, false), widen, |prim, _, kind, level| {
+                let a = opacity(&o.shape, prim, kind) * o.lod_opacity(level);
+                match seed {
+                    Some(seed) if transmitted < EXACT_SHADOW_TRANSMITTANCE => stop_draw(seed, object, prim) < a,
+                    _ => {
+                        transmitted *= 1.0 - a;
+                        transmitted < NEGLIGIBLE_TRANSMITTANCE
+                    }
                 }
-                let skip = skip.filter(|s| s.object == object);
-                let blocked = o.traverse(&test, &lod_ray, t, |prims, widen, t| {
-                    leaf_hits(
-                        &o.shape,
-                        prims,
-                        (origin, dir),
-                        (0.0, *t),
-                        (skip, false),
-                        widen,
-                        |prim, _, kind, level| {
-                            let a = opacity(&o.shape, prim, kind) * o.lod_opacity(level);
-                            match seed {
-                                Some(seed) if transmitted < EXACT_SHADOW_TRANSMITTANCE => {
-                                    stop_draw(seed, object, prim) < a
-                                }
-                                _ => {
-                                    transmitted *= 1.0 - a;
-                                    transmitted < NEGLIGIBLE_TRANSMITTANCE
-                                }
-                            }
-                        },
-                    )
-                });
-                if blocked {
-                    transmitted = 0.0;
-                    return true;
-                }
-            }
-            false
+            })
         });
+        if blocked {
+            transmitted = 0.0;
+        }
         transmitted
     }
 }

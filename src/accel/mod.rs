@@ -240,25 +240,14 @@ impl Accel {
     /// The closest hit along the ray before `ray.tmax` on the objects `among` accepts.
     #[inline]
     fn intersect_among(&self, ray: &Ray, among: impl Fn(&Object) -> bool) -> Option<Hit> {
-        let test = RayBoxTest::new(ray.origin, ray.dir);
-        let lod_ray = LodRay::new(ray.origin, ray.dir, ray.cone);
         let mut tmax = ray.tmax;
         let mut best = None;
-        self.top.traverse(&test, &mut tmax, |objects, tmax| {
-            for &object in objects {
-                let o = &self.objects[object as usize];
-                if !among(o) {
-                    continue;
-                }
-                o.traverse(&test, &lod_ray, tmax, |prims, widen, tmax| {
-                    if let Some((prim, t, kind, level)) =
-                        intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false, widen)
-                    {
-                        *tmax = t;
-                        best = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
-                    }
-                    false
-                });
+        self.walk(ray.origin, ray.dir, ray.cone, &mut tmax, among, |object, o, prims, widen, tmax| {
+            if let Some((prim, t, kind, level)) =
+                intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false, widen)
+            {
+                *tmax = t;
+                best = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
             }
             false
         });
@@ -283,27 +272,42 @@ impl Accel {
         cone: RayCone,
         among: impl Fn(&Object) -> bool,
     ) -> bool {
+        let mut t = tmax;
+        self.walk(origin, dir, cone, &mut t, among, |object, o, prims, widen, t| {
+            let skip = skip.filter(|s| s.object == object);
+            intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true, widen).is_some()
+        })
+    }
+
+    /// Walks the leaves of the objects `among` accepts that the ray from `origin` along
+    /// unit `dir` (footprint `cone`) enters before `*tmax`, nearest boxes first, under the
+    /// top-level BVH: `leaf(object, o, prims, widen, tmax)` as in [`Object::traverse`],
+    /// returning true to stop. Returns whether a leaf stopped the walk. Every query
+    /// (closest, any, K-nearest hits, transmittance) is this walk with its own leaf.
+    #[inline(always)]
+    fn walk(
+        &self,
+        origin: Vec3,
+        dir: Vec3,
+        cone: RayCone,
+        tmax: &mut f32,
+        among: impl Fn(&Object) -> bool,
+        mut leaf: impl FnMut(u32, &Object, &[u32], Widen, &mut f32) -> bool,
+    ) -> bool {
         let test = RayBoxTest::new(origin, dir);
         let lod_ray = LodRay::new(origin, dir, cone);
-        let mut t = tmax;
-        let mut blocked = false;
-        self.top.traverse(&test, &mut t, |objects, t| {
+        let mut stopped = false;
+        self.top.traverse(&test, tmax, |objects, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
-                if !among(o) {
-                    continue;
-                }
-                let skip = skip.filter(|s| s.object == object);
-                blocked = o.traverse(&test, &lod_ray, t, |prims, widen, t| {
-                    intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true, widen).is_some()
-                });
-                if blocked {
+                if among(o) && o.traverse(&test, &lod_ray, t, |prims, widen, t| leaf(object, o, prims, widen, t)) {
+                    stopped = true;
                     return true;
                 }
             }
             false
         });
-        blocked
+        stopped
     }
 }
 
