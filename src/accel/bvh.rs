@@ -220,29 +220,48 @@ impl Bvh {
             } else {
                 let node = &self.nodes[current.index as usize];
                 let (near, mut mask) = enter(ray, node, *tmax);
-                if mask != 0 {
-                    // Children hit, nearest first: insertion sort of at most eight.
-                    let mut hits = [Entry::default(); WIDTH];
-                    let mut n = 0;
-                    while mask != 0 {
-                        let i = mask.trailing_zeros() as usize;
-                        mask &= mask - 1;
-                        let child = node.child[i];
-                        let e = Entry { index: child & INDEX_MASK, count: (child >> INDEX_BITS) as u8, t: near[i] };
-                        let mut k = n;
-                        while k > 0 && hits[k - 1].t > e.t {
-                            hits[k] = hits[k - 1];
-                            k -= 1;
-                        }
-                        hits[k] = e;
-                        n += 1;
+                let entry = |i: u32| {
+                    let child = node.child[i as usize];
+                    Entry { index: child & INDEX_MASK, count: (child >> INDEX_BITS) as u8, t: near[i as usize] }
+                };
+                // Most nodes are entered through one or two children: those skip the sort.
+                match mask.count_ones() {
+                    0 => {}
+                    1 => {
+                        current = entry(mask.trailing_zeros());
+                        continue;
                     }
-                    for e in hits[1..n].iter().rev() {
-                        stack[top].write(*e);
+                    2 => {
+                        let a = entry(mask.trailing_zeros());
+                        let b = entry((mask & (mask - 1)).trailing_zeros());
+                        let (first, second) = if b.t < a.t { (b, a) } else { (a, b) };
+                        stack[top].write(second);
                         top += 1;
+                        current = first;
+                        continue;
                     }
-                    current = hits[0];
-                    continue;
+                    _ => {
+                        // Children hit, nearest first: insertion sort of at most eight.
+                        let mut hits = [Entry::default(); WIDTH];
+                        let mut n = 0;
+                        while mask != 0 {
+                            let e = entry(mask.trailing_zeros());
+                            mask &= mask - 1;
+                            let mut k = n;
+                            while k > 0 && hits[k - 1].t > e.t {
+                                hits[k] = hits[k - 1];
+                                k -= 1;
+                            }
+                            hits[k] = e;
+                            n += 1;
+                        }
+                        for e in hits[1..n].iter().rev() {
+                            stack[top].write(*e);
+                            top += 1;
+                        }
+                        current = hits[0];
+                        continue;
+                    }
                 }
             }
             // Pop the next child the ray still reaches.
