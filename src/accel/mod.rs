@@ -382,25 +382,72 @@ fn strand_leaf(
     widen: Widen,
 ) -> Option<(u32, f32, HitKind, u32)> {
     let mut best = None;
-    for chunk in prims.chunks(4) {
-        let lanes = gather4(s, chunk, &skipped, widen);
-        let mut hits = segment::intersect_cylinder4(origin, dir, 0.0, tmax, lanes.p0, lanes.p1);
-        lanes.drop_hidden(&mut hits, widen);
-        if any && hits.mask != 0 {
-            // Any lane's hit will do: skip forming the normal.
-            let lane = hits.mask.trailing_zeros() as usize;
-            let (prim, level) = lanes.prim_level(chunk, lane, widen);
-            return Some((prim, hits.t()[lane], HitKind::Segment { s: 0.0, normal: Vec3::ZERO }, level));
+    let ray = (origin, dir);
+    match widen {
+        // At full detail the whole leaf is culled in one pass and only the segments the ray
+        // passes near (two in a hundred) are gathered for the exact test, in leaf order.
+        None => {
+            'leaf: for leaf in prims.chunks(8) {
+                let mut near = segment::near8(origin, dir, &s.points, leaf);
+                while near != 0 {
+                    let mut ids = [0; 4];
+                    let mut n = 0;
+                    while near != 0 && n < 4 {
+                        let id = leaf[near.trailing_zeros() as usize];
+                        near &= near - 1;
+                        if !skipped(id) {
+                            ids[n] = id;
+                            n += 1;
+                        }
+                    }
+                    let ids = &ids[..n];
+                    if n > 0 && exact4(ray, ids, &gather4(s, ids, |_| false, None), any, None, &mut tmax, &mut best) {
+                        break 'leaf;
+                    }
+                }
+            }
         }
-        if let Some(lane) = hits.nearest() {
-            if let Some(h) = hits.hit(lane) {
-                tmax = h.t;
-                let (prim, level) = lanes.prim_level(chunk, lane, widen);
-                best = Some((prim, h.t, HitKind::Segment { s: h.s, normal: h.normal }, level));
+        Some(_) => {
+            for chunk in prims.chunks(4) {
+                if exact4(ray, chunk, &gather4(s, chunk, &skipped, widen), any, widen, &mut tmax, &mut best) {
+                    break;
+                }
             }
         }
     }
     best
+}
+
+/// The exact test of up to four segments (`lanes`, gathered from the item ids `ids`) for
+/// [`strand_leaf`]: a hit before `*tmax` becomes `*best` and shortens `*tmax`. True when the
+/// search is over (an any-hit query hit).
+#[inline(always)]
+fn exact4(
+    (origin, dir): (Vec3, Vec3),
+    ids: &[u32],
+    lanes: &Lanes4,
+    any: bool,
+    widen: Widen,
+    tmax: &mut f32,
+    best: &mut Option<(u32, f32, HitKind, u32)>,
+) -> bool {
+    let mut hits = segment::intersect_cylinder4(origin, dir, 0.0, *tmax, lanes.p0, lanes.p1);
+    lanes.drop_hidden(&mut hits, widen);
+    if any && hits.mask != 0 {
+        // Any lane's hit will do: skip forming the normal.
+        let lane = hits.mask.trailing_zeros() as usize;
+        let (prim, level) = lanes.prim_level(ids, lane, widen);
+        *best = Some((prim, hits.t()[lane], HitKind::Segment { s: 0.0, normal: Vec3::ZERO }, level));
+        return true;
+    }
+    if let Some(lane) = hits.nearest() {
+        if let Some(h) = hits.hit(lane) {
+            *tmax = h.t;
+            let (prim, level) = lanes.prim_level(ids, lane, widen);
+            *best = Some((prim, h.t, HitKind::Segment { s: h.s, normal: h.normal }, level));
+        }
+    }
+    false
 }
 
 /// Up to four segments of a leaf as the lanes of [`segment::intersect_cylinder4`].
