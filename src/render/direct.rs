@@ -6,7 +6,7 @@
 use crate::accel::{Hit, HitKind, Object, Shape, Skip, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
 use crate::geometry::StrandPoint;
 use crate::light::{Light, LightSample};
-use crate::math::rng::{hash_combine, unit_float, PixelSampler};
+use crate::math::rng::PixelSampler;
 use crate::math::{offset_origin, Color, Ray, RayCone};
 use crate::scene::World;
 use crate::shading::{Material, ShadingPoint};
@@ -189,7 +189,7 @@ pub(super) fn trace_with(
     // is shaded next (equal to it while blending, frozen once the tail is walked).
     let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, 0.0);
     let tail = StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 };
-    let mut shadows = SharedShadows::new(world.lights.len(), sampler.hash());
+    let mut shadows = SharedShadows::new(world.lights.len(), sampler);
     let color = 'layers: loop {
         world.accel.intersect_k(ray, tmin, k, &seen, Some(tail), &mut layers);
         // Lights count up to where the collected hits may hide what lies behind them.
@@ -260,26 +260,28 @@ impl ShadowRay {
 /// the sum of its channels by weighted reservoir sampling (Chao 1982), and only its shadow
 /// ray is traced. `c_j V_j / p_j` has the expectation `sum_i c_i V_i`, the blend of every
 /// layer shadowed on its own: a one-sample estimator over the layers (Veach 1997, section
-/// 9.2.4). The draws are hashes of a per-ray seed, the light and the offer's index, so
-/// the choice does not depend on how many hits one traversal collects.
+/// 9.2.4). One sample dimension per light decides its choice, rescaled from offer to
+/// offer, so the choice is stratified across a pixel's samples and does not depend on how
+/// many hits one traversal collects.
 pub(super) struct SharedShadows {
-    seed: u32,
     /// Per light; inline for the usual few lights, so a camera ray allocates nothing.
     picks: SmallVec<[Pick; 4]>,
 }
 
-/// The offers made for one light so far: how many, their total weight, the one kept.
+/// The offers made for one light so far: their total weight, the one kept, and the
+/// uniform number that decides the next.
 #[derive(Clone, Copy, Default)]
 struct Pick {
-    offers: u32,
+    u: f32,
     total: f32,
     /// Unshadowed light, its weight and its shadow ray.
     chosen: Option<(Color, f32, ShadowRay)>,
 }
 
 impl SharedShadows {
-    fn new(lights: usize, seed: u32) -> SharedShadows {
-        SharedShadows { seed, picks: smallvec::smallvec![Pick::default(); lights] }
+    /// One sample dimension per light decides all its picks.
+    fn new(lights: usize, sampler: &mut PixelSampler) -> SharedShadows {
+        SharedShadows { picks: (0..lights).map(|_| Pick { u: sampler.next_1d(), ..Pick::default() }).collect() }
     }
 
     /// Offers the unshadowed light `value` that light number `light` sends along `shadow`.
@@ -290,12 +292,17 @@ impl SharedShadows {
         }
         let pick = &mut self.picks[light];
         pick.total += weight;
-        // Keep this offer with probability weight / total (the first one always).
-        let u = unit_float(hash_combine(&[self.seed, light as u32, pick.offers]));
-        pick.offers += 1;
-        if u * pick.total < weight {
+        // Keep this offer with probability p = weight / total (the first one always).
+        // Given the outcome, u rescaled to [0, 1) is uniform again and decides the next
+        // offer: one stratified number serves them all.
+        let p = weight / pick.total;
+        if pick.u < p {
             pick.chosen = Some((value, weight, shadow));
+            pick.u /= p;
+        } else {
+            pick.u = (pick.u - p) / (1.0 - p);
         }
+        pick.u = pick.u.min(1.0 - f32::EPSILON / 2.0); // the largest float below 1
     }
 
     /// Traces the kept shadow rays: the light reflected by every layer offered, estimated.
