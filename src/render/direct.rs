@@ -260,9 +260,9 @@ impl ShadowRay {
 /// the sum of its channels by weighted reservoir sampling (Chao 1982), and only its shadow
 /// ray is traced. `c_j V_j / p_j` has the expectation `sum_i c_i V_i`, the blend of every
 /// layer shadowed on its own: a one-sample estimator over the layers (Veach 1997, section
-/// 9.2.4). One sample dimension per light decides its choice, rescaled from offer to
-/// offer, so the choice is stratified across a pixel's samples and does not depend on how
-/// many hits one traversal collects.
+/// 9.2.4). One sample dimension decides the choice, rescaled from offer to offer, so it
+/// is stratified across a pixel's samples and does not depend on how many hits one
+/// traversal collects.
 pub(super) struct SharedShadows {
     /// Per light; inline for the usual few lights, so a camera ray allocates nothing.
     picks: SmallVec<[Pick; 4]>,
@@ -279,9 +279,15 @@ struct Pick {
 }
 
 impl SharedShadows {
-    /// One sample dimension per light decides all its picks.
+    /// One sample dimension decides every pick: light `l` starts from it shifted by `l`
+    /// times the golden ratio (mod 1), which keeps each light's numbers stratified.
     fn new(lights: usize, sampler: &mut PixelSampler) -> SharedShadows {
-        SharedShadows { picks: (0..lights).map(|_| Pick { u: sampler.next_1d(), ..Pick::default() }).collect() }
+        let u = sampler.next_1d();
+        let mut picks: SmallVec<[Pick; 4]> = smallvec::smallvec![Pick::default(); lights];
+        for (l, pick) in picks.iter_mut().enumerate() {
+            pick.u = (u + l as f32 * 0.618_034).fract();
+        }
+        SharedShadows { picks }
     }
 
     /// Offers the unshadowed light `value` that light number `light` sends along `shadow`.
