@@ -16,9 +16,10 @@ use smallvec::SmallVec;
 /// Transmittance below which the layers of semi-transparent hair behind are walked
 /// stochastically instead of all shaded and blended (`trace_with`). A half: behind a
 /// layer of 50 % (or denser) hair the rest is walked, so a camera ray shades at most two
-/// layers. With the stochastic shadow transmittance of [`crate::accel::EXACT_SHADOW_TRANSMITTANCE`],
-/// 50 %-tip fur renders in about 1.6 times the time of opaque fur instead of 3.2 times
-/// (`cargo bench --bench transparency`).
+/// layers. With the stochastic shadow transmittance of [`crate::accel::EXACT_SHADOW_TRANSMITTANCE`]
+/// and one shadow ray per light shared by the layers ([`SharedShadows`]), 50 %-tip fur
+/// renders in about 1.4 times the time of opaque fur instead of 3.2 times (`cargo bench
+/// --bench transparency`; docs/performance.md, "Transparency").
 pub const BLEND_TRANSMITTANCE: f32 = 0.5;
 
 /// Per-task tallies, summed when the render ends.
