@@ -294,7 +294,7 @@ impl SharedShadows {
     /// Offers the unshadowed light `value` that light number `light` sends along `shadow`.
     fn offer(&mut self, light: usize, value: Color, shadow: ShadowRay) {
         let weight = value.element_sum();
-        if !(weight > 0.0) {
+        if weight <= 0.0 || !weight.is_finite() {
             return;
         }
         let pick = &mut self.picks[light];
