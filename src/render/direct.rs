@@ -17,7 +17,7 @@ use smallvec::SmallVec;
 /// stochastically instead of all shaded and blended (`trace_with`). A half: behind a
 /// layer of 50 % (or denser) hair the rest is walked, so a camera ray shades at most two
 /// layers. With the stochastic shadow transmittance of [`crate::accel::EXACT_SHADOW_TRANSMITTANCE`]
-/// and one shadow ray per light shared by the layers ([`SharedShadows`]), 50 %-tip fur
+/// and one shadow ray per light shared by the layers (`SharedShadows`), 50 %-tip fur
 /// renders in about 1.4 times the time of opaque fur instead of 3.2 times (`cargo bench
 /// --bench transparency`; docs/performance.md, "Transparency").
 pub const BLEND_TRANSMITTANCE: f32 = 0.5;
