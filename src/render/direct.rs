@@ -150,7 +150,7 @@ impl Indirect for Whitted {
 /// does the ray continue past them with another traversal.
 ///
 /// Once less than [`BLEND_TRANSMITTANCE`] of the light is left, the layers behind (each
-/// needing its own shadow rays, through ever more hair) are no longer all shaded: the tail
+/// to be found and shaded, deeper in the hair) are no longer all shaded: the tail
 /// is walked as in stochastic transparency (Enderton et al. 2010), stopping at layer `i`
 /// with probability `a_i` and shading it with the whole remaining `T` ([`StochasticTail`]:
 /// the multi-hit query stops looking behind that layer, too). The expected colour
