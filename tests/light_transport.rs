@@ -1,6 +1,7 @@
 //! Light transport end to end: the path tracer in a white furnace, the final gather
 //! against the path tracer's one-bounce result, the path tracer against the direct
 //! integrator where only direct light exists, shadows through hair of known opacity,
+//! layers sharing a shadow ray lit as if each had its own,
 //! fast multi-hit transparency against re-tracing after every hit, adaptive sampling on
 //! edges, and the same image for any thread count with every integrator.
 
@@ -230,6 +231,46 @@ fn shadow_through_layers_of_hair_has_the_expected_transmittance() {
                 );
             }
         }
+    }
+}
+
+/// The layers a camera ray shades share one shadow ray per light, picked in proportion to
+/// their unshadowed light; on average each layer is still lit through its own shadow ray.
+/// A ray through one layer of strands of opacity `a` onto the ground, lit from straight
+/// above: the strands are in full light, the ground gets `1 - a` of it through them, so
+/// the pixel averages `a C_strand + (1 - a)^2 C_ground` (blend weights `a` and `1 - a`).
+#[test]
+fn layers_sharing_a_shadow_ray_are_each_lit_through_their_own_on_average() {
+    let eye = Vec3::new(0.3, 3.0, 1.0);
+    // The ground point lies inside the shadow of one strand (axes 0.02 apart, radius 0.01).
+    let ray = tress::math::Ray::new(eye, (Vec3::new(0.013, 0.0, -1.004) - eye).normalize());
+    let radiance = |desc: &Description, samples: u32| -> Vec<f32> {
+        let (world, _) = prepare(desc).unwrap();
+        let mut counters = tress::render::Counters::default();
+        (0..samples)
+            .map(|i| {
+                let mut sampler = tress::math::rng::PixelSampler::new(0, 0, 0, i);
+                tress::render::trace_camera(&world, &ray, &mut sampler, &mut counters).0.x
+            })
+            .collect()
+    };
+    let mut bare = shadow_scene(1, 0.5, Integrator::Direct);
+    bare.hair.clear();
+    let ground = radiance(&bare, 1)[0];
+    let strand = radiance(&shadow_scene(1, 1.0, Integrator::Direct), 1)[0];
+    assert!(ground > 0.1 && strand > 0.1, "ground {ground}, strand {strand}");
+    for a in [0.3, 0.5, 0.8] {
+        const SAMPLES: u32 = 4096;
+        let values = radiance(&shadow_scene(1, a, Integrator::Direct), SAMPLES);
+        let mean = values.iter().sum::<f32>() / SAMPLES as f32;
+        let variance = values.iter().map(|v| (v - mean) * (v - mean)).sum::<f32>() / (SAMPLES - 1) as f32;
+        let want = a * strand + (1.0 - a) * (1.0 - a) * ground;
+        // Four standard deviations of the mean.
+        let tolerance = 1e-4 + 4.0 * (variance / SAMPLES as f32).sqrt();
+        assert!((mean - want).abs() < tolerance, "opacity {a}: {mean} vs {want} (tolerance {tolerance})");
+        // Lighting both layers through the front layer's shadow ray would be told apart.
+        let front_only = a * strand + (1.0 - a) * ground;
+        assert!((front_only - want).abs() > 3.0 * tolerance, "opacity {a}: the test cannot tell");
     }
 }
 

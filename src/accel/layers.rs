@@ -3,7 +3,8 @@
 //!
 //! The thesis' Turtle shot one new ray per transparent hit; here one traversal collects
 //! every hit it needs, and the BVH keeps culling with the distance of the K-th nearest
-//! hit (or of the nearest opaque one), so a stack of K hairs costs about one traversal.
+//! hit (or of the hit where the list ends), so a stack of K hairs costs about one
+//! traversal.
 
 use super::lod::Widen;
 use super::{gather4, Accel, Hit, HitKind, Object, Shape, Skip};
@@ -189,11 +190,12 @@ impl Accel {
     /// of the light is left (a blend stops there: what lies behind cannot show), or, with
     /// a `tail`, at the hit its walk stops at.
     ///
-    /// Two traversals, both culling: the nearest hit on opaque objects (meshes, strands
-    /// without opacity) first, then the semi-transparent strands up to it, with the BVH
-    /// visiting only boxes nearer than the farthest hit kept once `k` hits are held or the
-    /// light left is negligible. Without the first pass, a ray through sparse fur into the
-    /// surface it grows on would walk the fur behind that surface too.
+    /// One traversal of every object, nearest boxes first: an opaque hit (mesh, strand
+    /// without opacity) ends the list like any hit that leaves negligible light, and once
+    /// the list has ended or holds `k` hits the BVH visits only boxes nearer than its last.
+    /// (A first pass for the nearest opaque hit alone, to cull the fur behind the surface
+    /// it grows on from the start, cost 1.3 % more instructions on the furry pillow: the
+    /// walk meets that surface early anyway, and a stochastic tail ends the list sooner.)
     ///
     /// To continue past a full list, call again with `tmin` at its last hit and the hits
     /// found so far in `exclude`: a primitive already counted is not counted again where
@@ -210,11 +212,8 @@ impl Accel {
     ) {
         let k = k.max(1);
         out.clear();
-        // Opaque hits before the collected ones would have ended the previous list.
-        let opaque = self.intersect_among(ray, |o| !is_partial(o));
-        let mut cutoff = opaque.map_or(ray.tmax, |h| h.t);
-        let mut done = false;
-        self.walk(ray.origin, ray.dir, ray.cone, &mut cutoff, is_partial, |object, o, prims, widen, cutoff| {
+        let mut cutoff = ray.tmax;
+        self.walk(ray.origin, ray.dir, ray.cone, &mut cutoff, |object, o, prims, widen, cutoff| {
             leaf_hits(
                 &o.shape,
                 prims,
@@ -230,16 +229,12 @@ impl Accel {
                     let layer = LayerHit { hit, opacity: opacity(&o.shape, prim, kind) * o.lod_opacity(level) };
                     if let Some(t) = insert_layer(out, layer, k, tail) {
                         *cutoff = t;
-                        done = true;
                     }
                     false
                 },
             );
             false
         });
-        if let Some(hit) = opaque.filter(|_| !done) {
-            out.push(LayerHit { hit, opacity: 1.0 });
-        }
     }
 
     /// The fraction of light that passes from `origin` along unit `dir` up to distance
@@ -247,10 +242,11 @@ impl Accel {
     /// 2.2.8's transparency, applied to shadow rays so hair casts partial shadows). Meshes
     /// and opaque strands block; a product below [`NEGLIGIBLE_TRANSMITTANCE`] counts as 0.
     ///
-    /// An any-hit query on the opaque objects goes first: a shadow ray they block needs
-    /// no walk through the semi-transparent strands. The product does not depend on the
-    /// order hits are found in, so one unordered traversal of those strands suffices.
-    /// Strands are seen at full detail.
+    /// The product does not depend on the order hits are found in, so one unordered
+    /// traversal of every object suffices; an opaque hit (opacity 1) ends it like an
+    /// any-hit query. (An any-hit pass over the opaque objects first cost 3.7 % more
+    /// instructions on the furry pillow, and 4.3 % on opaque fur, whose shadow rays then
+    /// walked the top-level BVH twice.) Strands are seen at full detail.
     pub fn transmittance(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> f32 {
         self.transmittance_cone(origin, dir, tmax, skip, RayCone::default(), None)
     }
@@ -283,12 +279,9 @@ impl Accel {
         cone: RayCone,
         seed: Option<u32>,
     ) -> f32 {
-        if self.occluded_among(origin, dir, tmax, skip, cone, |o| !is_partial(o)) {
-            return 0.0;
-        }
         let mut t = tmax;
         let mut transmitted = 1.0f32;
-        let blocked = self.walk(origin, dir, cone, &mut t, is_partial, |object, o, prims, widen, t| {
+        let blocked = self.walk(origin, dir, cone, &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
             leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), (skip, false), widen, |prim, _, kind, level| {
                 let a = opacity(&o.shape, prim, kind) * o.lod_opacity(level);

@@ -234,15 +234,9 @@ impl Accel {
     /// The closest hit along the ray before `ray.tmax`.
     /// Strand sets with level of detail use the level of `ray.cone` at each distance.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        self.intersect_among(ray, |_| true)
-    }
-
-    /// The closest hit along the ray before `ray.tmax` on the objects `among` accepts.
-    #[inline]
-    fn intersect_among(&self, ray: &Ray, among: impl Fn(&Object) -> bool) -> Option<Hit> {
         let mut tmax = ray.tmax;
         let mut best = None;
-        self.walk(ray.origin, ray.dir, ray.cone, &mut tmax, among, |object, o, prims, widen, tmax| {
+        self.walk(ray.origin, ray.dir, ray.cone, &mut tmax, |object, o, prims, widen, tmax| {
             if let Some((prim, t, kind, level)) =
                 intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false, widen)
             {
@@ -257,31 +251,16 @@ impl Accel {
     /// True when anything (but the skipped primitives) lies on the segment from `origin`
     /// along unit `dir` up to distance `tmax`, with strands at full detail.
     pub fn occluded(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> bool {
-        self.occluded_among(origin, dir, tmax, skip, RayCone::default(), |_| true)
-    }
-
-    /// [`Accel::occluded`] by the objects `among` accepts only, strand sets with level of
-    /// detail seen as a ray with footprint `cone` sees them.
-    #[inline]
-    fn occluded_among(
-        &self,
-        origin: Vec3,
-        dir: Vec3,
-        tmax: f32,
-        skip: Option<Skip>,
-        cone: RayCone,
-        among: impl Fn(&Object) -> bool,
-    ) -> bool {
         let mut t = tmax;
-        self.walk(origin, dir, cone, &mut t, among, |object, o, prims, widen, t| {
+        self.walk(origin, dir, RayCone::default(), &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
             intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true, widen).is_some()
         })
     }
 
-    /// Walks the leaves of the objects `among` accepts that the ray from `origin` along
-    /// unit `dir` (footprint `cone`) enters before `*tmax`, nearest boxes first, under the
-    /// top-level BVH: `leaf(object, o, prims, widen, tmax)` as in [`Object::traverse`],
+    /// Walks the leaves of the objects that the ray from `origin` along unit `dir`
+    /// (footprint `cone`) enters before `*tmax`, nearest boxes first, under the top-level
+    /// BVH: `leaf(object, o, prims, widen, tmax)` as in [`Object::traverse`],
     /// returning true to stop. Returns whether a leaf stopped the walk. Every query
     /// (closest, any, K-nearest hits, transmittance) is this walk with its own leaf.
     #[inline(always)]
@@ -291,7 +270,6 @@ impl Accel {
         dir: Vec3,
         cone: RayCone,
         tmax: &mut f32,
-        among: impl Fn(&Object) -> bool,
         mut leaf: impl FnMut(u32, &Object, &[u32], Widen, &mut f32) -> bool,
     ) -> bool {
         let test = RayBoxTest::new(origin, dir);
@@ -300,7 +278,7 @@ impl Accel {
         self.top.traverse(&test, tmax, |objects, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
-                if among(o) && o.traverse(&test, &lod_ray, t, |prims, widen, t| leaf(object, o, prims, widen, t)) {
+                if o.traverse(&test, &lod_ray, t, |prims, widen, t| leaf(object, o, prims, widen, t)) {
                     stopped = true;
                     return true;
                 }

@@ -11,13 +11,15 @@ use crate::math::{offset_origin, Color, Ray, RayCone};
 use crate::scene::World;
 use crate::shading::{Material, ShadingPoint};
 use glam::Vec3;
+use smallvec::SmallVec;
 
 /// Transmittance below which the layers of semi-transparent hair behind are walked
 /// stochastically instead of all shaded and blended (`trace_with`). A half: behind a
 /// layer of 50 % (or denser) hair the rest is walked, so a camera ray shades at most two
-/// layers. With the stochastic shadow transmittance of [`crate::accel::EXACT_SHADOW_TRANSMITTANCE`],
-/// 50 %-tip fur renders in about 1.6 times the time of opaque fur instead of 3.2 times
-/// (`cargo bench --bench transparency`).
+/// layers. With the stochastic shadow transmittance of [`crate::accel::EXACT_SHADOW_TRANSMITTANCE`]
+/// and one shadow ray per light shared by the layers (`SharedShadows`), 50 %-tip fur
+/// renders in about 1.4 times the time of opaque fur instead of 3.2 times (`cargo bench
+/// --bench transparency`; docs/performance.md, "Transparency").
 pub const BLEND_TRANSMITTANCE: f32 = 0.5;
 
 /// Per-task tallies, summed when the render ends.
@@ -148,11 +150,14 @@ impl Indirect for Whitted {
 /// does the ray continue past them with another traversal.
 ///
 /// Once less than [`BLEND_TRANSMITTANCE`] of the light is left, the layers behind (each
-/// needing its own shadow rays, through ever more hair) are no longer all shaded: the tail
+/// to be found and shaded, deeper in the hair) are no longer all shaded: the tail
 /// is walked as in stochastic transparency (Enderton et al. 2010), stopping at layer `i`
 /// with probability `a_i` and shading it with the whole remaining `T` ([`StochasticTail`]:
 /// the multi-hit query stops looking behind that layer, too). The expected colour
 /// is the blend's; the noise is bounded by that small `T`.
+///
+/// The layers shaded share one shadow ray per light ([`SharedShadows`]), traced once the
+/// last layer is known.
 pub(super) fn trace_with(
     world: &World,
     ray: &Ray,
@@ -176,7 +181,7 @@ pub(super) fn trace_with(
         let Some(hit) = hit else {
             return (emitted(world.background), None);
         };
-        let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect);
+        let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect, None);
         return (color, Some(first));
     }
     let k = world.settings.transparency_layers as usize;
@@ -185,7 +190,8 @@ pub(super) fn trace_with(
     // is shaded next (equal to it while blending, frozen once the tail is walked).
     let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, 0.0);
     let tail = StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 };
-    loop {
+    let mut shadows = SharedShadows::new(world.lights.len(), sampler);
+    let color = 'layers: loop {
         world.accel.intersect_k(ray, tmin, k, &seen, Some(tail), &mut layers);
         // Lights count up to where the collected hits may hide what lies behind them.
         let light = match layers.last() {
@@ -197,35 +203,133 @@ pub(super) fn trace_with(
             let blend = carried >= BLEND_TRANSMITTANCE;
             let last = transmitted * (1.0 - a) < NEGLIGIBLE_TRANSMITTANCE;
             if blend || last || tail.draw(&layer.hit) < a {
-                let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect);
+                // Blended by its opacity, or where the tail stops with all the light left.
+                let weight = if blend { carried * a } else { carried };
+                let shared = Some((&mut shadows, weight));
+                let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect, shared);
                 first.get_or_insert(f);
+                color += weight * c;
                 if !blend {
-                    // The tail stops here, with all the light that reached it.
-                    return (color + carried * c, first);
+                    break 'layers color;
                 }
-                color += carried * a * c;
                 carried *= 1.0 - a;
             }
             transmitted *= 1.0 - a;
             if transmitted < NEGLIGIBLE_TRANSMITTANCE {
-                return (color, first);
+                break 'layers color;
             }
         }
         if let Some((_, radiance)) = light {
-            return (color + carried * emitted(radiance), first);
+            break 'layers color + carried * emitted(radiance);
         }
         if layers.len() < k {
-            return (color + carried * emitted(world.background), first);
+            break 'layers color + carried * emitted(world.background);
         }
         // Every hit collected let light through: continue behind the farthest.
         tmin = layers[k - 1].hit.t;
         seen.extend_from_slice(&layers);
         counters.rays += 1;
+    };
+    (color + shadows.trace(world, counters), first)
+}
+
+/// A shadow ray towards a light.
+#[derive(Clone, Copy)]
+struct ShadowRay {
+    origin: Vec3,
+    dir: Vec3,
+    tmax: f32,
+    skip: Option<Skip>,
+    /// The footprint it starts with (level of detail).
+    cone: RayCone,
+    /// Seed of the stochastic transmittance estimate, when hair is semi-transparent.
+    seed: Option<u32>,
+}
+
+impl ShadowRay {
+    /// The light it lets through (estimated through semi-transparent hair).
+    fn trace(&self, world: &World, counters: &mut Counters) -> f32 {
+        counters.rays += 1;
+        world.accel.transmittance_cone(self.origin, self.dir, self.tmax, self.skip, self.cone, self.seed)
+    }
+}
+
+/// One shadow ray per light for all the layers a camera ray shades, instead of one per
+/// layer and light: the layers of one pixel lie close together and mostly see a light
+/// alike. Each layer offers the unshadowed light `c_i` it reflects (weighted by its blend
+/// weight); one offer per light is kept, chosen with probability `p_i` proportional to
+/// the sum of its channels by weighted reservoir sampling (Chao 1982), and only its shadow
+/// ray is traced. `c_j V_j / p_j` has the expectation `sum_i c_i V_i`, the blend of every
+/// layer shadowed on its own: a one-sample estimator over the layers (Veach 1997, section
+/// 9.2.4). One sample dimension decides the choice, rescaled from offer to offer, so it
+/// is stratified across a pixel's samples and does not depend on how many hits one
+/// traversal collects.
+pub(super) struct SharedShadows {
+    /// Per light; inline for the usual few lights, so a camera ray allocates nothing.
+    picks: SmallVec<[Pick; 4]>,
+}
+
+/// The offers made for one light so far: their total weight, the one kept, and the
+/// uniform number that decides the next.
+#[derive(Clone, Copy, Default)]
+struct Pick {
+    u: f32,
+    total: f32,
+    /// Unshadowed light, its weight and its shadow ray.
+    chosen: Option<(Color, f32, ShadowRay)>,
+}
+
+impl SharedShadows {
+    /// One sample dimension decides every pick: light `l` starts from it shifted by `l`
+    /// times the golden ratio (mod 1), which keeps each light's numbers stratified.
+    fn new(lights: usize, sampler: &mut PixelSampler) -> SharedShadows {
+        let u = sampler.next_1d();
+        let mut picks: SmallVec<[Pick; 4]> = smallvec::smallvec![Pick::default(); lights];
+        for (l, pick) in picks.iter_mut().enumerate() {
+            pick.u = (u + l as f32 * 0.618_034).fract();
+        }
+        SharedShadows { picks }
+    }
+
+    /// Offers the unshadowed light `value` that light number `light` sends along `shadow`.
+    fn offer(&mut self, light: usize, value: Color, shadow: ShadowRay) {
+        let weight = value.element_sum();
+        if weight <= 0.0 || !weight.is_finite() {
+            return;
+        }
+        let pick = &mut self.picks[light];
+        pick.total += weight;
+        // Keep this offer with probability p = weight / total (the first one always).
+        // Given the outcome, u rescaled to [0, 1) is uniform again and decides the next
+        // offer: one stratified number serves them all.
+        let p = weight / pick.total;
+        if pick.u < p {
+            pick.chosen = Some((value, weight, shadow));
+            pick.u /= p;
+        } else {
+            pick.u = (pick.u - p) / (1.0 - p);
+        }
+        pick.u = pick.u.min(1.0 - f32::EPSILON / 2.0); // the largest float below 1
+    }
+
+    /// Traces the kept shadow rays: the light reflected by every layer offered, estimated.
+    fn trace(&self, world: &World, counters: &mut Counters) -> Color {
+        let mut color = Color::ZERO;
+        for pick in &self.picks {
+            let Some((value, weight, shadow)) = pick.chosen else { continue };
+            let transmitted = shadow.trace(world, counters);
+            if transmitted > 0.0 {
+                color += value * (pick.total / weight * transmitted);
+            }
+        }
+        color
     }
 }
 
 /// Direct light at one hit, the specular rays and what `indirect` adds; and the hit's
-/// description for the AOVs.
+/// description for the AOVs. With `shared` shadows and the hit's blend weight, the direct
+/// light is offered to them instead of added (the caller traces their shadow rays).
+#[allow(clippy::too_many_arguments)]
 fn shade(
     world: &World,
     ray: &Ray,
@@ -234,6 +338,7 @@ fn shade(
     sampler: &mut PixelSampler,
     counters: &mut Counters,
     indirect: &impl Indirect,
+    mut shared: Option<(&mut SharedShadows, f32)>,
 ) -> (Color, FirstHit) {
     let object = &world.accel.objects[hit.object as usize];
     let material = &world.materials[object.material as usize];
@@ -248,7 +353,7 @@ fn shade(
     // early in dense fur (`Accel::transmittance_estimate`). The seed is a hash, not a
     // sample dimension, so the following dimensions keep their values.
     let shadow_seed = world.accel.has_transparency().then(|| sampler.hash());
-    for light in &world.lights {
+    for (index, light) in world.lights.iter().enumerate() {
         if tube_hair && light.background() != Color::ZERO {
             continue; // the tube model's ambient term already stands for the environment
         }
@@ -268,16 +373,21 @@ fn shade(
             continue;
         }
         let d = departure(&surface, hit, ls.dir, material.shades_whole_circle());
-        counters.rays += 1;
         // Stop short of the light by a relative margin so its own surface does not block.
         let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
         // Hair lets light through by its opacity; meshes and opaque strands block it. The
         // estimate stops at the first hits like an opaque shadow ray, most of the time.
         // The shadow ray starts with the camera ray's footprint at the hit (level of detail).
         let cone = ray.cone.propagate(hit.t, 0.0);
-        let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone, shadow_seed);
-        if transmitted > 0.0 {
-            color += f * ls.value * transmitted;
+        let shadow = ShadowRay { origin: d.origin, dir: ls.dir, tmax, skip: d.skip, cone, seed: shadow_seed };
+        match &mut shared {
+            Some((shadows, weight)) => shadows.offer(index, *weight * (f * ls.value), shadow),
+            None => {
+                let transmitted = shadow.trace(world, counters);
+                if transmitted > 0.0 {
+                    color += f * ls.value * transmitted;
+                }
+            }
         }
     }
 
