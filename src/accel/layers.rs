@@ -183,6 +183,13 @@ impl Accel {
         self.objects.iter().any(is_partial)
     }
 
+    /// Opacity at a hit of [`Accel::intersect`]: 1 on meshes and opaque strands, else the
+    /// strand's opacity there times that of its level of detail.
+    pub fn hit_opacity(&self, hit: &Hit) -> f32 {
+        let o = &self.objects[hit.object as usize];
+        opacity(&o.shape, hit.prim, hit.kind) * o.lod_opacity(hit.level)
+    }
+
     /// The nearest hits along `ray` beyond `tmin`, sorted by distance, into `out`
     /// (cleared first): at most `k` of them (at least one), ending early at the first
     /// opaque hit or at the first hit behind which less than [`NEGLIGIBLE_TRANSMITTANCE`]

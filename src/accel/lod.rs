@@ -11,21 +11,25 @@
 //!   level is exactly `k`. All segments stay in ONE BVH, each item id carrying its group in
 //!   its low bits ([`StrandLod::item_id`]), each bounded with the radius it takes at its
 //!   group's level. There is no copy of the geometry and a ray traverses once;
-//! - a ray's level at distance `t` is `floor(log_d(footprint(t) / width) + jitter)`
-//!   ([`StrandLod::level_at`]), so group `k` is visible only before the distance `t_k` where
-//!   that level passes `k`. A leaf drops the segments that lie wholly beyond their group's
-//!   `t_k` before the exact segment test, and a hit beyond `t_k` does not count; no ray is
-//!   re-shot;
+//! - a ray's level at distance `t` on a segment is `floor(log_d(footprint(t) / width) +
+//!   jitter)` ([`StrandLod::level_at`]), the jitter being the segment's own
+//!   ([`StrandLod::segment_jitter`]), so a segment of group `k` is visible only before the
+//!   distance `t_k` where that level passes `k`. A leaf drops the segments that lie wholly
+//!   beyond their `t_k` before the exact segment test, and a hit beyond `t_k` does not count;
+//!   no ray is re-shot;
 //! - a segment met at distance `t` is intersected with its radius widened for the level at
 //!   `t` ([`LodParams::radius_scale`]).
 //!
 //! Each strand set measures its own width, so several hair thicknesses in one scene each
-//! pick their own level. The jitter comes from the ray itself ([`ray_jitter`]): transitions
-//! dither per ray instead of showing a seam, and stay deterministic.
+//! pick their own level. The jitter belongs to the segment, not to the ray: transitions
+//! dither from segment to segment instead of showing a seam, and a segment changes level
+//! only when its footprint crosses its own threshold, so a moving camera does not re-draw
+//! every ray's level each frame (a per-ray jitter made the far fur flicker: measured with
+//! `examples/lod_quality.rs`, 3.7 times the reference flicker against 2.9 with this one).
 
 use super::bvh::{self, BuildItem};
 use crate::geometry::{segment, StrandSet};
-use crate::math::rng::{hash_combine, unit_float, GenRng};
+use crate::math::rng::{hash_u32, GenRng};
 use crate::math::{Aabb, RayCone};
 use glam::Vec3;
 use rand::seq::SliceRandom;
@@ -33,6 +37,10 @@ use rand::SeedableRng;
 
 /// Most pruning levels a strand set may have.
 pub const MAX_LEVELS: usize = 16;
+
+/// Distinct jitter values segments draw theirs from: fine enough that level transitions
+/// dither smoothly, and a table of `d^jitter` spares an `exp` per segment test.
+const JITTER_STEPS: usize = 32;
 
 /// How a strand set is pruned (thesis section 2.2.3).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -151,23 +159,11 @@ pub struct StrandLod {
     scales: [f32; MAX_LEVELS],
     /// Opacity factor per level: `1 / spread_at(level)`.
     opacities: [f32; MAX_LEVELS],
+    /// `d^jitter` for each of the [`JITTER_STEPS`] jitter values: a footprint times it
+    /// compares with the thresholds as `log_d(footprint) + jitter` with their exponents.
+    jitter_factors: [f32; JITTER_STEPS],
     /// Mean strand colour, when contrast reduction is on and the strands have colours.
     mean_color: Option<Vec3>,
-}
-
-/// The part of a ray that picks levels: the distance before which each group is visible.
-#[derive(Clone, Copy, Debug)]
-pub struct RayLevels {
-    /// `cutoffs[k]`: the ray's level is at most `k` before this distance.
-    cutoffs: [f32; MAX_LEVELS],
-}
-
-impl RayLevels {
-    /// The level at distance `t`, at most `max` (the group being traversed).
-    #[inline]
-    fn level(&self, t: f32, max: usize) -> usize {
-        self.cutoffs[..max].iter().take_while(|&&c| t >= c).count()
-    }
 }
 
 /// A ray as level of detail sees it: where it starts and goes, and its cone.
@@ -186,13 +182,11 @@ impl LodRay {
     }
 }
 
-/// A strand set as one ray sees it: the distances where its level changes.
+/// A strand set as one ray sees it.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct LodView<'a> {
     lod: &'a StrandLod,
-    levels: RayLevels,
-    origin: Vec3,
-    dir: Vec3,
+    ray: LodRay,
 }
 
 impl LodView<'_> {
@@ -202,19 +196,31 @@ impl LodView<'_> {
         (id >> self.lod.group_bits, (id & ((1 << self.lod.group_bits) - 1)) as usize)
     }
 
-    /// How the ray sees the segment between points `a` and `b` of group `group`: its
-    /// radius factor, its level and the distance from which its group is hidden (a hit
-    /// from there on does not count); `None` when the whole widened segment lies beyond
-    /// that distance, so it is skipped without the exact test. The level is read at the
-    /// distance of the segment's midpoint: segments are short next to the distances where
-    /// levels change.
+    /// How the ray sees the segment from point `first`, between points `a` and `b`, of
+    /// group `group`: its radius factor, its level and the distance from which its group
+    /// is hidden for it (a hit from there on does not count); `None` when the whole
+    /// widened segment lies beyond that distance, so it is skipped without the exact test.
+    /// The level is read at the distance of the segment's midpoint: segments are short
+    /// next to the distances where levels change.
     #[inline(always)]
-    pub(crate) fn segment(&self, a: [f32; 4], b: [f32; 4], group: usize) -> Option<(f32, u32, f32)> {
-        let ta = (Vec3::new(a[0], a[1], a[2]) - self.origin).dot(self.dir);
-        let tb = (Vec3::new(b[0], b[1], b[2]) - self.origin).dot(self.dir);
-        let level = self.levels.level(0.5 * (ta + tb), group);
+    pub(crate) fn segment(&self, first: u32, a: [f32; 4], b: [f32; 4], group: usize) -> Option<(f32, u32, f32)> {
+        let LodRay { origin, dir, cone } = self.ray;
+        let ta = (Vec3::new(a[0], a[1], a[2]) - origin).dot(dir);
+        let tb = (Vec3::new(b[0], b[1], b[2]) - origin).dot(dir);
+        // level <= k while footprint * d^jitter < thresholds[k] (see `level_at`).
+        let jitter = self.lod.jitter_factors[jitter_step(first)];
+        let footprint = cone.width_at(0.5 * (ta + tb)) * jitter;
+        let thresholds = &self.lod.thresholds;
+        let level = thresholds[..group].iter().take_while(|&&c| footprint >= c).count();
         let scale = self.lod.scales[level];
-        let cut = self.levels.cutoffs[group];
+        let hidden = thresholds[group] / jitter;
+        let cut = if cone.spread > 0.0 {
+            (hidden - cone.width) / cone.spread
+        } else if cone.width.abs() < hidden {
+            f32::INFINITY
+        } else {
+            f32::NEG_INFINITY
+        };
         // A point of the surface lies at most one radius before its axis point.
         if ta.min(tb) - a[3].max(b[3]) * scale >= cut {
             return None;
@@ -226,19 +232,11 @@ impl LodView<'_> {
 /// How a leaf's segments are seen for a ray's level of detail: `None` at full detail.
 pub(crate) type Widen<'a> = Option<&'a LodView<'a>>;
 
-/// A jitter value in [0, 1) for the level choice, derived from the ray's bits so it is the
-/// same whatever thread traces it, and differs from ray to ray (sub-pixel offsets, shadow
-/// ray origins) so level transitions dither instead of drawing a seam.
-#[inline]
-pub fn ray_jitter(origin: Vec3, dir: Vec3) -> f32 {
-    unit_float(hash_combine(&[
-        origin.x.to_bits(),
-        origin.y.to_bits(),
-        origin.z.to_bits(),
-        dir.x.to_bits(),
-        dir.y.to_bits(),
-        dir.z.to_bits(),
-    ]))
+/// The jitter step of the segment from point `first`: a hash, so neighbouring segments
+/// and strands switch levels at different distances.
+#[inline(always)]
+fn jitter_step(first: u32) -> usize {
+    hash_u32(first ^ 0x10d_5eed) as usize % JITTER_STEPS
 }
 
 impl StrandLod {
@@ -258,8 +256,12 @@ impl StrandLod {
         groups_of.iter().for_each(|&g| group_strands[g as usize] += 1);
         let mut thresholds = [f32::INFINITY; MAX_LEVELS];
         let (mut scales, mut opacities) = ([1.0; MAX_LEVELS], [1.0; MAX_LEVELS]);
+        let jitter_factors = std::array::from_fn(|q| params.decimation.powf(step_jitter(q)));
         for l in 0..levels {
-            thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
+            // The coarsest level never ends.
+            if l + 1 < levels {
+                thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
+            }
             let spread = params.spread_at(l as u32);
             scales[l] = params.radius_scale(l as u32) * spread;
             opacities[l] = 1.0 / spread;
@@ -278,6 +280,7 @@ impl StrandLod {
             thresholds,
             scales,
             opacities,
+            jitter_factors,
             mean_color,
         })
     }
@@ -344,32 +347,16 @@ impl StrandLod {
         level.clamp(0.0, (self.params.levels - 1) as f32) as u32
     }
 
-    /// The distances at which a ray with `cone` and `jitter` leaves each level: the level
-    /// is at most `k` while `footprint(t) < start * width * d^(k + 1 - jitter)`, the same boundary
-    /// as [`StrandLod::level_at`]. A cone that does not widen keeps its width everywhere.
-    pub fn ray_levels(&self, cone: RayCone, jitter: f32) -> RayLevels {
-        let levels = self.params.levels as usize;
-        let shrink = self.params.decimation.powf(-jitter);
-        let mut cutoffs = [f32::INFINITY; MAX_LEVELS];
-        for (k, cutoff) in cutoffs.iter_mut().enumerate().take(levels - 1) {
-            let footprint = self.thresholds[k] * shrink;
-            *cutoff = if cone.spread > 0.0 {
-                (footprint - cone.width) / cone.spread
-            } else if cone.width.abs() < footprint {
-                f32::INFINITY
-            } else {
-                f32::NEG_INFINITY
-            };
-        }
-        RayLevels { cutoffs }
+    /// The jitter in [0, 1) of the segment from point `first` in [`StrandLod::level_at`]:
+    /// one of [`JITTER_STEPS`] values, drawn by a hash of the point.
+    pub fn segment_jitter(&self, first: u32) -> f32 {
+        step_jitter(jitter_step(first))
     }
 
-    /// The strand set as `ray` sees it. Hashed here rather than per ray: only rays that
-    /// reach a strand set with level of detail need the jitter.
+    /// The strand set as `ray` sees it.
     #[inline]
     pub(crate) fn view(&self, ray: &LodRay) -> LodView<'_> {
-        let levels = self.ray_levels(ray.cone, ray_jitter(ray.origin, ray.dir));
-        LodView { lod: self, levels, origin: ray.origin, dir: ray.dir }
+        LodView { lod: self, ray: *ray }
     }
 
     /// A strand colour seen at `level`, its contrast to the set's mean reduced by
@@ -400,6 +387,11 @@ impl StrandLod {
     pub fn has_transparency(&self) -> bool {
         self.opacities[..self.params.levels as usize].iter().any(|&a| a < 1.0)
     }
+}
+
+/// The jitter of step `q`: the middle of the `q`-th of [`JITTER_STEPS`] equal intervals.
+fn step_jitter(q: usize) -> f32 {
+    (q as f32 + 0.5) / JITTER_STEPS as f32
 }
 
 /// Bits of an item id that hold the group of a set with `levels` levels.
@@ -487,18 +479,41 @@ mod tests {
             // Clamped to the coarsest level.
             assert_eq!(lod.level_at(cone, 1e9, j), 7);
         }
-        // The cut-off distances agree with the level formula.
+        // A segment across the ray at distance t takes the level of the formula with its
+        // own jitter, and its group hides where that level passes the group.
         let mut rng = GenRng::seed_from_u64(5);
+        let mut jitters = std::collections::BTreeSet::new();
         for _ in 0..2000 {
             let cone = RayCone { width: rng.random::<f32>() * 0.02, spread: rng.random::<f32>() * 0.01 };
-            let (j, t) = (rng.random::<f32>(), rng.random::<f32>() * 300.0);
-            let levels = lod.ray_levels(cone, j);
-            let level = lod.level_at(cone, t, j) as usize;
+            let (first, t) = (rng.random_range(0..1000u32), rng.random::<f32>() * 300.0);
+            let j = lod.segment_jitter(first);
+            jitters.insert(j.to_bits());
+            let view = lod.view(&LodRay::new(Vec3::ZERO, Vec3::Z, cone));
+            let (a, b) = ([-1.0, 0.0, t, 0.005], [1.0, 0.0, t, 0.005]);
+            let level = lod.level_at(cone, t, j);
+            let group = rng.random_range(0..8usize);
             // Away from the boundaries (rounding may differ there).
-            if levels.cutoffs[..7].iter().all(|c| (c - t).abs() > 1e-3 * t.max(1.0)) {
-                assert_eq!(levels.level(t, 7), level, "cone {cone:?} jitter {j} t {t}");
+            if lod.level_at(cone, t * 1.001, j) != lod.level_at(cone, t * 0.999, j) {
+                continue;
+            }
+            match view.segment(first, a, b, group) {
+                Some((scale, l, cut)) => {
+                    if level as usize <= group {
+                        assert_eq!((l, scale), (level, lod.radius_scale(level)), "cone {cone:?} jitter {j} t {t}");
+                        assert!(t < cut, "visible at {t}, cut {cut}");
+                    } else {
+                        assert!(t >= cut, "hidden at {t}, cut {cut}");
+                    }
+                    // Around the cut the level passes the group.
+                    if cut.is_finite() && cut > 0.0 {
+                        assert!(lod.level_at(cone, cut * 1.001, j) as usize > group, "cut {cut}");
+                        assert!(lod.level_at(cone, cut * 0.999, j) as usize <= group, "cut {cut}");
+                    }
+                }
+                None => assert!(level as usize > group, "cone {cone:?} jitter {j} t {t}: level {level}, group {group}"),
             }
         }
+        assert!(jitters.len() > JITTER_STEPS / 2, "segments draw different jitters");
     }
 
     #[test]
@@ -624,11 +639,12 @@ mod tests {
 
     /// Brute force over every segment: the level of each from `level_at` at its midpoint,
     /// kept when its strand lives that long and the hit is where that group is visible.
-    fn brute_force(s: &StrandSet, lod: &StrandLod, groups: &[u8], ray: &Ray, jitter: f32) -> Option<(f32, u32, u32)> {
+    fn brute_force(s: &StrandSet, lod: &StrandLod, groups: &[u8], ray: &Ray) -> Option<(f32, u32, u32)> {
         let mut best: Option<(f32, u32, u32)> = None;
         for (strand, w) in s.offsets.windows(2).enumerate() {
             let group = groups[strand] as u32;
             for i in w[0]..w[1] - 1 {
+                let jitter = lod.segment_jitter(i);
                 let (a, b) = (s.position(i), s.position(i + 1));
                 let mid = ((a + b) * 0.5 - ray.origin).dot(ray.dir);
                 let level = lod.level_at(ray.cone, mid, jitter).min(group);
@@ -673,7 +689,7 @@ mod tests {
             if i % 3 > 0 {
                 ray.cone = RayCone { width: 0.0, spread: rng.random::<f32>() * 0.01 };
             }
-            let expected = brute_force(&s, lod, &groups, &ray, ray_jitter(ray.origin, ray.dir));
+            let expected = brute_force(&s, lod, &groups, &ray);
             let got = accel.intersect(&ray);
             match (got, expected) {
                 (Some(h), Some(e)) => {

@@ -464,7 +464,7 @@ fn gather4(s: &StrandSet, ids: &[u32], skipped: impl Fn(u32) -> bool, widen: Wid
                     continue;
                 }
                 let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
-                if let Some((scale, level, cut)) = view.segment(a, b, group) {
+                if let Some((scale, level, cut)) = view.segment(p, a, b, group) {
                     lanes.p0[lane] = f32x4::new([a[0], a[1], a[2], a[3] * scale]);
                     lanes.p1[lane] = f32x4::new([b[0], b[1], b[2], b[3] * scale]);
                     (lanes.level[lane], lanes.cut[lane]) = (level, cut);
