@@ -98,13 +98,14 @@ fn strand_hits(
         while mask != 0 {
             let lane = mask.trailing_zeros() as usize;
             mask &= mask - 1;
-            let (prim, level) = lanes.prim_level(chunk, lane, widen);
             if !normals {
-                if found(prim, t[lane], HitKind::Segment { s: along[lane], normal: Vec3::ZERO }, level) {
+                let (prim, along, level) = lanes.hit_on(s, chunk, lane, along[lane], widen);
+                if found(prim, t[lane], HitKind::Segment { s: along, normal: Vec3::ZERO }, level) {
                     return true;
                 }
             } else if let Some(h) = hits.hit(lane) {
-                if found(prim, h.t, HitKind::Segment { s: h.s, normal: h.normal }, level) {
+                let (prim, along, level) = lanes.hit_on(s, chunk, lane, h.s, widen);
+                if found(prim, h.t, HitKind::Segment { s: along, normal: h.normal }, level) {
                     return true;
                 }
             }

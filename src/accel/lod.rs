@@ -68,11 +68,25 @@ pub struct LodParams {
     /// strands instead of a frozen hit-or-miss pattern of a few opaque ones. Capped so a
     /// strand never grows wider than the level's footprint. 1 draws them opaque.
     pub spread: f32,
+    /// The level from which strands skip every other point (thesis section 2.2: coarser
+    /// levels may also use fewer segments per strand): each pair of segments from an even
+    /// point is drawn as the one segment between its ends, so a strand keeps its end points
+    /// and departs from its curve by at most the skipped points' distance to those chords.
+    /// 0 never simplifies.
+    pub simplify: u32,
 }
 
 impl Default for LodParams {
     fn default() -> Self {
-        LodParams { decimation: 1.5, levels: 8, compensation: 0.8, contrast: false, start: 1.0, spread: 1.0 }
+        LodParams {
+            decimation: 1.5,
+            levels: 8,
+            compensation: 0.8,
+            contrast: false,
+            start: 1.0,
+            spread: 1.0,
+            simplify: 0,
+        }
     }
 }
 
@@ -90,6 +104,9 @@ impl LodParams {
         }
         if !(self.spread.is_finite() && (1.0..=1000.0).contains(&self.spread)) {
             return Err(format!("lod `spread` {} must be between 1 and 1000", self.spread));
+        }
+        if self.simplify > MAX_LEVELS as u32 {
+            return Err(format!("lod `simplify` {} must be between 0 (off) and {MAX_LEVELS}", self.simplify));
         }
         if !(self.compensation.is_finite() && self.compensation > 0.0 && self.compensation <= 1.0) {
             return Err(format!("lod `compensation` {} must be above 0 and at most 1", self.compensation));
@@ -136,6 +153,24 @@ impl LodParams {
     }
 }
 
+/// The camera a scene is rendered from, as level of detail sees it. Every ray descends
+/// from a camera ray, and cones never narrow (shadow rays start with the camera ray's
+/// footprint at the hit, gathered rays widen it), so no ray needs a segment finer than the
+/// camera sees it; the camera bounds how coarse a segment needs to be drawn instead. With
+/// a camera, a ray sees each segment at the finer of its own level and the camera's there
+/// (the level a camera ray would take at the segment's distance from the eye, with the
+/// segment's jitter). Camera rays see no change; a shadow or gathered ray that would prune
+/// a segment more sees it as the camera does, which covers alike on average. What it buys:
+/// each segment's BVH box is widened only as far as the camera can see it widened, instead
+/// of for its coarsest level, so near rays no longer cross boxes widened for far away.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LodCamera {
+    /// The eye (pinhole).
+    pub eye: Vec3,
+    /// Spread of the camera ray cones: the angle a pixel subtends.
+    pub pixel_spread: f32,
+}
+
 /// A strand set's pruning levels: the group of each strand, and per level the widening
 /// and the footprint where it starts. The segments' BVH is the object's own
 /// ([`super::Object`]), built from [`StrandLod::items`].
@@ -164,6 +199,12 @@ pub struct StrandLod {
     jitter_factors: [f32; JITTER_STEPS],
     /// Mean strand colour, when contrast reduction is on and the strands have colours.
     mean_color: Option<Vec3>,
+    /// With [`LodParams::simplify`]: one bit per point, set where the segment from that
+    /// point stands for its pair at simplified levels (an even point of its strand with two
+    /// more after it); the segment after it is then hidden there. Empty otherwise.
+    pairs: Vec<u64>,
+    /// The camera that bounds each segment's level ([`LodCamera`]), when known.
+    camera: Option<LodCamera>,
 }
 
 /// A ray as level of detail sees it: where it starts and goes, and its cone.
@@ -211,10 +252,14 @@ impl LodView<'_> {
         let jitter = self.lod.jitter_factors[jitter_step(first)];
         let footprint = cone.width_at(0.5 * (ta + tb)) * jitter;
         let thresholds = &self.lod.thresholds;
-        let level = thresholds[..group].iter().take_while(|&&c| footprint >= c).count();
-        let scale = self.lod.scales[level];
+        let mut level = thresholds[..group].iter().take_while(|&&c| footprint >= c).count();
+        let ceiling = self.lod.camera_level(a, b, jitter, |a, b| a.midpoint(b).distance(self.lod.camera_eye()));
+        let scale = self.lod.scales[level.min(ceiling)];
         let hidden = thresholds[group] / jitter;
-        let cut = if cone.spread > 0.0 {
+        let cut = if ceiling <= group {
+            // Never coarser than the group's level: always visible.
+            f32::INFINITY
+        } else if cone.spread > 0.0 {
             (hidden - cone.width) / cone.spread
         } else if cone.width.abs() < hidden {
             f32::INFINITY
@@ -225,7 +270,57 @@ impl LodView<'_> {
         if ta.min(tb) - a[3].max(b[3]) * scale >= cut {
             return None;
         }
+        level = level.min(ceiling);
         Some((scale, level as u32, cut))
+    }
+
+    /// The point the segment from `first`, of group `group`, is drawn to: `first + 1`, or
+    /// `first + 2` where the ray sees its pair at a simplified level
+    /// ([`LodParams::simplify`]); `None` where the pair's first segment stands for it. Both
+    /// segments of a pair decide alike: from the level at their shared point with the
+    /// jitter of the first, so a pair is never drawn both ways at once.
+    #[inline(always)]
+    pub(crate) fn segment_end(&self, points: &[[f32; 4]], first: u32, group: usize) -> Option<u32> {
+        let simplify = self.lod.params.simplify as usize;
+        if self.lod.pairs.is_empty() || group < simplify || simplify == 0 {
+            return Some(first + 1);
+        }
+        let pairs = |p: u32| self.lod.pairs[p as usize / 64] >> (p % 64) & 1 == 1;
+        let (pair, second) = if pairs(first) {
+            (first, false)
+        } else if first > 0 && pairs(first - 1) {
+            (first - 1, true)
+        } else {
+            return Some(first + 1);
+        };
+        let LodRay { origin, dir, cone } = self.ray;
+        let m = points[pair as usize + 1];
+        let t = (Vec3::new(m[0], m[1], m[2]) - origin).dot(dir);
+        // Level at least `simplify` (see `segment`): the footprint reaches its threshold,
+        // the camera's too.
+        let jitter = self.lod.jitter_factors[jitter_step(pair)];
+        let simplified = cone.width_at(t) * jitter >= self.lod.thresholds[simplify - 1]
+            && self.lod.camera_level(m, m, jitter, |m, _| m.distance(self.lod.camera_eye())) >= simplify;
+        match (simplified, second) {
+            (false, _) => Some(first + 1),
+            (true, false) => Some(first + 2),
+            (true, true) => None,
+        }
+    }
+}
+
+/// Where a hit at parameter `s` along the chord from point `first` to `first + 2` lies on
+/// the two segments the chord stands for: the segment and its parameter, at the same
+/// fraction of their summed length (how far along the strand shading happens).
+#[inline]
+pub(crate) fn unsimplify(points: &[[f32; 4]], first: u32, s: f32) -> (u32, f32) {
+    let p = |i: u32| Vec3::from_slice(&points[i as usize][..3]);
+    let (l1, l2) = (p(first).distance(p(first + 1)), p(first + 1).distance(p(first + 2)));
+    let along = s * (l1 + l2);
+    if along <= l1 {
+        (first, if l1 > 0.0 { along / l1 } else { 0.0 })
+    } else {
+        (first + 1, if l2 > 0.0 { ((along - l1) / l2).min(1.0) } else { 1.0 })
     }
 }
 
@@ -266,6 +361,16 @@ impl StrandLod {
             scales[l] = params.radius_scale(l as u32) * spread;
             opacities[l] = 1.0 / spread;
         }
+        let mut pairs = Vec::new();
+        if params.simplify > 0 && params.simplify < params.levels {
+            pairs = vec![0u64; strands.points.len().div_ceil(64)];
+            for w in strands.offsets.windows(2) {
+                // Even points with two more after them: the last point is always kept.
+                for i in (w[0]..w[1].saturating_sub(2)).step_by(2) {
+                    pairs[i as usize / 64] |= 1 << (i % 64);
+                }
+            }
+        }
         let mean_color = strands.colors.as_ref().filter(|c| params.contrast && !c.is_empty()).map(|c| {
             let sum = c.iter().fold([0.0f64; 3], |a, x| [a[0] + x[0] as f64, a[1] + x[1] as f64, a[2] + x[2] as f64]);
             Vec3::new(sum[0] as f32, sum[1] as f32, sum[2] as f32) / c.len() as f32
@@ -282,6 +387,8 @@ impl StrandLod {
             opacities,
             jitter_factors,
             mean_color,
+            pairs,
+            camera: None,
         })
     }
 
@@ -297,20 +404,61 @@ impl StrandLod {
     }
 
     /// The BVH items of `strands` (the set this was built for): every segment, its id
-    /// carrying its group, bounded at the radius its group's level gives it.
+    /// carrying its group, bounded at the radius its group's level gives it (and, for the
+    /// first segment of a pair that can be simplified, around its pair's chord too).
     pub fn items(&self, strands: &StrandSet) -> Vec<BuildItem> {
         let mut items = Vec::with_capacity(strands.segment_count());
+        let eye = self.camera_eye();
+        let farthest = |a: Vec3, b: Vec3| a.distance(eye).max(b.distance(eye));
         for (strand, w) in strands.offsets.windows(2).enumerate() {
-            let group = self.groups_of[strand];
-            let scale = self.scales[group as usize];
-            let widen = |p: [f32; 4]| [p[0], p[1], p[2], p[3] * scale];
+            let group = self.groups_of[strand] as usize;
+            let simplified = self.params.simplify > 0 && group as u32 >= self.params.simplify;
             for i in w[0]..w[1].saturating_sub(1) {
-                let (min, max) =
-                    segment::bounds(widen(strands.points[i as usize]), widen(strands.points[i as usize + 1]));
-                items.push(BuildItem { bounds: Aabb::new(min, max), id: self.item_id(i, group) });
+                let points = &strands.points;
+                let end = if simplified { (i + 2).min(w[1] - 1) } else { i + 1 };
+                // The widest the segment gets: at its group's level, or the camera's there
+                // (over the chord it may stand for, too), with the camera's rounding margin.
+                let jitter = self.jitter_factors[jitter_step(i)];
+                let ceiling = self.camera_level(points[i as usize], points[end as usize], jitter, farthest);
+                let ceiling = ceiling.max(self.camera_level(points[i as usize], points[i as usize + 1], jitter, farthest));
+                let scale = self.scales[group.min(ceiling)];
+                let widen = |i: u32| {
+                    let p = points[i as usize];
+                    [p[0], p[1], p[2], p[3] * scale * (1.0 + 1e-5)]
+                };
+                let (min, max) = segment::bounds(widen(i), widen(i + 1));
+                let mut bounds = Aabb::new(min, max);
+                if simplified && self.pairs[i as usize / 64] >> (i % 64) & 1 == 1 {
+                    let (min, max) = segment::bounds(widen(i), widen(i + 2));
+                    bounds = bounds.union(Aabb::new(min, max));
+                }
+                items.push(BuildItem { bounds, id: self.item_id(i, group as u8) });
             }
         }
         items
+    }
+
+    /// The same levels, each segment's bounded by what `camera` sees of it ([`LodCamera`]).
+    pub fn for_camera(self, camera: LodCamera) -> StrandLod {
+        StrandLod { camera: Some(camera), ..self }
+    }
+
+    /// The eye of the camera, or the origin without one.
+    #[inline(always)]
+    fn camera_eye(&self) -> Vec3 {
+        self.camera.map_or(Vec3::ZERO, |c| c.eye)
+    }
+
+    /// The finest level a ray may need for the segment between points `a` and `b`, whose
+    /// jitter factor is `jitter` ([`LodCamera`]): the camera's level at the distance
+    /// `distance(a, b)` gives (the midpoint's when tracing, the farthest point's to bound);
+    /// the coarsest level without a camera.
+    #[inline(always)]
+    fn camera_level(&self, a: [f32; 4], b: [f32; 4], jitter: f32, distance: impl Fn(Vec3, Vec3) -> f32) -> usize {
+        let Some(camera) = self.camera else { return MAX_LEVELS - 1 };
+        let (a, b) = (Vec3::new(a[0], a[1], a[2]), Vec3::new(b[0], b[1], b[2]));
+        let footprint = camera.pixel_spread * distance(a, b) * jitter;
+        self.thresholds.iter().take_while(|&&c| footprint >= c).count()
     }
 
     /// The pruning parameters.
@@ -331,7 +479,7 @@ impl StrandLod {
     /// Bytes of the LOD's own bookkeeping (parameters, thresholds, group sizes and each
     /// strand's group), beyond the BVH every strand set has.
     pub fn bookkeeping_bytes(&self) -> usize {
-        std::mem::size_of::<StrandLod>() + self.group_strands.len() * 4 + self.groups_of.len()
+        std::mem::size_of::<StrandLod>() + self.group_strands.len() * 4 + self.groups_of.len() + self.pairs.len() * 8
     }
 
     /// The level a ray with `cone` uses at distance `t`:
@@ -402,7 +550,7 @@ fn group_bits(levels: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::accel::{Accel, Shape};
+    use crate::accel::{Accel, HitKind, Shape};
     use crate::math::Ray;
     use rand::Rng;
 
@@ -713,6 +861,88 @@ mod tests {
             assert_eq!(layers.first().map(|l| (l.hit.prim, l.hit.level)), expected.map(|e| (e.1, e.2)), "ray {i}");
         }
         assert!(hits > 300 && coarse > 50, "the test needs hits at coarse levels: {hits} {coarse}");
+    }
+
+    /// The closest hit of a ray along -z through (x, y) on `accel`, seen at exactly
+    /// `level` whatever the segment's jitter (a constant footprint `d^(level - 1/128)`
+    /// times `start * width`; jitters lie in [1/64, 63/64]).
+    fn hit_at_level(accel: &Accel, x: f32, y: f32, level: u32) -> Option<crate::accel::Hit> {
+        let lod = accel.objects[0].lod().unwrap();
+        let p = lod.params();
+        let footprint = p.start * lod.width() * p.decimation.powf(level as f32 - 1.0 / 128.0);
+        let mut ray = Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z);
+        ray.cone = RayCone { width: footprint, spread: 0.0 };
+        let hit = accel.intersect(&ray);
+        if let Some(h) = hit {
+            assert_eq!(h.level, level, "ray at ({x}, {y})");
+        }
+        hit
+    }
+
+    #[test]
+    fn simplified_levels_skip_every_other_point_and_keep_the_ends() {
+        // A zigzag: the odd points stand 0.1 off the line through the even ones.
+        let mut s = StrandSet::new();
+        s.push_strand((0..5).map(|i| (Vec3::new(i as f32 * 0.25, 0.1 * (i % 2) as f32, 0.0), 0.01)));
+        let p = LodParams { levels: 4, simplify: 2, ..Default::default() };
+        let accel = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
+        let full = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(LodParams { simplify: 0, ..p }))]);
+        // One strand lives at every level. Below `simplify`, the odd points are there and
+        // the chords between even points are not; from it on, the other way round.
+        for level in 0..4 {
+            let simplified = level >= 2;
+            for x in [0.25, 0.75] {
+                assert_eq!(hit_at_level(&accel, x, 0.1, level).is_some(), !simplified, "level {level}, x {x}");
+                assert_eq!(hit_at_level(&accel, x, 0.0, level).is_some(), simplified, "level {level}, x {x}");
+                // Without simplification the odd points stay at every level.
+                assert!(hit_at_level(&full, x, 0.1, level).is_some());
+            }
+            // The end points are kept.
+            for x in [0.01, 0.99] {
+                assert!(hit_at_level(&accel, x, 0.0, level).is_some(), "level {level}, end {x}");
+            }
+        }
+        // A hit on a chord is put on the segment it stands for, at the same fraction of
+        // the pair's length (both segments of a pair are equally long here).
+        let h = hit_at_level(&accel, 0.2, 0.0, 2).unwrap();
+        let HitKind::Segment { s: along, .. } = h.kind else { panic!() };
+        assert_eq!(h.prim, 0);
+        assert!((along - 0.8).abs() < 1e-3, "{along}");
+        let h = hit_at_level(&accel, 0.8, 0.0, 3).unwrap();
+        let HitKind::Segment { s: along, .. } = h.kind else { panic!() };
+        assert_eq!(h.prim, 3);
+        assert!((along - 0.2).abs() < 1e-3, "{along}");
+    }
+
+    #[test]
+    fn simplified_strands_stay_within_the_chord_deviation_of_their_curve() {
+        // Quarter circles of radius 1 in the plane z = 0, nine points each: a chord over
+        // two segments (22.5 degrees) departs from the arc by 1 - cos(11.25 deg) = 0.0192.
+        let (r, deviation) = (0.02f32, 1.0 - 11.25f32.to_radians().cos());
+        let arc = |i: usize, n: usize, radius: f32| {
+            let a = std::f32::consts::FRAC_PI_2 * i as f32 / (n - 1) as f32;
+            Vec3::new(a.cos(), a.sin(), 0.0) * radius
+        };
+        let mut s = StrandSet::new();
+        s.push_strand((0..9).map(|i| (arc(i, 9, 1.0), r)));
+        let p = LodParams { levels: 4, simplify: 1, ..Default::default() };
+        let accel = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(p))]);
+        let lod = accel.objects[0].lod().unwrap();
+        for level in 1..4 {
+            let widened = r * lod.radius_scale(level);
+            assert!(widened > deviation, "the test needs strands wider than the chords depart");
+            for i in 0..200 {
+                // Every point of the curve is covered, the ends included.
+                let on = arc(i, 200, 1.0);
+                assert!(hit_at_level(&accel, on.x, on.y, level).is_some(), "level {level}, point {i}");
+                // Nothing lies farther from the curve than the widened radius plus the
+                // chords' deviation (the chords lie inside the arc).
+                for radius in [1.0 - widened - deviation - 0.005, 1.0 + widened + 0.005] {
+                    let off = arc(i, 200, radius);
+                    assert!(hit_at_level(&accel, off.x, off.y, level).is_none(), "level {level}, {off}");
+                }
+            }
+        }
     }
 
     #[test]
