@@ -18,7 +18,11 @@
 //!   beyond their `t_k` before the exact segment test, and a hit beyond `t_k` does not count;
 //!   no ray is re-shot;
 //! - a segment met at distance `t` is intersected with its radius widened for the level at
-//!   `t` ([`LodParams::radius_scale`]).
+//!   `t` ([`LodParams::radius_scale`]);
+//! - given the camera ([`LodCamera`]), no segment is drawn coarser than the camera sees
+//!   it, so its box is widened only that far: near fur keeps tight boxes, where bounding
+//!   every segment for its coarsest level made near rays 2 times slower than without LOD;
+//! - optionally, coarse levels skip every other point of a strand ([`LodParams::simplify`]).
 //!
 //! Each strand set measures its own width, so several hair thicknesses in one scene each
 //! pick their own level. The jitter belongs to the segment, not to the ray: transitions
@@ -250,8 +254,13 @@ impl LodView<'_> {
         let tb = (Vec3::new(b[0], b[1], b[2]) - origin).dot(dir);
         // level <= k while footprint * d^jitter < thresholds[k] (see `level_at`).
         let jitter = self.lod.jitter_factors[jitter_step(first)];
-        let footprint = cone.width_at(0.5 * (ta + tb)) * jitter;
         let thresholds = &self.lod.thresholds;
+        // The common case, near fur: level 0 up to the segment's far end, where every
+        // group is visible at its own width.
+        if cone.width_at(ta.max(tb) + a[3].max(b[3])) * jitter < thresholds[0] {
+            return Some((1.0, 0, f32::INFINITY));
+        }
+        let footprint = cone.width_at(0.5 * (ta + tb)) * jitter;
         let mut level = thresholds[..group].iter().take_while(|&&c| footprint >= c).count();
         let ceiling = self.lod.camera_level(a, b, jitter, |a, b| a.midpoint(b).distance(self.lod.camera_eye()));
         let scale = self.lod.scales[level.min(ceiling)];
@@ -420,7 +429,8 @@ impl StrandLod {
                 // (over the chord it may stand for, too), with the camera's rounding margin.
                 let jitter = self.jitter_factors[jitter_step(i)];
                 let ceiling = self.camera_level(points[i as usize], points[end as usize], jitter, farthest);
-                let ceiling = ceiling.max(self.camera_level(points[i as usize], points[i as usize + 1], jitter, farthest));
+                let ceiling =
+                    ceiling.max(self.camera_level(points[i as usize], points[i as usize + 1], jitter, farthest));
                 let scale = self.scales[group.min(ceiling)];
                 let widen = |i: u32| {
                     let p = points[i as usize];
@@ -943,6 +953,49 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn a_camera_bounds_the_level_and_leaves_camera_rays_as_they_were() {
+        let s = curtain(3000, 0.0005, 7); // width 0.001
+        let p = LodParams { spread: 4.0, ..Default::default() };
+        // From 2 away a pixel covers 4 widths: camera rays take level 3 or 4 (log_1.5 4 = 3.4).
+        let camera = LodCamera { eye: Vec3::new(0.5, 0.5, 2.0), pixel_spread: 0.002 };
+        let free = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
+        let seen = Accel::build_with_lod_for(vec![(Shape::Strands(s), 0, Some(p))], Some(camera));
+        let mut rng = GenRng::seed_from_u64(14);
+        let (mut hits, mut wide_hits, mut differ) = (0, 0, 0);
+        for i in 0..4000 {
+            let target = Vec3::new(rng.random(), 0.1 + 0.8 * rng.random::<f32>(), 0.0);
+            let mut ray = Ray::new(camera.eye, (target - camera.eye).normalize());
+            ray.cone = RayCone { width: 0.0, spread: camera.pixel_spread };
+            if i % 2 == 0 {
+                // A camera ray sees the same hits, but where a segment straddles a level
+                // change (the camera's level is read at its midpoint, the ray's at the hit).
+                let (a, b) = (free.intersect(&ray), seen.intersect(&ray));
+                differ += (a.map(|h| (h.prim, h.level)) != b.map(|h| (h.prim, h.level))) as u32;
+                for h in [a, b].into_iter().flatten() {
+                    assert!((3..=4).contains(&h.level), "ray {i}: {h:?}");
+                }
+                hits += a.is_some() as u32;
+            } else {
+                // A ten times wider ray is pruned to the coarsest level, or to the camera's.
+                ray.cone.spread *= 10.0;
+                if let Some(h) = free.intersect(&ray) {
+                    assert_eq!(h.level, 7, "ray {i}");
+                }
+                if let Some(h) = seen.intersect(&ray) {
+                    assert!((3..=4).contains(&h.level), "ray {i}: {h:?}");
+                    wide_hits += 1;
+                }
+            }
+        }
+        assert!(hits > 300 && wide_hits > 300, "the test needs hits: {hits} {wide_hits}");
+        assert!(differ * 50 < hits, "{differ} of {hits} camera rays differ");
+        // The boxes are widened for the camera's levels only: 4 times the radius scale of
+        // level 4 at most, instead of level 7's (0.0085 against 0.034 off the plane).
+        let depth = |a: &Accel| a.bounds().max.z - a.bounds().min.z;
+        assert!(depth(&seen) < 0.5 * depth(&free), "{} vs {}", depth(&seen), depth(&free));
     }
 
     #[test]

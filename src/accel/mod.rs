@@ -211,8 +211,10 @@ impl Accel {
             .enumerate()
             .map(|(i, (shape, material, params))| {
                 let lod = match (&shape, params) {
-                    (Shape::Strands(s), Some(p)) => StrandLod::build(s, p, lod_seed(i))
-                        .map(|l| if let Some(c) = camera { l.for_camera(c) } else { l }),
+                    (Shape::Strands(s), Some(p)) => {
+                        StrandLod::build(s, p, lod_seed(i))
+                            .map(|l| if let Some(c) = camera { l.for_camera(c) } else { l })
+                    }
                     _ => None,
                 };
                 let items = match (&shape, &lod) {

@@ -168,10 +168,10 @@ pub(super) fn trace_with(
         world.lights.iter().filter_map(|l| l.emitted(ray.origin, ray.dir, tmax)).min_by(|a, b| a.0.total_cmp(&b.0))
     };
     let emitted = |c: Color| if see_emitters { c } else { Color::ZERO };
-    let tail = world.accel.has_transparency().then(|| StochasticTail {
-        blend: BLEND_TRANSMITTANCE,
-        seed: (sampler.next_1d() * 16_777_216.0) as u32,
-    });
+    let tail = world
+        .accel
+        .has_transparency()
+        .then(|| StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 });
     // One closest-hit traversal first: when the nearest hit is opaque (a surface, fur at
     // full detail) the blend below would be that hit alone; only a semi-transparent
     // nearest hit needs the layers. Level of detail draws most fur opaque, so most rays
