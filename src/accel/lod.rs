@@ -29,7 +29,7 @@
 //! dither from segment to segment instead of showing a seam, and a segment changes level
 //! only when its footprint crosses its own threshold, so a moving camera does not re-draw
 //! every ray's level each frame (a per-ray jitter made the far fur flicker: measured with
-//! `examples/lod_quality.rs`, 3.7 times the reference flicker against 2.9 with this one).
+//! `examples/lod_quality.rs`, 3.7 times the reference flicker against 3.0 with this one).
 
 use super::bvh::{self, BuildItem};
 use crate::geometry::{segment, StrandSet};
@@ -157,16 +157,16 @@ impl LodParams {
     }
 }
 
-/// The camera a scene is rendered from, as level of detail sees it. Every ray descends
-/// from a camera ray, and cones never narrow (shadow rays start with the camera ray's
-/// footprint at the hit, gathered rays widen it), so no ray needs a segment finer than the
-/// camera sees it; the camera bounds how coarse a segment needs to be drawn instead. With
-/// a camera, a ray sees each segment at the finer of its own level and the camera's there
-/// (the level a camera ray would take at the segment's distance from the eye, with the
-/// segment's jitter). Camera rays see no change; a shadow or gathered ray that would prune
-/// a segment more sees it as the camera does, which covers alike on average. What it buys:
-/// each segment's BVH box is widened only as far as the camera can see it widened, instead
-/// of for its coarsest level, so near rays no longer cross boxes widened for far away.
+/// The camera a scene is rendered from, as level of detail sees it. A segment's BVH box
+/// must hold the segment at the widest it is ever drawn: without a camera that is its
+/// group's (coarsest) level, so near rays cross boxes widened for far away. With a camera,
+/// a ray sees each segment at the finer of its own level and the camera's there (the
+/// level a camera ray takes at the distance of the segment's midpoint from the eye, with
+/// the segment's jitter), and the box is widened only as far as the camera sees it.
+/// Camera rays see no change, but on segments that straddle a level change; shadow and
+/// gathered rays, whose cones start from the camera ray's and only widen, may ask for a
+/// coarser level and then see the segment as the camera does: finer, covering alike on
+/// average, at some more cost for those rays.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LodCamera {
     /// The eye (pinhole).
