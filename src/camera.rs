@@ -82,6 +82,11 @@ impl Camera {
         self.height
     }
 
+    /// The angle a pixel subtends: the spread of every camera ray's cone.
+    pub fn pixel_spread(&self) -> f32 {
+        self.pixel_spread
+    }
+
     /// The ray through image position (`x`, `y`) in pixels from the top-left corner.
     pub fn ray(&self, x: f32, y: f32) -> Ray {
         let sx = 2.0 * x / self.width as f32 - 1.0;

@@ -99,13 +99,14 @@ fn strand_hits(
         while mask != 0 {
             let lane = mask.trailing_zeros() as usize;
             mask &= mask - 1;
-            let (prim, level) = lanes.prim_level(chunk, lane, widen);
             if !normals {
-                if found(prim, t[lane], HitKind::Segment { s: along[lane], normal: Vec3::ZERO }, level) {
+                let (prim, along, level) = lanes.hit_on(s, chunk, lane, along[lane], widen);
+                if found(prim, t[lane], HitKind::Segment { s: along, normal: Vec3::ZERO }, level) {
                     return true;
                 }
             } else if let Some(h) = hits.hit(lane) {
-                if found(prim, h.t, HitKind::Segment { s: h.s, normal: h.normal }, level) {
+                let (prim, along, level) = lanes.hit_on(s, chunk, lane, h.s, widen);
+                if found(prim, h.t, HitKind::Segment { s: along, normal: h.normal }, level) {
                     return true;
                 }
             }
@@ -182,6 +183,13 @@ impl Accel {
     /// True when some strand set has per-point opacity, so rays must look past hits.
     pub fn has_transparency(&self) -> bool {
         self.objects.iter().any(is_partial)
+    }
+
+    /// Opacity at a hit of [`Accel::intersect`]: 1 on meshes and opaque strands, else the
+    /// strand's opacity there times that of its level of detail.
+    pub fn hit_opacity(&self, hit: &Hit) -> f32 {
+        let o = &self.objects[hit.object as usize];
+        opacity(&o.shape, hit.prim, hit.kind) * o.lod_opacity(hit.level)
     }
 
     /// The nearest hits along `ray` beyond `tmin`, sorted by distance, into `out`

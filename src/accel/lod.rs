@@ -11,21 +11,29 @@
 //!   level is exactly `k`. All segments stay in ONE BVH, each item id carrying its group in
 //!   its low bits ([`StrandLod::item_id`]), each bounded with the radius it takes at its
 //!   group's level. There is no copy of the geometry and a ray traverses once;
-//! - a ray's level at distance `t` is `floor(log_d(footprint(t) / width) + jitter)`
-//!   ([`StrandLod::level_at`]), so group `k` is visible only before the distance `t_k` where
-//!   that level passes `k`. A leaf drops the segments that lie wholly beyond their group's
-//!   `t_k` before the exact segment test, and a hit beyond `t_k` does not count; no ray is
-//!   re-shot;
+//! - a ray's level at distance `t` on a segment is `floor(log_d(footprint(t) / width) +
+//!   jitter)` ([`StrandLod::level_at`]), the jitter being the segment's own
+//!   ([`StrandLod::segment_jitter`]), so a segment of group `k` is visible only before the
+//!   distance `t_k` where that level passes `k`. A leaf drops the segments that lie wholly
+//!   beyond their `t_k` before the exact segment test, and a hit beyond `t_k` does not count;
+//!   no ray is re-shot;
 //! - a segment met at distance `t` is intersected with its radius widened for the level at
-//!   `t` ([`LodParams::radius_scale`]).
+//!   `t` ([`LodParams::radius_scale`]);
+//! - given the camera ([`LodCamera`]), no segment is drawn coarser than the camera sees
+//!   it, so its box is widened only that far: near fur keeps tight boxes, where bounding
+//!   every segment for its coarsest level made near rays 2 times slower than without LOD;
+//! - optionally, coarse levels skip every other point of a strand ([`LodParams::simplify`]).
 //!
 //! Each strand set measures its own width, so several hair thicknesses in one scene each
-//! pick their own level. The jitter comes from the ray itself ([`ray_jitter`]): transitions
-//! dither per ray instead of showing a seam, and stay deterministic.
+//! pick their own level. The jitter belongs to the segment, not to the ray: transitions
+//! dither from segment to segment instead of showing a seam, and a segment changes level
+//! only when its footprint crosses its own threshold, so a moving camera does not re-draw
+//! every ray's level each frame (a per-ray jitter made the far fur flicker: measured with
+//! `examples/lod_quality.rs`, 3.7 times the reference flicker against 3.0 with this one).
 
 use super::bvh::{self, BuildItem};
 use crate::geometry::{segment, StrandSet};
-use crate::math::rng::{hash_combine, unit_float, GenRng};
+use crate::math::rng::{hash_u32, GenRng};
 use crate::math::{Aabb, RayCone};
 use glam::Vec3;
 use rand::seq::SliceRandom;
@@ -33,6 +41,10 @@ use rand::SeedableRng;
 
 /// Most pruning levels a strand set may have.
 pub const MAX_LEVELS: usize = 16;
+
+/// Distinct jitter values segments draw theirs from: fine enough that level transitions
+/// dither smoothly, and a table of `d^jitter` spares an `exp` per segment test.
+const JITTER_STEPS: usize = 32;
 
 /// How a strand set is pruned (thesis section 2.2.3).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -60,11 +72,25 @@ pub struct LodParams {
     /// strands instead of a frozen hit-or-miss pattern of a few opaque ones. Capped so a
     /// strand never grows wider than the level's footprint. 1 draws them opaque.
     pub spread: f32,
+    /// The level from which strands skip every other point (thesis section 2.2: coarser
+    /// levels may also use fewer segments per strand): each pair of segments from an even
+    /// point is drawn as the one segment between its ends, so a strand keeps its end points
+    /// and departs from its curve by at most the skipped points' distance to those chords.
+    /// 0 never simplifies.
+    pub simplify: u32,
 }
 
 impl Default for LodParams {
     fn default() -> Self {
-        LodParams { decimation: 1.5, levels: 8, compensation: 0.8, contrast: false, start: 1.0, spread: 1.0 }
+        LodParams {
+            decimation: 1.5,
+            levels: 8,
+            compensation: 0.8,
+            contrast: false,
+            start: 1.0,
+            spread: 1.0,
+            simplify: 0,
+        }
     }
 }
 
@@ -82,6 +108,9 @@ impl LodParams {
         }
         if !(self.spread.is_finite() && (1.0..=1000.0).contains(&self.spread)) {
             return Err(format!("lod `spread` {} must be between 1 and 1000", self.spread));
+        }
+        if self.simplify > MAX_LEVELS as u32 {
+            return Err(format!("lod `simplify` {} must be between 0 (off) and {MAX_LEVELS}", self.simplify));
         }
         if !(self.compensation.is_finite() && self.compensation > 0.0 && self.compensation <= 1.0) {
             return Err(format!("lod `compensation` {} must be above 0 and at most 1", self.compensation));
@@ -128,6 +157,24 @@ impl LodParams {
     }
 }
 
+/// The camera a scene is rendered from, as level of detail sees it. A segment's BVH box
+/// must hold the segment at the widest it is ever drawn: without a camera that is its
+/// group's (coarsest) level, so near rays cross boxes widened for far away. With a camera,
+/// a ray sees each segment at the finer of its own level and the camera's there (the
+/// level a camera ray takes at the distance of the segment's midpoint from the eye, with
+/// the segment's jitter), and the box is widened only as far as the camera sees it.
+/// Camera rays see no change, but on segments that straddle a level change; shadow and
+/// gathered rays, whose cones start from the camera ray's and only widen, may ask for a
+/// coarser level and then see the segment as the camera does: finer, covering alike on
+/// average, at some more cost for those rays.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LodCamera {
+    /// The eye (pinhole).
+    pub eye: Vec3,
+    /// Spread of the camera ray cones: the angle a pixel subtends.
+    pub pixel_spread: f32,
+}
+
 /// A strand set's pruning levels: the group of each strand, and per level the widening
 /// and the footprint where it starts. The segments' BVH is the object's own
 /// ([`super::Object`]), built from [`StrandLod::items`].
@@ -151,23 +198,17 @@ pub struct StrandLod {
     scales: [f32; MAX_LEVELS],
     /// Opacity factor per level: `1 / spread_at(level)`.
     opacities: [f32; MAX_LEVELS],
+    /// `d^jitter` for each of the [`JITTER_STEPS`] jitter values: a footprint times it
+    /// compares with the thresholds as `log_d(footprint) + jitter` with their exponents.
+    jitter_factors: [f32; JITTER_STEPS],
     /// Mean strand colour, when contrast reduction is on and the strands have colours.
     mean_color: Option<Vec3>,
-}
-
-/// The part of a ray that picks levels: the distance before which each group is visible.
-#[derive(Clone, Copy, Debug)]
-pub struct RayLevels {
-    /// `cutoffs[k]`: the ray's level is at most `k` before this distance.
-    cutoffs: [f32; MAX_LEVELS],
-}
-
-impl RayLevels {
-    /// The level at distance `t`, at most `max` (the group being traversed).
-    #[inline]
-    fn level(&self, t: f32, max: usize) -> usize {
-        self.cutoffs[..max].iter().take_while(|&&c| t >= c).count()
-    }
+    /// With [`LodParams::simplify`]: one bit per point, set where the segment from that
+    /// point stands for its pair at simplified levels (an even point of its strand with two
+    /// more after it); the segment after it is then hidden there. Empty otherwise.
+    pairs: Vec<u64>,
+    /// The camera that bounds each segment's level ([`LodCamera`]), when known.
+    camera: Option<LodCamera>,
 }
 
 /// A ray as level of detail sees it: where it starts and goes, and its cone.
@@ -186,13 +227,11 @@ impl LodRay {
     }
 }
 
-/// A strand set as one ray sees it: the distances where its level changes.
+/// A strand set as one ray sees it.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct LodView<'a> {
     lod: &'a StrandLod,
-    levels: RayLevels,
-    origin: Vec3,
-    dir: Vec3,
+    ray: LodRay,
 }
 
 impl LodView<'_> {
@@ -202,43 +241,106 @@ impl LodView<'_> {
         (id >> self.lod.group_bits, (id & ((1 << self.lod.group_bits) - 1)) as usize)
     }
 
-    /// How the ray sees the segment between points `a` and `b` of group `group`: its
-    /// radius factor, its level and the distance from which its group is hidden (a hit
-    /// from there on does not count); `None` when the whole widened segment lies beyond
-    /// that distance, so it is skipped without the exact test. The level is read at the
-    /// distance of the segment's midpoint: segments are short next to the distances where
-    /// levels change.
+    /// How the ray sees the segment from point `first`, between points `a` and `b`, of
+    /// group `group`: its radius factor, its level and the distance from which its group
+    /// is hidden for it (a hit from there on does not count); `None` when the whole
+    /// widened segment lies beyond that distance, so it is skipped without the exact test.
+    /// The level is read at the distance of the segment's midpoint: segments are short
+    /// next to the distances where levels change.
     #[inline(always)]
-    pub(crate) fn segment(&self, a: [f32; 4], b: [f32; 4], group: usize) -> Option<(f32, u32, f32)> {
-        let ta = (Vec3::new(a[0], a[1], a[2]) - self.origin).dot(self.dir);
-        let tb = (Vec3::new(b[0], b[1], b[2]) - self.origin).dot(self.dir);
-        let level = self.levels.level(0.5 * (ta + tb), group);
-        let scale = self.lod.scales[level];
-        let cut = self.levels.cutoffs[group];
+    pub(crate) fn segment(&self, first: u32, a: [f32; 4], b: [f32; 4], group: usize) -> Option<(f32, u32, f32)> {
+        let LodRay { origin, dir, cone } = self.ray;
+        let ta = (Vec3::new(a[0], a[1], a[2]) - origin).dot(dir);
+        let tb = (Vec3::new(b[0], b[1], b[2]) - origin).dot(dir);
+        // level <= k while footprint * d^jitter < thresholds[k] (see `level_at`).
+        let jitter = self.lod.jitter_factors[jitter_step(first)];
+        let thresholds = &self.lod.thresholds;
+        // The common case, near fur: level 0 up to the segment's far end, where every
+        // group is visible at its own width.
+        if cone.width_at(ta.max(tb) + a[3].max(b[3])) * jitter < thresholds[0] {
+            return Some((1.0, 0, f32::INFINITY));
+        }
+        let footprint = cone.width_at(0.5 * (ta + tb)) * jitter;
+        let mut level = thresholds[..group].iter().take_while(|&&c| footprint >= c).count();
+        let ceiling = self.lod.camera_level(a, b, jitter, |a, b| a.midpoint(b).distance(self.lod.camera_eye()));
+        let scale = self.lod.scales[level.min(ceiling)];
+        let hidden = thresholds[group] / jitter;
+        let cut = if ceiling <= group {
+            // Never coarser than the group's level: always visible.
+            f32::INFINITY
+        } else if cone.spread > 0.0 {
+            (hidden - cone.width) / cone.spread
+        } else if cone.width.abs() < hidden {
+            f32::INFINITY
+        } else {
+            f32::NEG_INFINITY
+        };
         // A point of the surface lies at most one radius before its axis point.
         if ta.min(tb) - a[3].max(b[3]) * scale >= cut {
             return None;
         }
+        level = level.min(ceiling);
         Some((scale, level as u32, cut))
+    }
+
+    /// The point the segment from `first`, of group `group`, is drawn to: `first + 1`, or
+    /// `first + 2` where the ray sees its pair at a simplified level
+    /// ([`LodParams::simplify`]); `None` where the pair's first segment stands for it. Both
+    /// segments of a pair decide alike: from the level at their shared point with the
+    /// jitter of the first, so a pair is never drawn both ways at once.
+    #[inline(always)]
+    pub(crate) fn segment_end(&self, points: &[[f32; 4]], first: u32, group: usize) -> Option<u32> {
+        let simplify = self.lod.params.simplify as usize;
+        if self.lod.pairs.is_empty() || group < simplify || simplify == 0 {
+            return Some(first + 1);
+        }
+        let pairs = |p: u32| self.lod.pairs[p as usize / 64] >> (p % 64) & 1 == 1;
+        let (pair, second) = if pairs(first) {
+            (first, false)
+        } else if first > 0 && pairs(first - 1) {
+            (first - 1, true)
+        } else {
+            return Some(first + 1);
+        };
+        let LodRay { origin, dir, cone } = self.ray;
+        let m = points[pair as usize + 1];
+        let t = (Vec3::new(m[0], m[1], m[2]) - origin).dot(dir);
+        // Level at least `simplify` (see `segment`): the footprint reaches its threshold,
+        // the camera's too.
+        let jitter = self.lod.jitter_factors[jitter_step(pair)];
+        let simplified = cone.width_at(t) * jitter >= self.lod.thresholds[simplify - 1]
+            && self.lod.camera_level(m, m, jitter, |m, _| m.distance(self.lod.camera_eye())) >= simplify;
+        match (simplified, second) {
+            (false, _) => Some(first + 1),
+            (true, false) => Some(first + 2),
+            (true, true) => None,
+        }
+    }
+}
+
+/// Where a hit at parameter `s` along the chord from point `first` to `first + 2` lies on
+/// the two segments the chord stands for: the segment and its parameter, at the same
+/// fraction of their summed length (how far along the strand shading happens).
+#[inline]
+pub(crate) fn unsimplify(points: &[[f32; 4]], first: u32, s: f32) -> (u32, f32) {
+    let p = |i: u32| Vec3::from_slice(&points[i as usize][..3]);
+    let (l1, l2) = (p(first).distance(p(first + 1)), p(first + 1).distance(p(first + 2)));
+    let along = s * (l1 + l2);
+    if along <= l1 {
+        (first, if l1 > 0.0 { along / l1 } else { 0.0 })
+    } else {
+        (first + 1, if l2 > 0.0 { ((along - l1) / l2).min(1.0) } else { 1.0 })
     }
 }
 
 /// How a leaf's segments are seen for a ray's level of detail: `None` at full detail.
 pub(crate) type Widen<'a> = Option<&'a LodView<'a>>;
 
-/// A jitter value in [0, 1) for the level choice, derived from the ray's bits so it is the
-/// same whatever thread traces it, and differs from ray to ray (sub-pixel offsets, shadow
-/// ray origins) so level transitions dither instead of drawing a seam.
-#[inline]
-pub fn ray_jitter(origin: Vec3, dir: Vec3) -> f32 {
-    unit_float(hash_combine(&[
-        origin.x.to_bits(),
-        origin.y.to_bits(),
-        origin.z.to_bits(),
-        dir.x.to_bits(),
-        dir.y.to_bits(),
-        dir.z.to_bits(),
-    ]))
+/// The jitter step of the segment from point `first`: a hash, so neighbouring segments
+/// and strands switch levels at different distances.
+#[inline(always)]
+fn jitter_step(first: u32) -> usize {
+    hash_u32(first ^ 0x10d_5eed) as usize % JITTER_STEPS
 }
 
 impl StrandLod {
@@ -258,11 +360,25 @@ impl StrandLod {
         groups_of.iter().for_each(|&g| group_strands[g as usize] += 1);
         let mut thresholds = [f32::INFINITY; MAX_LEVELS];
         let (mut scales, mut opacities) = ([1.0; MAX_LEVELS], [1.0; MAX_LEVELS]);
+        let jitter_factors = std::array::from_fn(|q| params.decimation.powf(step_jitter(q)));
         for l in 0..levels {
-            thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
+            // The coarsest level never ends.
+            if l + 1 < levels {
+                thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
+            }
             let spread = params.spread_at(l as u32);
             scales[l] = params.radius_scale(l as u32) * spread;
             opacities[l] = 1.0 / spread;
+        }
+        let mut pairs = Vec::new();
+        if params.simplify > 0 && params.simplify < params.levels {
+            pairs = vec![0u64; strands.points.len().div_ceil(64)];
+            for w in strands.offsets.windows(2) {
+                // Even points with two more after them: the last point is always kept.
+                for i in (w[0]..w[1].saturating_sub(2)).step_by(2) {
+                    pairs[i as usize / 64] |= 1 << (i % 64);
+                }
+            }
         }
         let mean_color = strands.colors.as_ref().filter(|c| params.contrast && !c.is_empty()).map(|c| {
             let sum = c.iter().fold([0.0f64; 3], |a, x| [a[0] + x[0] as f64, a[1] + x[1] as f64, a[2] + x[2] as f64]);
@@ -278,7 +394,10 @@ impl StrandLod {
             thresholds,
             scales,
             opacities,
+            jitter_factors,
             mean_color,
+            pairs,
+            camera: None,
         })
     }
 
@@ -294,20 +413,62 @@ impl StrandLod {
     }
 
     /// The BVH items of `strands` (the set this was built for): every segment, its id
-    /// carrying its group, bounded at the radius its group's level gives it.
+    /// carrying its group, bounded at the radius its group's level gives it (and, for the
+    /// first segment of a pair that can be simplified, around its pair's chord too).
     pub fn items(&self, strands: &StrandSet) -> Vec<BuildItem> {
         let mut items = Vec::with_capacity(strands.segment_count());
+        let eye = self.camera_eye();
+        let farthest = |a: Vec3, b: Vec3| a.distance(eye).max(b.distance(eye));
         for (strand, w) in strands.offsets.windows(2).enumerate() {
-            let group = self.groups_of[strand];
-            let scale = self.scales[group as usize];
-            let widen = |p: [f32; 4]| [p[0], p[1], p[2], p[3] * scale];
+            let group = self.groups_of[strand] as usize;
+            let simplified = self.params.simplify > 0 && group as u32 >= self.params.simplify;
             for i in w[0]..w[1].saturating_sub(1) {
-                let (min, max) =
-                    segment::bounds(widen(strands.points[i as usize]), widen(strands.points[i as usize + 1]));
-                items.push(BuildItem { bounds: Aabb::new(min, max), id: self.item_id(i, group) });
+                let points = &strands.points;
+                let end = if simplified { (i + 2).min(w[1] - 1) } else { i + 1 };
+                // The widest the segment gets: at its group's level, or the camera's there
+                // (over the chord it may stand for, too), with the camera's rounding margin.
+                let jitter = self.jitter_factors[jitter_step(i)];
+                let ceiling = self.camera_level(points[i as usize], points[end as usize], jitter, farthest);
+                let ceiling =
+                    ceiling.max(self.camera_level(points[i as usize], points[i as usize + 1], jitter, farthest));
+                let scale = self.scales[group.min(ceiling)];
+                let widen = |i: u32| {
+                    let p = points[i as usize];
+                    [p[0], p[1], p[2], p[3] * scale * (1.0 + 1e-5)]
+                };
+                let (min, max) = segment::bounds(widen(i), widen(i + 1));
+                let mut bounds = Aabb::new(min, max);
+                if simplified && self.pairs[i as usize / 64] >> (i % 64) & 1 == 1 {
+                    let (min, max) = segment::bounds(widen(i), widen(i + 2));
+                    bounds = bounds.union(Aabb::new(min, max));
+                }
+                items.push(BuildItem { bounds, id: self.item_id(i, group as u8) });
             }
         }
         items
+    }
+
+    /// The same levels, each segment's bounded by what `camera` sees of it ([`LodCamera`]).
+    pub fn for_camera(self, camera: LodCamera) -> StrandLod {
+        StrandLod { camera: Some(camera), ..self }
+    }
+
+    /// The eye of the camera, or the origin without one.
+    #[inline(always)]
+    fn camera_eye(&self) -> Vec3 {
+        self.camera.map_or(Vec3::ZERO, |c| c.eye)
+    }
+
+    /// The finest level a ray may need for the segment between points `a` and `b`, whose
+    /// jitter factor is `jitter` ([`LodCamera`]): the camera's level at the distance
+    /// `distance(a, b)` gives (the midpoint's when tracing, the farthest point's to bound);
+    /// the coarsest level without a camera.
+    #[inline(always)]
+    fn camera_level(&self, a: [f32; 4], b: [f32; 4], jitter: f32, distance: impl Fn(Vec3, Vec3) -> f32) -> usize {
+        let Some(camera) = self.camera else { return MAX_LEVELS - 1 };
+        let (a, b) = (Vec3::new(a[0], a[1], a[2]), Vec3::new(b[0], b[1], b[2]));
+        let footprint = camera.pixel_spread * distance(a, b) * jitter;
+        self.thresholds.iter().take_while(|&&c| footprint >= c).count()
     }
 
     /// The pruning parameters.
@@ -328,7 +489,7 @@ impl StrandLod {
     /// Bytes of the LOD's own bookkeeping (parameters, thresholds, group sizes and each
     /// strand's group), beyond the BVH every strand set has.
     pub fn bookkeeping_bytes(&self) -> usize {
-        std::mem::size_of::<StrandLod>() + self.group_strands.len() * 4 + self.groups_of.len()
+        std::mem::size_of::<StrandLod>() + self.group_strands.len() * 4 + self.groups_of.len() + self.pairs.len() * 8
     }
 
     /// The level a ray with `cone` uses at distance `t`:
@@ -344,32 +505,16 @@ impl StrandLod {
         level.clamp(0.0, (self.params.levels - 1) as f32) as u32
     }
 
-    /// The distances at which a ray with `cone` and `jitter` leaves each level: the level
-    /// is at most `k` while `footprint(t) < start * width * d^(k + 1 - jitter)`, the same boundary
-    /// as [`StrandLod::level_at`]. A cone that does not widen keeps its width everywhere.
-    pub fn ray_levels(&self, cone: RayCone, jitter: f32) -> RayLevels {
-        let levels = self.params.levels as usize;
-        let shrink = self.params.decimation.powf(-jitter);
-        let mut cutoffs = [f32::INFINITY; MAX_LEVELS];
-        for (k, cutoff) in cutoffs.iter_mut().enumerate().take(levels - 1) {
-            let footprint = self.thresholds[k] * shrink;
-            *cutoff = if cone.spread > 0.0 {
-                (footprint - cone.width) / cone.spread
-            } else if cone.width.abs() < footprint {
-                f32::INFINITY
-            } else {
-                f32::NEG_INFINITY
-            };
-        }
-        RayLevels { cutoffs }
+    /// The jitter in [0, 1) of the segment from point `first` in [`StrandLod::level_at`]:
+    /// one of [`JITTER_STEPS`] values, drawn by a hash of the point.
+    pub fn segment_jitter(&self, first: u32) -> f32 {
+        step_jitter(jitter_step(first))
     }
 
-    /// The strand set as `ray` sees it. Hashed here rather than per ray: only rays that
-    /// reach a strand set with level of detail need the jitter.
+    /// The strand set as `ray` sees it.
     #[inline]
     pub(crate) fn view(&self, ray: &LodRay) -> LodView<'_> {
-        let levels = self.ray_levels(ray.cone, ray_jitter(ray.origin, ray.dir));
-        LodView { lod: self, levels, origin: ray.origin, dir: ray.dir }
+        LodView { lod: self, ray: *ray }
     }
 
     /// A strand colour seen at `level`, its contrast to the set's mean reduced by
@@ -402,6 +547,11 @@ impl StrandLod {
     }
 }
 
+/// The jitter of step `q`: the middle of the `q`-th of [`JITTER_STEPS`] equal intervals.
+fn step_jitter(q: usize) -> f32 {
+    (q as f32 + 0.5) / JITTER_STEPS as f32
+}
+
 /// Bits of an item id that hold the group of a set with `levels` levels.
 fn group_bits(levels: u32) -> u32 {
     32 - levels.saturating_sub(1).leading_zeros()
@@ -410,7 +560,7 @@ fn group_bits(levels: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::accel::{Accel, Shape};
+    use crate::accel::{Accel, HitKind, Shape};
     use crate::math::Ray;
     use rand::Rng;
 
@@ -487,18 +637,41 @@ mod tests {
             // Clamped to the coarsest level.
             assert_eq!(lod.level_at(cone, 1e9, j), 7);
         }
-        // The cut-off distances agree with the level formula.
+        // A segment across the ray at distance t takes the level of the formula with its
+        // own jitter, and its group hides where that level passes the group.
         let mut rng = GenRng::seed_from_u64(5);
+        let mut jitters = std::collections::BTreeSet::new();
         for _ in 0..2000 {
             let cone = RayCone { width: rng.random::<f32>() * 0.02, spread: rng.random::<f32>() * 0.01 };
-            let (j, t) = (rng.random::<f32>(), rng.random::<f32>() * 300.0);
-            let levels = lod.ray_levels(cone, j);
-            let level = lod.level_at(cone, t, j) as usize;
+            let (first, t) = (rng.random_range(0..1000u32), rng.random::<f32>() * 300.0);
+            let j = lod.segment_jitter(first);
+            jitters.insert(j.to_bits());
+            let view = lod.view(&LodRay::new(Vec3::ZERO, Vec3::Z, cone));
+            let (a, b) = ([-1.0, 0.0, t, 0.005], [1.0, 0.0, t, 0.005]);
+            let level = lod.level_at(cone, t, j);
+            let group = rng.random_range(0..8usize);
             // Away from the boundaries (rounding may differ there).
-            if levels.cutoffs[..7].iter().all(|c| (c - t).abs() > 1e-3 * t.max(1.0)) {
-                assert_eq!(levels.level(t, 7), level, "cone {cone:?} jitter {j} t {t}");
+            if lod.level_at(cone, t * 1.001, j) != lod.level_at(cone, t * 0.999, j) {
+                continue;
+            }
+            match view.segment(first, a, b, group) {
+                Some((scale, l, cut)) => {
+                    if level as usize <= group {
+                        assert_eq!((l, scale), (level, lod.radius_scale(level)), "cone {cone:?} jitter {j} t {t}");
+                        assert!(t < cut, "visible at {t}, cut {cut}");
+                    } else {
+                        assert!(t >= cut, "hidden at {t}, cut {cut}");
+                    }
+                    // Around the cut the level passes the group.
+                    if cut.is_finite() && cut > 0.0 {
+                        assert!(lod.level_at(cone, cut * 1.001, j) as usize > group, "cut {cut}");
+                        assert!(lod.level_at(cone, cut * 0.999, j) as usize <= group, "cut {cut}");
+                    }
+                }
+                None => assert!(level as usize > group, "cone {cone:?} jitter {j} t {t}: level {level}, group {group}"),
             }
         }
+        assert!(jitters.len() > JITTER_STEPS / 2, "segments draw different jitters");
     }
 
     #[test]
@@ -624,11 +797,12 @@ mod tests {
 
     /// Brute force over every segment: the level of each from `level_at` at its midpoint,
     /// kept when its strand lives that long and the hit is where that group is visible.
-    fn brute_force(s: &StrandSet, lod: &StrandLod, groups: &[u8], ray: &Ray, jitter: f32) -> Option<(f32, u32, u32)> {
+    fn brute_force(s: &StrandSet, lod: &StrandLod, groups: &[u8], ray: &Ray) -> Option<(f32, u32, u32)> {
         let mut best: Option<(f32, u32, u32)> = None;
         for (strand, w) in s.offsets.windows(2).enumerate() {
             let group = groups[strand] as u32;
             for i in w[0]..w[1] - 1 {
+                let jitter = lod.segment_jitter(i);
                 let (a, b) = (s.position(i), s.position(i + 1));
                 let mid = ((a + b) * 0.5 - ray.origin).dot(ray.dir);
                 let level = lod.level_at(ray.cone, mid, jitter).min(group);
@@ -673,7 +847,7 @@ mod tests {
             if i % 3 > 0 {
                 ray.cone = RayCone { width: 0.0, spread: rng.random::<f32>() * 0.01 };
             }
-            let expected = brute_force(&s, lod, &groups, &ray, ray_jitter(ray.origin, ray.dir));
+            let expected = brute_force(&s, lod, &groups, &ray);
             let got = accel.intersect(&ray);
             match (got, expected) {
                 (Some(h), Some(e)) => {
@@ -697,6 +871,131 @@ mod tests {
             assert_eq!(layers.first().map(|l| (l.hit.prim, l.hit.level)), expected.map(|e| (e.1, e.2)), "ray {i}");
         }
         assert!(hits > 300 && coarse > 50, "the test needs hits at coarse levels: {hits} {coarse}");
+    }
+
+    /// The closest hit of a ray along -z through (x, y) on `accel`, seen at exactly
+    /// `level` whatever the segment's jitter (a constant footprint `d^(level - 1/128)`
+    /// times `start * width`; jitters lie in [1/64, 63/64]).
+    fn hit_at_level(accel: &Accel, x: f32, y: f32, level: u32) -> Option<crate::accel::Hit> {
+        let lod = accel.objects[0].lod().unwrap();
+        let p = lod.params();
+        let footprint = p.start * lod.width() * p.decimation.powf(level as f32 - 1.0 / 128.0);
+        let mut ray = Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z);
+        ray.cone = RayCone { width: footprint, spread: 0.0 };
+        let hit = accel.intersect(&ray);
+        if let Some(h) = hit {
+            assert_eq!(h.level, level, "ray at ({x}, {y})");
+        }
+        hit
+    }
+
+    #[test]
+    fn simplified_levels_skip_every_other_point_and_keep_the_ends() {
+        // A zigzag: the odd points stand 0.1 off the line through the even ones.
+        let mut s = StrandSet::new();
+        s.push_strand((0..5).map(|i| (Vec3::new(i as f32 * 0.25, 0.1 * (i % 2) as f32, 0.0), 0.01)));
+        let p = LodParams { levels: 4, simplify: 2, ..Default::default() };
+        let accel = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
+        let full = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(LodParams { simplify: 0, ..p }))]);
+        // One strand lives at every level. Below `simplify`, the odd points are there and
+        // the chords between even points are not; from it on, the other way round.
+        for level in 0..4 {
+            let simplified = level >= 2;
+            for x in [0.25, 0.75] {
+                assert_eq!(hit_at_level(&accel, x, 0.1, level).is_some(), !simplified, "level {level}, x {x}");
+                assert_eq!(hit_at_level(&accel, x, 0.0, level).is_some(), simplified, "level {level}, x {x}");
+                // Without simplification the odd points stay at every level.
+                assert!(hit_at_level(&full, x, 0.1, level).is_some());
+            }
+            // The end points are kept.
+            for x in [0.01, 0.99] {
+                assert!(hit_at_level(&accel, x, 0.0, level).is_some(), "level {level}, end {x}");
+            }
+        }
+        // A hit on a chord is put on the segment it stands for, at the same fraction of
+        // the pair's length (both segments of a pair are equally long here).
+        let h = hit_at_level(&accel, 0.2, 0.0, 2).unwrap();
+        let HitKind::Segment { s: along, .. } = h.kind else { panic!() };
+        assert_eq!(h.prim, 0);
+        assert!((along - 0.8).abs() < 1e-3, "{along}");
+        let h = hit_at_level(&accel, 0.8, 0.0, 3).unwrap();
+        let HitKind::Segment { s: along, .. } = h.kind else { panic!() };
+        assert_eq!(h.prim, 3);
+        assert!((along - 0.2).abs() < 1e-3, "{along}");
+    }
+
+    #[test]
+    fn simplified_strands_stay_within_the_chord_deviation_of_their_curve() {
+        // Quarter circles of radius 1 in the plane z = 0, nine points each: a chord over
+        // two segments (22.5 degrees) departs from the arc by 1 - cos(11.25 deg) = 0.0192.
+        let (r, deviation) = (0.02f32, 1.0 - 11.25f32.to_radians().cos());
+        let arc = |i: usize, n: usize, radius: f32| {
+            let a = std::f32::consts::FRAC_PI_2 * i as f32 / (n - 1) as f32;
+            Vec3::new(a.cos(), a.sin(), 0.0) * radius
+        };
+        let mut s = StrandSet::new();
+        s.push_strand((0..9).map(|i| (arc(i, 9, 1.0), r)));
+        let p = LodParams { levels: 4, simplify: 1, ..Default::default() };
+        let accel = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(p))]);
+        let lod = accel.objects[0].lod().unwrap();
+        for level in 1..4 {
+            let widened = r * lod.radius_scale(level);
+            assert!(widened > deviation, "the test needs strands wider than the chords depart");
+            for i in 0..200 {
+                // Every point of the curve is covered, the ends included.
+                let on = arc(i, 200, 1.0);
+                assert!(hit_at_level(&accel, on.x, on.y, level).is_some(), "level {level}, point {i}");
+                // Nothing lies farther from the curve than the widened radius plus the
+                // chords' deviation (the chords lie inside the arc).
+                for radius in [1.0 - widened - deviation - 0.005, 1.0 + widened + 0.005] {
+                    let off = arc(i, 200, radius);
+                    assert!(hit_at_level(&accel, off.x, off.y, level).is_none(), "level {level}, {off}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_camera_bounds_the_level_and_leaves_camera_rays_as_they_were() {
+        let s = curtain(3000, 0.0005, 7); // width 0.001
+        let p = LodParams { spread: 4.0, ..Default::default() };
+        // From 2 away a pixel covers 4 widths: camera rays take level 3 or 4 (log_1.5 4 = 3.4).
+        let camera = LodCamera { eye: Vec3::new(0.5, 0.5, 2.0), pixel_spread: 0.002 };
+        let free = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
+        let seen = Accel::build_with_lod_for(vec![(Shape::Strands(s), 0, Some(p))], Some(camera));
+        let mut rng = GenRng::seed_from_u64(14);
+        let (mut hits, mut wide_hits, mut differ) = (0, 0, 0);
+        for i in 0..4000 {
+            let target = Vec3::new(rng.random(), 0.1 + 0.8 * rng.random::<f32>(), 0.0);
+            let mut ray = Ray::new(camera.eye, (target - camera.eye).normalize());
+            ray.cone = RayCone { width: 0.0, spread: camera.pixel_spread };
+            if i % 2 == 0 {
+                // A camera ray sees the same hits, but where a segment straddles a level
+                // change (the camera's level is read at its midpoint, the ray's at the hit).
+                let (a, b) = (free.intersect(&ray), seen.intersect(&ray));
+                differ += (a.map(|h| (h.prim, h.level)) != b.map(|h| (h.prim, h.level))) as u32;
+                for h in [a, b].into_iter().flatten() {
+                    assert!((3..=4).contains(&h.level), "ray {i}: {h:?}");
+                }
+                hits += a.is_some() as u32;
+            } else {
+                // A ten times wider ray is pruned to the coarsest level, or to the camera's.
+                ray.cone.spread *= 10.0;
+                if let Some(h) = free.intersect(&ray) {
+                    assert_eq!(h.level, 7, "ray {i}");
+                }
+                if let Some(h) = seen.intersect(&ray) {
+                    assert!((3..=4).contains(&h.level), "ray {i}: {h:?}");
+                    wide_hits += 1;
+                }
+            }
+        }
+        assert!(hits > 300 && wide_hits > 300, "the test needs hits: {hits} {wide_hits}");
+        assert!(differ * 50 < hits, "{differ} of {hits} camera rays differ");
+        // The boxes are widened for the camera's levels only: 4 times the radius scale of
+        // level 4 at most, instead of level 7's (0.0085 against 0.034 off the plane).
+        let depth = |a: &Accel| a.bounds().max.z - a.bounds().min.z;
+        assert!(depth(&seen) < 0.5 * depth(&free), "{} vs {}", depth(&seen), depth(&free));
     }
 
     #[test]

@@ -14,7 +14,7 @@ use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray, RayCone};
 use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
-use lod::{LodParams, LodRay, StrandLod, Widen};
+use lod::{LodCamera, LodParams, LodRay, StrandLod, Widen};
 use rayon::prelude::*;
 use wide::f32x4;
 
@@ -199,12 +199,22 @@ impl Accel {
     /// their strands are pruned (ranks seeded by the object index) into groups, which
     /// their BVH's items carry. Meshes ignore the parameters.
     pub fn build_with_lod(shapes: Vec<(Shape, u32, Option<LodParams>)>) -> Accel {
+        Accel::build_with_lod_for(shapes, None)
+    }
+
+    /// Like [`Accel::build_with_lod`], for rendering from `camera`: the strand sets' levels
+    /// are bounded by what the camera sees of them ([`LodCamera`]), which keeps their BVH
+    /// boxes tight near the camera.
+    pub fn build_with_lod_for(shapes: Vec<(Shape, u32, Option<LodParams>)>, camera: Option<LodCamera>) -> Accel {
         let objects: Vec<Object> = shapes
             .into_par_iter()
             .enumerate()
             .map(|(i, (shape, material, params))| {
                 let lod = match (&shape, params) {
-                    (Shape::Strands(s), Some(p)) => StrandLod::build(s, p, lod_seed(i)),
+                    (Shape::Strands(s), Some(p)) => {
+                        StrandLod::build(s, p, lod_seed(i))
+                            .map(|l| if let Some(c) = camera { l.for_camera(c) } else { l })
+                    }
                     _ => None,
                 };
                 let items = match (&shape, &lod) {
@@ -379,7 +389,8 @@ fn strand_leaf(
                         }
                     }
                     let ids = &ids[..n];
-                    if n > 0 && exact4(ray, ids, &gather4(s, ids, |_| false, None), any, None, &mut tmax, &mut best) {
+                    if n > 0 && exact4(s, ray, ids, &gather4(s, ids, |_| false, None), any, None, &mut tmax, &mut best)
+                    {
                         break 'leaf;
                     }
                 }
@@ -387,7 +398,7 @@ fn strand_leaf(
         }
         Some(_) => {
             for chunk in prims.chunks(4) {
-                if exact4(ray, chunk, &gather4(s, chunk, &skipped, widen), any, widen, &mut tmax, &mut best) {
+                if exact4(s, ray, chunk, &gather4(s, chunk, &skipped, widen), any, widen, &mut tmax, &mut best) {
                     break;
                 }
             }
@@ -396,11 +407,13 @@ fn strand_leaf(
     best
 }
 
-/// The exact test of up to four segments (`lanes`, gathered from the item ids `ids`) for
+/// The exact test of up to four segments (`lanes`, gathered from the item ids `ids` of `s`) for
 /// [`strand_leaf`]: a hit before `*tmax` becomes `*best` and shortens `*tmax`. True when the
 /// search is over (an any-hit query hit).
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn exact4(
+    s: &StrandSet,
     (origin, dir): (Vec3, Vec3),
     ids: &[u32],
     lanes: &Lanes4,
@@ -414,15 +427,15 @@ fn exact4(
     if any && hits.mask != 0 {
         // Any lane's hit will do: skip forming the normal.
         let lane = hits.mask.trailing_zeros() as usize;
-        let (prim, level) = lanes.prim_level(ids, lane, widen);
+        let (prim, _, level) = lanes.hit_on(s, ids, lane, 0.0, widen);
         *best = Some((prim, hits.t()[lane], HitKind::Segment { s: 0.0, normal: Vec3::ZERO }, level));
         return true;
     }
     if let Some(lane) = hits.nearest() {
         if let Some(h) = hits.hit(lane) {
             *tmax = h.t;
-            let (prim, level) = lanes.prim_level(ids, lane, widen);
-            *best = Some((prim, h.t, HitKind::Segment { s: h.s, normal: h.normal }, level));
+            let (prim, along, level) = lanes.hit_on(s, ids, lane, h.s, widen);
+            *best = Some((prim, h.t, HitKind::Segment { s: along, normal: h.normal }, level));
         }
     }
     false
@@ -433,21 +446,29 @@ struct Lanes4 {
     /// End points `[x, y, z, radius]`, radii widened for the ray's level of detail.
     p0: [f32x4; 4],
     p1: [f32x4; 4],
-    /// With level of detail only: each lane's segment (its first point), level, and the
-    /// distance from which a hit on it does not count (its pruning group is hidden there).
+    /// With level of detail only: each lane's segment (its first point), level, the
+    /// distance from which a hit on it does not count (its pruning group is hidden there),
+    /// and whether it stands for its pair of segments (a simplified level).
     prim: [u32; 4],
     level: [u32; 4],
     cut: [f32; 4],
+    paired: [bool; 4],
 }
 
 impl Lanes4 {
-    /// The segment (its first point) and level of lane `lane`, gathered from the item ids
-    /// `ids` with `widen`.
+    /// The segment (its first point) of `s`, the parameter along it and the level of a
+    /// hit at parameter `along` on lane `lane`, gathered from the item ids `ids` with
+    /// `widen`. A hit on a segment standing for its pair is put on the one of the two
+    /// where shading finds the strand ([`lod::unsimplify`]).
     #[inline(always)]
-    fn prim_level(&self, ids: &[u32], lane: usize, widen: Widen) -> (u32, u32) {
+    fn hit_on(&self, s: &StrandSet, ids: &[u32], lane: usize, along: f32, widen: Widen) -> (u32, f32, u32) {
         match widen {
-            None => (ids[lane], 0),
-            Some(_) => (self.prim[lane], self.level[lane]),
+            None => (ids[lane], along, 0),
+            Some(_) if self.paired[lane] => {
+                let (prim, along) = lod::unsimplify(&s.points, self.prim[lane], along);
+                (prim, along, self.level[lane])
+            }
+            Some(_) => (self.prim[lane], along, self.level[lane]),
         }
     }
 
@@ -472,8 +493,14 @@ impl Lanes4 {
 /// empty (no surface).
 #[inline(always)]
 fn gather4(s: &StrandSet, ids: &[u32], skipped: impl Fn(u32) -> bool, widen: Widen) -> Lanes4 {
-    let mut lanes =
-        Lanes4 { p0: [f32x4::ZERO; 4], p1: [f32x4::ZERO; 4], prim: [0; 4], level: [0; 4], cut: [f32::INFINITY; 4] };
+    let mut lanes = Lanes4 {
+        p0: [f32x4::ZERO; 4],
+        p1: [f32x4::ZERO; 4],
+        prim: [0; 4],
+        level: [0; 4],
+        cut: [f32::INFINITY; 4],
+        paired: [false; 4],
+    };
     for (lane, &id) in ids.iter().enumerate() {
         match widen {
             None => {
@@ -488,11 +515,12 @@ fn gather4(s: &StrandSet, ids: &[u32], skipped: impl Fn(u32) -> bool, widen: Wid
                 if skipped(p) {
                     continue;
                 }
-                let (a, b) = (s.points[p as usize], s.points[p as usize + 1]);
-                if let Some((scale, level, cut)) = view.segment(a, b, group) {
+                let Some(end) = view.segment_end(&s.points, p, group) else { continue };
+                let (a, b) = (s.points[p as usize], s.points[end as usize]);
+                if let Some((scale, level, cut)) = view.segment(p, a, b, group) {
                     lanes.p0[lane] = f32x4::new([a[0], a[1], a[2], a[3] * scale]);
                     lanes.p1[lane] = f32x4::new([b[0], b[1], b[2], b[3] * scale]);
-                    (lanes.level[lane], lanes.cut[lane]) = (level, cut);
+                    (lanes.level[lane], lanes.cut[lane], lanes.paired[lane]) = (level, cut, end > p + 1);
                 }
             }
         }

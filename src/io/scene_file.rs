@@ -415,6 +415,7 @@ struct LodToml {
     contrast: Option<bool>,
     start: Option<f32>,
     spread: Option<f32>,
+    simplify: Option<u32>,
 }
 
 impl LodToml {
@@ -427,6 +428,7 @@ impl LodToml {
             contrast: self.contrast.unwrap_or(d.contrast),
             start: self.start.unwrap_or(d.start),
             spread: self.spread.unwrap_or(d.spread),
+            simplify: self.simplify.unwrap_or(d.simplify),
         };
         p.validate()?;
         Ok(p)

@@ -173,23 +173,33 @@ pub(super) fn trace_with(
         world.lights.iter().filter_map(|l| l.emitted(ray.origin, ray.dir, tmax)).min_by(|a, b| a.0.total_cmp(&b.0))
     };
     let emitted = |c: Color| if see_emitters { c } else { Color::ZERO };
-    if !world.accel.has_transparency() {
-        let hit = world.accel.intersect(ray);
-        if let Some((_, radiance)) = seen_light(hit.map_or(ray.tmax, |h| h.t)) {
-            return (emitted(radiance), None);
+    let tail = world
+        .accel
+        .has_transparency()
+        .then(|| StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 });
+    // One closest-hit traversal first: when the nearest hit is opaque (a surface, fur at
+    // full detail) the blend below would be that hit alone; only a semi-transparent
+    // nearest hit needs the layers. Level of detail draws most fur opaque, so most rays
+    // pay no multi-hit query (16 spp on scenes/lod_field.toml: 3.1 CPU s instead of 3.8).
+    let hit = world.accel.intersect(ray);
+    let tail = match tail {
+        Some(tail) if hit.is_some_and(|h| world.accel.hit_opacity(&h) < 1.0) => tail,
+        _ => {
+            if let Some((_, radiance)) = seen_light(hit.map_or(ray.tmax, |h| h.t)) {
+                return (emitted(radiance), None);
+            }
+            let Some(hit) = hit else {
+                return (emitted(world.background), None);
+            };
+            let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect, None);
+            return (color, Some(first));
         }
-        let Some(hit) = hit else {
-            return (emitted(world.background), None);
-        };
-        let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect, None);
-        return (color, Some(first));
-    }
+    };
     let k = world.settings.transparency_layers as usize;
     let (mut layers, mut seen) = (Vec::with_capacity(k), Vec::new());
     // `transmitted`: the light passing every layer so far; `carried`: the weight of what
     // is shaded next (equal to it while blending, frozen once the tail is walked).
     let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, 0.0);
-    let tail = StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 };
     let mut shadows = SharedShadows::new(world.lights.len(), sampler);
     let color = 'layers: loop {
         world.accel.intersect_k(ray, tmin, k, &seen, Some(tail), &mut layers);

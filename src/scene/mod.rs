@@ -583,7 +583,11 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     // The global switch drops every strand set's level of detail.
     let lod = |p: Option<LodParams>| p.filter(|_| desc.settings.lod);
-    let accel = Accel::build_with_lod(shapes.into_iter().zip(lods).map(|((s, m), l)| (s, m, lod(l))).collect());
+    let lod_camera = crate::accel::lod::LodCamera { eye: c.eye, pixel_spread: camera.pixel_spread() };
+    let accel = Accel::build_with_lod_for(
+        shapes.into_iter().zip(lods).map(|((s, m), l)| (s, m, lod(l))).collect(),
+        Some(lod_camera),
+    );
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = desc.lights.iter().map(Light::background).sum();
