@@ -185,6 +185,12 @@ impl Accel {
         self.objects.iter().any(is_partial)
     }
 
+    /// True when some strand set has per-point opacity of its own (transparency that does
+    /// not come from level of detail alone).
+    pub fn has_strand_opacity(&self) -> bool {
+        self.objects.iter().any(|o| matches!(&o.shape, Shape::Strands(s) if s.opacity.is_some()))
+    }
+
     /// Opacity at a hit of [`Accel::intersect`]: 1 on meshes and opaque strands, else the
     /// strand's opacity there times that of its level of detail.
     pub fn hit_opacity(&self, hit: &Hit) -> f32 {
