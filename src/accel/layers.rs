@@ -7,7 +7,7 @@
 //! traversal.
 
 use super::lod::Widen;
-use super::{gather4, Accel, Hit, HitKind, Object, Shape, Skip};
+use super::{for_each_group, Accel, Hit, HitKind, Object, Shape, Skip};
 use crate::geometry::{segment, triangle, StrandSet};
 use crate::math::rng::{hash_combine, unit_float};
 use crate::math::{Ray, RayCone};
@@ -90,29 +90,36 @@ fn strand_hits(
     widen: Widen,
     mut found: impl FnMut(u32, f32, HitKind, u32) -> bool,
 ) -> bool {
-    for chunk in prims.chunks(4) {
-        let lanes = gather4(s, chunk, &skipped, widen);
-        let mut hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, lanes.p0, lanes.p1);
-        lanes.drop_hidden(&mut hits, widen);
-        let mut mask = hits.mask;
-        let (t, along) = (hits.t(), hits.s());
-        while mask != 0 {
-            let lane = mask.trailing_zeros() as usize;
-            mask &= mask - 1;
-            if !normals {
-                let (prim, along, level) = lanes.hit_on(s, chunk, lane, along[lane], widen);
-                if found(prim, t[lane], HitKind::Segment { s: along, normal: Vec3::ZERO }, level) {
-                    return true;
-                }
-            } else if let Some(h) = hits.hit(lane) {
-                let (prim, along, level) = lanes.hit_on(s, chunk, lane, h.s, widen);
-                if found(prim, h.t, HitKind::Segment { s: along, normal: h.normal }, level) {
-                    return true;
+    for_each_group(
+        s,
+        prims,
+        (origin, dir),
+        skipped,
+        widen,
+        #[inline(always)]
+        |ids, lanes| {
+            let mut hits = segment::intersect_cylinder4(origin, dir, tmin, tmax, lanes.p0, lanes.p1);
+            lanes.drop_hidden(&mut hits, widen);
+            let mut mask = hits.mask;
+            let (t, along) = (hits.t(), hits.s());
+            while mask != 0 {
+                let lane = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                if !normals {
+                    let (prim, along, level) = lanes.hit_on(s, ids, lane, along[lane], widen);
+                    if found(prim, t[lane], HitKind::Segment { s: along, normal: Vec3::ZERO }, level) {
+                        return true;
+                    }
+                } else if let Some(h) = hits.hit(lane) {
+                    let (prim, along, level) = lanes.hit_on(s, ids, lane, h.s, widen);
+                    if found(prim, h.t, HitKind::Segment { s: along, normal: h.normal }, level) {
+                        return true;
+                    }
                 }
             }
-        }
-    }
-    false
+            false
+        },
+    )
 }
 
 /// True when rays may see through some of the object's primitives: strands with per-point

@@ -370,41 +370,56 @@ fn strand_leaf(
     widen: Widen,
 ) -> Option<(u32, f32, HitKind, u32)> {
     let mut best = None;
-    let ray = (origin, dir);
-    match widen {
-        // At full detail the whole leaf is culled in one pass and only the segments the ray
-        // passes near (two in a hundred) are gathered for the exact test, in leaf order.
-        None => {
-            'leaf: for leaf in prims.chunks(8) {
-                let mut near = segment::near8(origin, dir, &s.points, leaf);
-                while near != 0 {
-                    let mut ids = [0; 4];
-                    let mut n = 0;
-                    while near != 0 && n < 4 {
-                        let id = leaf[near.trailing_zeros() as usize];
-                        near &= near - 1;
-                        if !skipped(id) {
-                            ids[n] = id;
-                            n += 1;
-                        }
-                    }
-                    let ids = &ids[..n];
-                    if n > 0 && exact4(s, ray, ids, &gather4(s, ids, |_| false, None), any, None, &mut tmax, &mut best)
-                    {
-                        break 'leaf;
-                    }
+    for_each_group(
+        s,
+        prims,
+        (origin, dir),
+        skipped,
+        widen,
+        #[inline(always)]
+        |ids, lanes| exact4(s, (origin, dir), ids, lanes, any, widen, &mut tmax, &mut best),
+    );
+    best
+}
+
+/// Calls `test(ids, lanes)` on a leaf's segments (its item ids `prims`, minus the
+/// `skipped` ones) in groups of up to four lanes of [`segment::intersect_cylinder4`], until
+/// it returns true; returns whether it did. At full detail (`widen` is `None`) the whole
+/// leaf is first culled in one pass ([`segment::near8`]) and only the segments the ray
+/// passes near (two in a hundred) are gathered, in leaf order; with level of detail every
+/// segment is gathered, its radius widened for the ray.
+#[inline(always)]
+fn for_each_group(
+    s: &StrandSet,
+    prims: &[u32],
+    (origin, dir): (Vec3, Vec3),
+    skipped: impl Fn(u32) -> bool,
+    widen: Widen,
+    mut test: impl FnMut(&[u32], &Lanes4) -> bool,
+) -> bool {
+    if widen.is_some() {
+        return prims.chunks(4).any(|chunk| test(chunk, &gather4(s, chunk, &skipped, widen)));
+    }
+    for leaf in prims.chunks(8) {
+        let mut near = segment::near8(origin, dir, &s.points, leaf);
+        while near != 0 {
+            let mut ids = [0; 4];
+            let mut n = 0;
+            while near != 0 && n < 4 {
+                let id = leaf[near.trailing_zeros() as usize];
+                near &= near - 1;
+                if !skipped(id) {
+                    ids[n] = id;
+                    n += 1;
                 }
             }
-        }
-        Some(_) => {
-            for chunk in prims.chunks(4) {
-                if exact4(s, ray, chunk, &gather4(s, chunk, &skipped, widen), any, widen, &mut tmax, &mut best) {
-                    break;
-                }
+            let ids = &ids[..n];
+            if n > 0 && test(ids, &gather4(s, ids, |_| false, None)) {
+                return true;
             }
         }
     }
-    best
+    false
 }
 
 /// The exact test of up to four segments (`lanes`, gathered from the item ids `ids` of `s`) for
