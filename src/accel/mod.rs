@@ -386,8 +386,9 @@ fn strand_leaf(
 /// `skipped` ones) in groups of up to four lanes of [`segment::intersect_cylinder4`], until
 /// it returns true; returns whether it did. At full detail (`widen` is `None`) the whole
 /// leaf is first culled in one pass ([`segment::near8`]) and only the segments the ray
-/// passes near (two in a hundred) are gathered, in leaf order; with level of detail every
-/// segment is gathered, its radius widened for the ray.
+/// passes near are gathered, in leaf order (on the hairy torus one in twenty for camera
+/// rays, one in eleven for shadow rays); with level of detail every segment is gathered,
+/// its radius widened for the ray.
 #[inline(always)]
 fn for_each_group(
     s: &StrandSet,
