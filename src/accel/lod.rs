@@ -196,6 +196,8 @@ pub struct StrandLod {
     thresholds: [f32; MAX_LEVELS],
     /// Radius factor per level, spread included.
     scales: [f32; MAX_LEVELS],
+    /// The largest of `scales` up to each level.
+    widest: [f32; MAX_LEVELS],
     /// Opacity factor per level: `1 / spread_at(level)`.
     opacities: [f32; MAX_LEVELS],
     /// `d^jitter` for each of the [`JITTER_STEPS`] jitter values: a footprint times it
@@ -283,6 +285,13 @@ impl LodView<'_> {
         Some((scale, level as u32, cut))
     }
 
+    /// The BVH leaf with tag `tag` ([`StrandLod::items`]) as the ray sees it.
+    #[inline(always)]
+    pub(crate) fn leaf(&self, tag: u8) -> LodLeaf<'_> {
+        let widest = self.lod.pairs.is_empty().then(|| self.lod.widest[tag as usize % MAX_LEVELS]);
+        LodLeaf { view: self, widest }
+    }
+
     /// The point the segment from `first`, of group `group`, is drawn to: `first + 1`, or
     /// `first + 2` where the ray sees its pair at a simplified level
     /// ([`LodParams::simplify`]); `None` where the pair's first segment stands for it. Both
@@ -333,8 +342,20 @@ pub(crate) fn unsimplify(points: &[[f32; 4]], first: u32, s: f32) -> (u32, f32) 
     }
 }
 
+/// A BVH leaf of a strand set as one ray sees it with level of detail.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LodLeaf<'a> {
+    /// The strand set as the ray sees it.
+    pub(crate) view: &'a LodView<'a>,
+    /// The widest radius factor any of the leaf's segments is drawn with (from the leaf's
+    /// BVH tag, [`StrandLod::items`]), for the cheap 8-wide cull
+    /// ([`segment::near8`]); `None` where coarse levels draw chords of segment pairs, which
+    /// that cull does not bound.
+    pub(crate) widest: Option<f32>,
+}
+
 /// How a leaf's segments are seen for a ray's level of detail: `None` at full detail.
-pub(crate) type Widen<'a> = Option<&'a LodView<'a>>;
+pub(crate) type Widen<'a> = Option<&'a LodLeaf<'a>>;
 
 /// The jitter step of the segment from point `first`: a hash, so neighbouring segments
 /// and strands switch levels at different distances.
@@ -370,6 +391,10 @@ impl StrandLod {
             scales[l] = params.radius_scale(l as u32) * spread;
             opacities[l] = 1.0 / spread;
         }
+        let mut widest = scales;
+        for l in 1..MAX_LEVELS {
+            widest[l] = widest[l].max(widest[l - 1]);
+        }
         let mut pairs = Vec::new();
         if params.simplify > 0 && params.simplify < params.levels {
             pairs = vec![0u64; strands.points.len().div_ceil(64)];
@@ -393,6 +418,7 @@ impl StrandLod {
             groups_of,
             thresholds,
             scales,
+            widest,
             opacities,
             jitter_factors,
             mean_color,
@@ -414,7 +440,8 @@ impl StrandLod {
 
     /// The BVH items of `strands` (the set this was built for): every segment, its id
     /// carrying its group, bounded at the radius its group's level gives it (and, for the
-    /// first segment of a pair that can be simplified, around its pair's chord too).
+    /// first segment of a pair that can be simplified, around its pair's chord too), tagged
+    /// with the level of that radius ([`LodView::leaf`]).
     pub fn items(&self, strands: &StrandSet) -> Vec<BuildItem> {
         let mut items = Vec::with_capacity(strands.segment_count());
         let eye = self.camera_eye();
@@ -431,7 +458,9 @@ impl StrandLod {
                 let ceiling = self.camera_level(points[i as usize], points[end as usize], jitter, farthest);
                 let ceiling =
                     ceiling.max(self.camera_level(points[i as usize], points[i as usize + 1], jitter, farthest));
-                let scale = self.scales[group.min(ceiling)];
+                // The level of that radius: the item's tag (`LodView::leaf`).
+                let tag = group.min(ceiling);
+                let scale = self.scales[tag];
                 let widen = |i: u32| {
                     let p = points[i as usize];
                     [p[0], p[1], p[2], p[3] * scale * (1.0 + 1e-5)]
@@ -442,7 +471,7 @@ impl StrandLod {
                     let (min, max) = segment::bounds(widen(i), widen(i + 2));
                     bounds = bounds.union(Aabb::new(min, max));
                 }
-                items.push(BuildItem { bounds, id: self.item_id(i, group as u8) });
+                items.push(BuildItem { bounds, id: self.item_id(i, group as u8), tag: tag as u8 });
             }
         }
         items

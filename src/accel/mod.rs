@@ -14,7 +14,7 @@ use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray, RayCone};
 use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
-use lod::{LodCamera, LodParams, LodRay, StrandLod, Widen};
+use lod::{LodCamera, LodLeaf, LodParams, LodRay, StrandLod, Widen};
 use rayon::prelude::*;
 use wide::f32x4;
 
@@ -104,14 +104,14 @@ impl Object {
         // Branch once per object: without level of detail, `widen` is a constant `None`
         // in the inlined leaf test, which is then the plain one.
         match &self.lod {
-            None => self.bvh.traverse(test, tmax, |prims, t| {
+            None => self.bvh.traverse::<false>(test, tmax, |prims, _, t| {
                 stop = leaf(prims, None, t);
                 stop
             }),
             Some(lod) => {
                 let view = lod.view(ray);
-                self.bvh.traverse(test, tmax, |prims, t| {
-                    stop = leaf(prims, Some(&view), t);
+                self.bvh.traverse::<true>(test, tmax, |prims, tag, t| {
+                    stop = leaf(prims, Some(&view.leaf(tag)), t);
                     stop
                 })
             }
@@ -225,9 +225,8 @@ impl Accel {
                 Object { shape, material, bvh, lod }
             })
             .collect();
-        let top = Bvh::build(
-            objects.iter().enumerate().map(|(i, o)| BuildItem { bounds: o.bvh.bounds(), id: i as u32 }).collect(),
-        );
+        let top =
+            Bvh::build(objects.iter().enumerate().map(|(i, o)| BuildItem::new(o.bvh.bounds(), i as u32)).collect());
         Accel { objects, top }
     }
 
@@ -285,7 +284,7 @@ impl Accel {
         let test = RayBoxTest::new(origin, dir);
         let lod_ray = LodRay::new(origin, dir, cone);
         let mut stopped = false;
-        self.top.traverse(&test, tmax, |objects, t| {
+        self.top.traverse::<false>(&test, tmax, |objects, _, t| {
             for &object in objects {
                 let o = &self.objects[object as usize];
                 if o.traverse(&test, &lod_ray, t, |prims, widen, t| leaf(object, o, prims, widen, t)) {
@@ -304,7 +303,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
         Shape::Mesh(m) => (0..m.indices.len() as u32)
             .map(|i| {
                 let [a, b, c] = m.corners(i);
-                BuildItem { bounds: Aabb::new(a.min(b).min(c), a.max(b).max(c)), id: i }
+                BuildItem::new(Aabb::new(a.min(b).min(c), a.max(b).max(c)), i)
             })
             .collect(),
         Shape::Strands(s) => s
@@ -312,7 +311,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
             .into_iter()
             .map(|i| {
                 let (min, max) = segment::bounds(s.points[i as usize], s.points[i as usize + 1]);
-                BuildItem { bounds: Aabb::new(min, max), id: i }
+                BuildItem::new(Aabb::new(min, max), i)
             })
             .collect(),
     }
@@ -384,11 +383,11 @@ fn strand_leaf(
 
 /// Calls `test(ids, lanes)` on a leaf's segments (its item ids `prims`, minus the
 /// `skipped` ones) in groups of up to four lanes of [`segment::intersect_cylinder4`], until
-/// it returns true; returns whether it did. At full detail (`widen` is `None`) the whole
-/// leaf is first culled in one pass ([`segment::near8`]) and only the segments the ray
-/// passes near are gathered, in leaf order (on the hairy torus one in twenty for camera
-/// rays, one in eleven for shadow rays); with level of detail every segment is gathered,
-/// its radius widened for the ray.
+/// it returns true; returns whether it did. The whole leaf is first culled in one pass
+/// ([`segment::near8`]), radii widened as far as the leaf's widest level of detail, and
+/// only the segments the ray passes near are gathered, in leaf order (on the hairy torus
+/// one in twenty for camera rays, one in eleven for shadow rays), their radii widened for
+/// the ray. Only levels that draw chords of segment pairs skip the cull.
 #[inline(always)]
 fn for_each_group(
     s: &StrandSet,
@@ -398,24 +397,36 @@ fn for_each_group(
     widen: Widen,
     mut test: impl FnMut(&[u32], &Lanes4) -> bool,
 ) -> bool {
-    if widen.is_some() {
-        return prims.chunks(4).any(|chunk| test(chunk, &gather4(s, chunk, &skipped, widen)));
-    }
+    let widest = match widen {
+        None => 1.0,
+        Some(LodLeaf { widest: Some(w), .. }) => *w,
+        Some(_) => return prims.chunks(4).any(|chunk| test(chunk, &gather4(s, chunk, &skipped, widen))),
+    };
     for leaf in prims.chunks(8) {
-        let mut near = segment::near8(origin, dir, &s.points, leaf);
+        // The segments' first points: the item ids themselves at full detail.
+        let mut decoded = [0; 8];
+        let firsts = match widen {
+            None => leaf,
+            Some(l) => {
+                leaf.iter().zip(&mut decoded).for_each(|(&id, first)| *first = l.view.decode(id).0);
+                &decoded[..leaf.len()]
+            }
+        };
+        let mut near = segment::near8(origin, dir, &s.points, firsts, widest);
         while near != 0 {
             let mut ids = [0; 4];
             let mut n = 0;
             while near != 0 && n < 4 {
-                let id = leaf[near.trailing_zeros() as usize];
+                let lane = near.trailing_zeros() as usize;
+                let id = leaf[lane];
                 near &= near - 1;
-                if !skipped(id) {
+                if !skipped(firsts[lane]) {
                     ids[n] = id;
                     n += 1;
                 }
             }
             let ids = &ids[..n];
-            if n > 0 && test(ids, &gather4(s, ids, |_| false, None)) {
+            if n > 0 && test(ids, &gather4(s, ids, |_| false, widen)) {
                 return true;
             }
         }
@@ -525,7 +536,7 @@ fn gather4(s: &StrandSet, ids: &[u32], skipped: impl Fn(u32) -> bool, widen: Wid
                     lanes.p1[lane] = f32x4::new(s.points[id as usize + 1]);
                 }
             }
-            Some(view) => {
+            Some(LodLeaf { view, .. }) => {
                 let (p, group) = view.decode(id);
                 lanes.prim[lane] = p;
                 if skipped(p) {

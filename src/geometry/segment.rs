@@ -133,26 +133,29 @@ pub fn intersect_cylinder4(origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, p0: [f
 
 /// Which of up to eight segments of `points` the ray line may pass near enough to hit: bit
 /// `i` is set when segment `i`, joining `points[firsts[i]]` and `points[firsts[i] + 1]`,
-/// survives the cheap bound of [`intersect_cylinder4`] (the first stage of its test, the same
-/// arithmetic, the same result). A BVH leaf's segments are culled in one 8-wide pass on x86-64
+/// its radii multiplied by `radius_scale`, survives the cheap bound of
+/// [`intersect_cylinder4`] (the first stage of its test, the same arithmetic, the same
+/// result). Level of detail passes the widest factor any of the segments is drawn with: the
+/// bound only grows with the radius, so no segment it clears could be hit wider. A BVH leaf's segments are culled in one 8-wide pass on x86-64
 /// CPUs with AVX2 (detected at run time), two 4-wide passes elsewhere; only the few
 /// survivors go on to the exact test. A cleared bit means the exact test would not hit.
 ///
 /// Panics if `firsts` holds more than eight segments or one whose points are out of bounds.
 #[inline]
-pub fn near8(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32]) -> u32 {
+pub fn near8(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32], radius_scale: f32) -> u32 {
     assert!(firsts.len() <= 8, "near8 takes at most eight segments");
     #[cfg(target_arch = "x86_64")]
     if std::is_x86_feature_detected!("avx2") {
         // SAFETY: the CPU has the features `near8_avx2` is compiled for.
-        return unsafe { near8_avx2(origin, dir, points, firsts) };
+        return unsafe { near8_avx2(origin, dir, points, firsts, radius_scale) };
     }
     let mut near = 0;
     for (half, group) in firsts.chunks(4).enumerate() {
         let (mut p0, mut p1) = ([f32x4::ZERO; 4], [f32x4::ZERO; 4]);
+        let scaled = |[x, y, z, r]: [f32; 4]| f32x4::new([x, y, z, r * radius_scale]);
         for (lane, &first) in group.iter().enumerate() {
-            p0[lane] = f32x4::new(points[first as usize]);
-            p1[lane] = f32x4::new(points[first as usize + 1]);
+            p0[lane] = scaled(points[first as usize]);
+            p1[lane] = scaled(points[first as usize + 1]);
         }
         near |= (Candidates::new(origin, dir, p0, p1).near().to_bitmask() & 0xf) << (4 * half);
     }
@@ -163,7 +166,7 @@ pub fn near8(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32]) -> u3
 /// for operation (no fused multiply-adds), so both give the same bits.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn near8_avx2(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32]) -> u32 {
+fn near8_avx2(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32], radius_scale: f32) -> u32 {
     use std::arch::x86_64::*;
     // Straight-line code, no helper closures: those would be compiled without AVX2 and called.
     // Both end points of each segment; all zeros (no surface) past the last segment.
@@ -188,6 +191,7 @@ fn near8_avx2(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32]) -> u
         ];
     }
     let [[x0, y0, z0, r0], [x1, y1, z1, r1]] = soa;
+    let (r0, r1) = (_mm256_mul_ps(r0, _mm256_set1_ps(radius_scale)), _mm256_mul_ps(r1, _mm256_set1_ps(radius_scale)));
     let zero = _mm256_setzero_ps();
     let sign = _mm256_set1_ps(-0.0);
     let valid = _mm256_and_ps(
@@ -1089,8 +1093,9 @@ mod tests {
     #[test]
     fn near8_gives_the_bits_of_the_four_wide_bound() {
         // Leaves of one to eight segments, some degenerate (zero length, zero or NaN radius)
-        // and some far, against rays from near and far: near8's one 8-wide pass (AVX2 on
-        // this machine) must keep exactly the lanes `Candidates` keeps, four at a time.
+        // and some far, against rays from near and far, radii widened by a random factor
+        // half of the time: near8's one 8-wide pass (AVX2 on this machine) must keep exactly
+        // the lanes `Candidates` keeps on the widened segments, four at a time.
         let mut rng = Lcg(11);
         let mut kept = 0;
         for _ in 0..20_000 {
@@ -1110,15 +1115,17 @@ mod tests {
             let target = p0_vec(points[0]) + rng.unit() * scale * 0.02;
             let o = target + rng.unit() * scale * 10f32.powf(rng.range(-1.0, 2.0));
             let d = (target - o).normalize();
+            let widen = if rng.f() < 0.5 { 1.0 } else { 10f32.powf(rng.range(0.0, 1.5)) };
+            let widened = |[x, y, z, r]: [f32; 4]| f32x4::new([x, y, z, r * widen]);
             let mut expected = 0;
             for (half, group) in firsts.chunks(4).enumerate() {
                 let (mut p0, mut p1) = ([f32x4::ZERO; 4], [f32x4::ZERO; 4]);
                 for (lane, &f) in group.iter().enumerate() {
-                    (p0[lane], p1[lane]) = (f32x4::new(points[f as usize]), f32x4::new(points[f as usize + 1]));
+                    (p0[lane], p1[lane]) = (widened(points[f as usize]), widened(points[f as usize + 1]));
                 }
                 expected |= (Candidates::new(o, d, p0, p1).near().to_bitmask() & 0xf) << (4 * half);
             }
-            assert_eq!(near8(o, d, &points, &firsts), expected, "o {o:?} d {d:?} {points:?}");
+            assert_eq!(near8(o, d, &points, &firsts, widen), expected, "o {o:?} d {d:?} {points:?} x{widen}");
             kept += expected.count_ones();
         }
         assert!(kept > 1000, "too few segments near the rays to test anything: {kept}");
