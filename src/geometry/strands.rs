@@ -271,8 +271,9 @@ impl StrandSet {
     /// Stores the strands along a Morton (Z-order) curve through the centres of their
     /// bounding boxes (Morton 1966; the order Karras 2012, "Maximizing Parallelism in the
     /// Construction of BVHs, Octrees, and k-d Trees", section 4, sorts BVH primitives in),
-    /// so strands near in space lie near in memory and a BVH leaf's segments share cache
-    /// lines. Points, colours, opacities and strand info move with their strands;
+    /// so strands near in space lie near in memory: the points a BVH leaf or a bundle of
+    /// rays reads share pages and prefetched lines (docs/performance.md, "Strands in
+    /// spatial order"). Points, colours, opacities and strand info move with their strands;
     /// [`StrandSet::file_order`] keeps each strand's file index. The order depends on the
     /// strands alone (ties broken by file index): the same for any thread count, and a
     /// second reorder changes nothing.
