@@ -28,7 +28,8 @@ const SHADOW_EPS: f32 = 2e-5;
 pub struct Memory {
     /// Hair segments.
     pub segments: u64,
-    /// Strand points and offsets (and colours, when present).
+    /// Strand points and offsets (and colours, when present, and the file's index of each
+    /// strand when the set is stored in spatial order).
     pub strand_points: u64,
     /// Strand BVHs: nodes and segment ids.
     pub strand_bvh: u64,

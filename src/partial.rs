@@ -161,6 +161,8 @@ pub fn fingerprint(world: &World) -> u64 {
                 floats(&mut h, &mut s.colors.iter().flatten().flatten().copied());
                 floats(&mut h, &mut s.opacity.iter().flatten().copied());
                 format!("{:?}", s.strand_info).hash(&mut h);
+                // Which file strand each stored one is: per-strand random values follow it.
+                s.file_order.hash(&mut h);
             }
             #[allow(unreachable_patterns)]
             other => format!("{other:?}").hash(&mut h),

@@ -24,7 +24,8 @@ pub struct Pixel {
     pub normal: Vec3,
     /// Object index at that hit, -1 when none.
     pub object_id: f32,
-    /// Strand index at that hit when it is hair, -1 otherwise.
+    /// Strand index at that hit when it is hair (as its file or generator numbers it,
+    /// whatever order the set is stored in), -1 otherwise.
     pub strand_id: f32,
     /// Position along that strand, 0 at the root and 1 at the tip; -1 when not hair.
     pub strand_along: f32,

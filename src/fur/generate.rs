@@ -537,6 +537,7 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
             root_uv: extra.iter().map(|e| e.uv).collect(),
             clump: extra.iter().map(|e| e.clump).collect(),
         }),
+        file_order: None,
     };
     Ok(GrownFur { strands, shading })
 }

@@ -286,7 +286,7 @@ pub fn parse_hair(bytes: &[u8], path: &Path) -> Result<StrandSet, LoadError> {
         None
     };
 
-    Ok(StrandSet { points, offsets, colors, opacity, strand_info: None })
+    Ok(StrandSet { points, offsets, colors, opacity, strand_info: None, file_order: None })
 }
 
 /// What a `.hair` file's header says the file holds, for estimates made before reading it.

@@ -454,8 +454,7 @@ pub(super) fn surface_at(object: &Object, hit: &Hit, ray: &Ray) -> Surface {
             // relative to the segment's coordinates, not to the ray's length.
             let p = axis_point + normal * radius;
             // One search for the strand serves the tangent, shading and the AOVs.
-            let at = strands.strand_point(hit.prim, s);
-            let tangent = strands.tangent_on(hit.prim, s, at.strand);
+            let (at, tangent) = strands.hit_point(hit.prim, s);
             let sp = ShadingPoint {
                 p,
                 normal,

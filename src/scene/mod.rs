@@ -585,7 +585,7 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let lod = |p: Option<LodParams>| p.filter(|_| desc.settings.lod);
     let lod_camera = crate::accel::lod::LodCamera { eye: c.eye, pixel_spread: camera.pixel_spread() };
     let accel = Accel::build_with_lod_for(
-        shapes.into_iter().zip(lods).map(|((s, m), l)| (s, m, lod(l))).collect(),
+        shapes.into_iter().zip(lods).map(|((s, m), l)| (in_spatial_order(s, lod(l)), m, lod(l))).collect(),
         Some(lod_camera),
     );
     let build = start.elapsed();
@@ -601,6 +601,21 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
         warnings,
     };
     Ok((world, PrepareTimes { load, build, build_cpu }))
+}
+
+/// A shape as the acceleration structure stores it: a strand set along a Morton curve
+/// ([`StrandSet::reorder_spatially`]) for the memory locality of its BVH leaves, unless
+/// rendering it hashes point indices, which the reorder changes: with level of detail
+/// (segment jitter) or per-point opacity (stochastic transparency draws), it keeps the
+/// file's order so that every image stays the same.
+fn in_spatial_order(shape: Shape, lod: Option<LodParams>) -> Shape {
+    match shape {
+        Shape::Strands(mut s) if lod.is_none() && s.opacity.is_none() => {
+            s.reorder_spatially();
+            Shape::Strands(s)
+        }
+        shape => shape,
+    }
 }
 
 #[cfg(test)]
@@ -630,5 +645,100 @@ mod tests {
         assert_eq!(a[0].strand_count(), 300);
         assert_eq!(a, b);
         assert_eq!(crate::partial::fingerprint(&copied), crate::partial::fingerprint(&moved));
+    }
+
+    /// A hair system (per-strand root UV and clump, per-strand random diffuse colour) and
+    /// opaque fur (per-strand mapped material arrays) on a torus: strand sets that
+    /// `prepare` stores in Morton order.
+    const STRAND_SCENE: &str = r#"
+[camera]
+eye = [0.0, 1.9, 3.7]
+target = [0.0, -0.15, 0.0]
+[render]
+resolution = [96, 72]
+spp = 2
+[[light]]
+type = "distant"
+direction = [0.45, 0.8, 0.4]
+irradiance = [3.0, 3.0, 3.0]
+[[light]]
+type = "environment"
+radiance = [0.15, 0.15, 0.15]
+[[mesh]]
+shape = { type = "torus", major = 1.0, minor = 0.35 }
+material = { type = "diffuse", color = [0.3, 0.22, 0.15] }
+[[hair_system]]
+follicles = { mesh = 1, placement = "grid", u = 40, v = 12, randomization = 0.7, points_per_hair = 6, length = 0.3 }
+seed = 1
+hairs_per_clump = 6
+clump_width = 0.09
+hair_width = 0.004
+hair_color = [0.35, 0.2, 0.1]
+diffuse_rand = 0.5
+[[fur]]
+mesh = 1
+preset = "Squirrel"
+density = 3000
+tip_opacity = 1.0
+seed = 3
+"#;
+
+    #[test]
+    fn strands_in_spatial_order_give_the_hits_strand_ids_and_image_of_file_order() {
+        let desc = crate::io::scene_file::parse_scene(STRAND_SCENE, std::path::Path::new("order.toml")).unwrap();
+        let (world, _) = prepare(&desc).unwrap();
+        // The same scene with its strands in the file's order.
+        let geometry = load_geometry(&desc).unwrap();
+        let file = World {
+            camera: world.camera.clone(),
+            settings: world.settings.clone(),
+            lights: world.lights.clone(),
+            materials: geometry.materials,
+            accel: Accel::build(geometry.shapes),
+            background: world.background,
+            warnings: Vec::new(),
+        };
+        let strands = |w: &World| -> Vec<StrandSet> {
+            w.accel
+                .objects
+                .iter()
+                .filter_map(|o| match &o.shape {
+                    Shape::Strands(s) => Some(s.clone()),
+                    Shape::Mesh(_) => None,
+                })
+                .collect()
+        };
+        let (moved, kept) = (strands(&world), strands(&file));
+        assert_eq!(moved.len(), 2);
+        for (m, k) in moved.iter().zip(&kept) {
+            assert!(k.file_order.is_none());
+            let order = m.file_order.as_ref().expect("an opaque set without level of detail is reordered");
+            assert!(order.windows(2).any(|w| w[0] > w[1]), "the order changed");
+            assert_eq!(m.strand_count(), k.strand_count());
+        }
+        // Every camera ray's hit: same distance and normal, same strand by its file index,
+        // same place along it; hit segments are the same points of that strand.
+        let (w, h) = (world.settings.width, world.settings.height);
+        let mut strand_hits = 0;
+        for y in 0..h {
+            for x in 0..w {
+                let ray = world.camera.ray(x as f32 + 0.5, y as f32 + 0.5);
+                let (a, b) = (world.accel.intersect(&ray), file.accel.intersect(&ray));
+                assert_eq!(a.map(|h| (h.t, h.object, h.kind)), b.map(|h| (h.t, h.object, h.kind)), "pixel {x}, {y}");
+                let (Some(a), Some(b)) = (a, b) else { continue };
+                if let (Shape::Strands(m), Shape::Strands(k)) =
+                    (&world.accel.objects[a.object as usize].shape, &file.accel.objects[b.object as usize].shape)
+                {
+                    assert_eq!(m.hit_point(a.prim, 0.3), k.hit_point(b.prim, 0.3));
+                    assert_eq!(m.points[a.prim as usize], k.points[b.prim as usize]);
+                    strand_hits += 1;
+                }
+            }
+        }
+        assert!(strand_hits > (w * h / 5) as usize, "the test needs strand hits: {strand_hits}");
+        // The image and every AOV (strandId, strand random, root UV, clump) bit for bit.
+        let (a, b) = (crate::render::render(&world, None).0, crate::render::render(&file, None).0);
+        assert!(a == b, "the reordered scene renders another image");
+        assert!(a.pixels.iter().any(|p| p.strand_id >= 0.0 && p.clump_id >= 0.0 && p.root_uv[0] >= 0.0));
     }
 }
