@@ -68,15 +68,20 @@ pub struct Bvh {
 pub struct RayBoxTest {
     origin: Vec3,
     inv_dir: Vec3,
+    /// Boxes the ray leaves before this distance are not entered.
+    tmin: f32,
 }
 
 impl RayBoxTest {
     /// Precomputes the reciprocal direction. Zero components are replaced by a tiny value
     /// of the same sign, so no test multiplies zero by infinity (Embree does the same).
+    /// Boxes are entered only where the ray is beyond `tmin` (0 for a whole ray; a query
+    /// that continues past hits it already has starts there).
     #[inline]
-    pub fn new(origin: Vec3, dir: Vec3) -> RayBoxTest {
+    pub fn new(origin: Vec3, dir: Vec3, tmin: f32) -> RayBoxTest {
         let safe = |d: f32| if d.abs() < 1e-18 { 1e-18f32.copysign(d) } else { d };
-        RayBoxTest { origin, inv_dir: Vec3::new(1.0 / safe(dir.x), 1.0 / safe(dir.y), 1.0 / safe(dir.z)) }
+        let inv_dir = Vec3::new(1.0 / safe(dir.x), 1.0 / safe(dir.y), 1.0 / safe(dir.z));
+        RayBoxTest { origin, inv_dir, tmin: tmin.max(0.0) }
     }
 
     /// Per axis, the factors that turn a grid coordinate q of `node` into the distance at
@@ -109,7 +114,7 @@ fn enter_portable(ray: &RayBoxTest, node: &Node, tmax: f32) -> ([f32; WIDTH], u3
             (t0.fast_min(t1), t0.fast_max(t1))
         };
         let ((nx, fx), (ny, fy), (nz, fz)) = (slab(0), slab(1), slab(2));
-        let n = nx.fast_max(ny).fast_max(nz.fast_max(f32x4::ZERO));
+        let n = nx.fast_max(ny).fast_max(nz.fast_max(f32x4::splat(ray.tmin)));
         let f = fx.fast_min(fy).fast_min(fz.fast_min(f32x4::splat(tmax))) * f32x4::splat(EXIT_SLACK);
         let child: [u32; 4] = node.child[4 * half..4 * half + 4].try_into().unwrap_or([NO_CHILD; 4]);
         let used = u32x4::new(child).simd_ne(u32x4::splat(NO_CHILD));
@@ -131,7 +136,7 @@ fn widen4(q: [u8; 4]) -> f32x4 {
 fn enter_avx2(ray: &RayBoxTest, node: &Node, tmax: f32) -> ([f32; WIDTH], u32) {
     use std::arch::x86_64::*;
     let (scale, base) = ray.plane_factors(node);
-    let mut near = _mm256_setzero_ps();
+    let mut near = _mm256_set1_ps(ray.tmin);
     let mut far = _mm256_set1_ps(tmax);
     for a in 0..3 {
         let (s, b) = (_mm256_set1_ps(scale[a]), _mm256_set1_ps(base[a]));
@@ -695,7 +700,7 @@ mod tests {
             let o = Vec3::new(rng.random(), rng.random(), rng.random()) * 30.0 - 10.0;
             let target = Vec3::new(rng.random(), rng.random(), rng.random()) * 10.0;
             let dir = (target - o).normalize();
-            let ray = RayBoxTest::new(o, dir);
+            let ray = RayBoxTest::new(o, dir, 0.0);
             let expected: Vec<u32> =
                 items.iter().filter(|it| crosses(&it.bounds, o, ray.inv_dir)).map(|it| it.id).collect();
             crossing += expected.len();

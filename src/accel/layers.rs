@@ -234,7 +234,7 @@ impl Accel {
         let k = k.max(1);
         out.clear();
         let mut cutoff = ray.tmax;
-        self.walk(ray.origin, ray.dir, ray.cone, &mut cutoff, |object, o, prims, widen, cutoff| {
+        self.walk(ray.origin, ray.dir, ray.cone, tmin, &mut cutoff, |object, o, prims, widen, cutoff| {
             leaf_hits(
                 &o.shape,
                 prims,
@@ -302,7 +302,7 @@ impl Accel {
     ) -> f32 {
         let mut t = tmax;
         let mut transmitted = 1.0f32;
-        let blocked = self.walk(origin, dir, cone, &mut t, |object, o, prims, widen, t| {
+        let blocked = self.walk(origin, dir, cone, 0.0, &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
             leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), (skip, false), widen, |prim, _, kind, level| {
                 let a = opacity(&o.shape, prim, kind) * o.lod_opacity(level);

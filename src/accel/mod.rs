@@ -245,7 +245,7 @@ impl Accel {
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let mut tmax = ray.tmax;
         let mut best = None;
-        self.walk(ray.origin, ray.dir, ray.cone, &mut tmax, |object, o, prims, widen, tmax| {
+        self.walk(ray.origin, ray.dir, ray.cone, 0.0, &mut tmax, |object, o, prims, widen, tmax| {
             if let Some((prim, t, kind, level)) =
                 intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false, widen)
             {
@@ -261,14 +261,14 @@ impl Accel {
     /// along unit `dir` up to distance `tmax`, with strands at full detail.
     pub fn occluded(&self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>) -> bool {
         let mut t = tmax;
-        self.walk(origin, dir, RayCone::default(), &mut t, |object, o, prims, widen, t| {
+        self.walk(origin, dir, RayCone::default(), 0.0, &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
             intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true, widen).is_some()
         })
     }
 
     /// Walks the leaves of the objects that the ray from `origin` along unit `dir`
-    /// (footprint `cone`) enters before `*tmax`, nearest boxes first, under the top-level
+    /// (footprint `cone`) enters between `tmin` and `*tmax`, nearest boxes first, under the top-level
     /// BVH: `leaf(object, o, prims, widen, tmax)` as in [`Object::traverse`],
     /// returning true to stop. Returns whether a leaf stopped the walk. Every query
     /// (closest, any, K-nearest hits, transmittance) is this walk with its own leaf.
@@ -278,10 +278,11 @@ impl Accel {
         origin: Vec3,
         dir: Vec3,
         cone: RayCone,
+        tmin: f32,
         tmax: &mut f32,
         mut leaf: impl FnMut(u32, &Object, &[u32], Widen, &mut f32) -> bool,
     ) -> bool {
-        let test = RayBoxTest::new(origin, dir);
+        let test = RayBoxTest::new(origin, dir, tmin);
         let lod_ray = LodRay::new(origin, dir, cone);
         let mut stopped = false;
         self.top.traverse::<false>(&test, tmax, |objects, _, t| {

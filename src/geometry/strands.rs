@@ -12,6 +12,7 @@
 //! [`StrandSet::strand_point`] reports.
 
 use glam::Vec3;
+use rayon::prelude::*;
 
 /// A set of hair strands sharing one material.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -286,7 +287,9 @@ impl StrandSet {
         if n < 2 {
             return;
         }
+        // In parallel: this runs inside the timed BVH build.
         let centres: Vec<Vec3> = (0..n as u32)
+            .into_par_iter()
             .map(|i| {
                 let (lo, hi) = self.points[self.point_range(i)].iter().fold(
                     (Vec3::INFINITY, Vec3::NEG_INFINITY),
@@ -312,8 +315,9 @@ impl StrandSet {
             zorder::index_of(q)
         };
         let mut order: Vec<(u64, u32, u32)> =
-            centres.iter().enumerate().map(|(i, &c)| (code(c), self.file_strand(i as u32), i as u32)).collect();
-        order.sort_unstable();
+            centres.par_iter().enumerate().map(|(i, &c)| (code(c), self.file_strand(i as u32), i as u32)).collect();
+        // The keys are distinct (file indices are), so an unstable sort is deterministic.
+        order.par_sort_unstable();
         let stored: Vec<u32> = order.iter().map(|o| o.2).collect();
         let mut out = self.select(&stored);
         out.file_order = Some(order.iter().map(|o| o.1).collect());
