@@ -155,3 +155,48 @@ fn semi_transparent_strands_let_the_background_through() {
         assert!((got - expected).abs() < 0.03, "{opacities:?}: {got} vs {expected}");
     }
 }
+
+#[test]
+fn a_gaussian_filter_widens_edges_and_keeps_coverage() {
+    use glam::{Affine3A, Vec3};
+    use tress::film::PixelFilter;
+    use tress::geometry::StrandSet;
+    use tress::light::Light;
+    use tress::math::Color;
+    use tress::scene::{CameraDesc, Description, HairEntry, HairSource, RenderSettings};
+    use tress::shading::{tube::Tube, Material};
+    // A thick horizontal strand, about 5.5 pixels tall, across a 16x16 image.
+    let render = |filter: PixelFilter| {
+        let mut strands = StrandSet::new();
+        strands.push_strand([(Vec3::new(-2.0, 0.01, 0.0), 0.15), (Vec3::new(2.0, 0.01, 0.0), 0.15)]);
+        let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
+        let desc = Description {
+            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 10.0 },
+            settings: RenderSettings { width: 16, height: 16, spp: 256, filter, ..Default::default() },
+            lights: vec![Light::Environment { radiance: Color::ONE }],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(strands),
+                material: Material::Tube(black),
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: false,
+                lod: None,
+            }],
+            ..Default::default()
+        };
+        tress::render::render(&prepare(&desc).unwrap().0, None).0
+    };
+    // Pixels of column 8 between all and nothing, and the column's summed coverage.
+    let column = |f: &Film| {
+        let c: Vec<f32> = (0..16).map(|y| f.pixels[y * 16 + 8].coverage).collect();
+        (c.iter().filter(|&&c| c > 0.02 && c < 0.98).count(), c.iter().sum::<f32>())
+    };
+    let (box_edge, box_sum) = column(&render(PixelFilter::Box));
+    let (gauss_edge, gauss_sum) = column(&render(PixelFilter::gaussian(1.5)));
+    // A box pixel straddles each edge at most once; the Gaussian's samples reach 1.5
+    // pixels out, so its transition spans at least two pixels per edge.
+    assert!(box_edge <= 2, "box: {box_edge} partial pixels");
+    assert!(gauss_edge >= 4, "gaussian: {gauss_edge} partial pixels");
+    // Both reconstruct the same strand: the summed coverage is its height in pixels.
+    assert!((box_sum - gauss_sum).abs() < 0.05 * box_sum, "{box_sum} vs {gauss_sum}");
+}

@@ -142,6 +142,10 @@ struct Overrides {
     /// Final gather: the irradiance cache's accuracy (Ward's a; turns the cache on).
     #[arg(long, value_name = "A")]
     cache_accuracy: Option<f32>,
+    /// Pixel filter: box, or gaussian with an optional radius in pixels (gaussian:2;
+    /// default 1.5, sigma a third of it).
+    #[arg(long, value_name = "box|gaussian[:R]", value_parser = parse_filter)]
+    filter: Option<tress::film::PixelFilter>,
     /// Strands in the demo scene (ignored for scene files).
     #[arg(long, default_value_t = tress::demo::DEMO_STRANDS)]
     demo_strands: u32,
@@ -192,6 +196,19 @@ fn parse_integrator(s: &str) -> Result<tress::scene::Integrator, String> {
     tress::scene::Integrator::from_name(s).ok_or_else(|| format!("`{s}` is not direct, final-gather or path"))
 }
 
+fn parse_filter(s: &str) -> Result<tress::film::PixelFilter, String> {
+    let f = match s.split_once(':') {
+        None if s == "box" => tress::film::PixelFilter::Box,
+        None if s == "gaussian" => tress::film::PixelFilter::gaussian(1.5),
+        Some(("gaussian", r)) => {
+            tress::film::PixelFilter::gaussian(r.parse().map_err(|_| format!("`{r}` is not a radius in pixels"))?)
+        }
+        _ => return Err(format!("`{s}` is not box, gaussian or gaussian:RADIUS")),
+    };
+    f.validate()?;
+    Ok(f)
+}
+
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     let mut desc = match scene {
         // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
@@ -230,6 +247,9 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     }
     if let Some(k) = o.transparency_layers {
         s.transparency_layers = k;
+    }
+    if let Some(f) = o.filter {
+        s.filter = f;
     }
     match o.irradiance_cache {
         Some(false) => s.irradiance_cache = None,

@@ -1,9 +1,11 @@
 //! The film: per-pixel colour and auxiliary outputs (AOVs), and writing them to files.
 
+mod filter;
 mod input;
 mod output;
 mod region;
 
+pub use filter::PixelFilter;
 pub use input::{decode_exr, ExrFilm};
 pub use output::{check_output, srgb_encode, write_image, write_image_part, write_image_with, OutputError};
 pub use region::Region;

@@ -5,6 +5,7 @@
 //! number) is read at one frame: the camera is interpolated and the frame substituted.
 
 use crate::accel::lod::LodParams;
+use crate::film::PixelFilter;
 use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPlacement};
 use crate::geometry::TriangleMesh;
 use crate::hair::ramp::RampValue;
@@ -142,6 +143,46 @@ struct RenderToml {
     adaptive: Option<AdaptiveToml>,
     #[serde(default)]
     irradiance_cache: Option<IrradianceCacheToml>,
+    #[serde(default)]
+    filter: Option<FilterToml>,
+}
+
+/// `filter = "box"`, `filter = "gaussian"` or `filter = { type = "gaussian", radius = 1.5,
+/// sigma = 0.5 }` (radius and sigma optional).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum FilterToml {
+    Name(String),
+    With(FilterTable),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FilterTable {
+    #[serde(rename = "type")]
+    kind: String,
+    radius: Option<f32>,
+    sigma: Option<f32>,
+}
+
+impl FilterToml {
+    fn filter(&self) -> Result<PixelFilter, String> {
+        let (kind, radius, sigma) = match self {
+            FilterToml::Name(name) => (name.as_str(), None, None),
+            FilterToml::With(t) => (t.kind.as_str(), t.radius, t.sigma),
+        };
+        let f = match kind {
+            "box" if radius.is_none() && sigma.is_none() => PixelFilter::Box,
+            "box" => return Err("the `box` filter takes no `radius` or `sigma`".into()),
+            "gaussian" => {
+                let radius = radius.unwrap_or(1.5);
+                PixelFilter::Gaussian { radius, sigma: sigma.unwrap_or(radius / 3.0) }
+            }
+            other => return Err(format!("unknown filter `{other}` (box or gaussian)")),
+        };
+        f.validate()?;
+        Ok(f)
+    }
 }
 
 /// `irradiance_cache = true`, or `irradiance_cache = { accuracy = 0.3, spacing = 4, rays = 256 }`
@@ -189,6 +230,7 @@ impl Default for RenderToml {
             gather_rays: None,
             adaptive: None,
             irradiance_cache: None,
+            filter: None,
         }
     }
 }
@@ -833,7 +875,12 @@ pub fn parse_scene_frame(
         Some(name) => Integrator::from_name(name)
             .ok_or_else(|| invalid(format!("render: unknown `integrator` `{name}` (direct, final-gather or path)")))?,
     };
+    let filter = match &r.filter {
+        None => defaults.filter,
+        Some(f) => f.filter().map_err(|m| invalid(format!("render: {m}")))?,
+    };
     let settings = RenderSettings {
+        filter,
         width: r.resolution[0],
         height: r.resolution[1],
         spp: r.spp,
@@ -1506,5 +1553,22 @@ material = { type = "diffuse", color = [1, 1, 1] }
         .unwrap();
         let p = t.transform_point3(Vec3::X);
         assert!((p - Vec3::new(1.0, 0.0, -2.0)).length() < 1e-5, "{p}");
+    }
+
+    #[test]
+    fn reads_the_pixel_filter() {
+        assert_eq!(parse("").unwrap().settings.filter, PixelFilter::Box);
+        assert_eq!(parse("[render]\nfilter = \"box\"\n").unwrap().settings.filter, PixelFilter::Box);
+        assert_eq!(parse("[render]\nfilter = \"gaussian\"\n").unwrap().settings.filter, PixelFilter::gaussian(1.5));
+        let d = parse("[render]\nfilter = { type = \"gaussian\", radius = 2.0, sigma = 0.8 }\n").unwrap();
+        assert_eq!(d.settings.filter, PixelFilter::Gaussian { radius: 2.0, sigma: 0.8 });
+        for (bad, names) in [
+            ("filter = \"mitchell\"", "mitchell"),
+            ("filter = { type = \"gaussian\", radius = -1.0 }", "radius"),
+            ("filter = { type = \"box\", radius = 2.0 }", "box"),
+        ] {
+            let e = parse(&format!("[render]\n{bad}\n")).unwrap_err().to_string();
+            assert!(e.contains("dir/test.toml") && e.contains(names), "{e}");
+        }
     }
 }

@@ -86,7 +86,8 @@ pub fn trace_camera_cached(
     }
 }
 
-/// All samples of one pixel, box-filtered; the AOVs come from the first sample that hit.
+/// All samples of one pixel, placed by the pixel filter (filter importance sampling, so each
+/// counts with weight 1); the AOVs come from the first sample that hit.
 /// With adaptive sampling the pixel takes `min_spp` samples, then more in batches of
 /// `min_spp` while they disagree ([`adaptive::Spread`]), up to `max_spp`; sample `s` is
 /// the same whatever the batches, so a pixel refined to `n` samples equals a fixed-rate
@@ -105,7 +106,7 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
         let batch = min.min(max - taken);
         for s in taken..taken + batch {
             let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
-            let (jx, jy) = sampler.next_2d();
+            let (jx, jy) = world.settings.filter.place(sampler.next_2d());
             let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
             let (color, first) = trace_camera_cached(world, cache, &ray, &mut sampler, counters);
             sum += color;

@@ -60,6 +60,8 @@ pub struct RenderSettings {
     pub gather_rays: u32,
     /// The final gather's irradiance cache on diffuse surfaces; `None` gathers at every hit.
     pub irradiance_cache: Option<IrradianceCacheSettings>,
+    /// How each pixel's samples spread over the image (the reconstruction filter).
+    pub filter: crate::film::PixelFilter,
 }
 
 /// The irradiance cache of the final gather (Ward et al. 1988): records of the gathered
@@ -141,6 +143,7 @@ impl Default for RenderSettings {
             gather_rays: 8,
             irradiance_cache: None,
             lod: true,
+            filter: crate::film::PixelFilter::Box,
         }
     }
 }
