@@ -204,7 +204,7 @@ pub(super) fn trace_with(
     // `transmitted`: the light passing every layer so far; `carried`: the weight of what
     // is shaded next (equal to it while blending, frozen once the tail is walked).
     // After a closest hit, nothing lies nearer: the layers start just before it, and the
-    // BVH boxes the ray leaves before that are not entered (lod_field.toml: -N % instructions).
+    // BVH boxes the ray leaves before that are not entered (lod_field.toml: -1.6 % instructions).
     let tmin = hit.map_or(0.0, |h| h.t * (1.0 - 4.0 * f32::EPSILON));
     let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, tmin);
     let mut shadows = SharedShadows::new(world.lights.len(), sampler);
