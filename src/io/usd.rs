@@ -68,14 +68,16 @@ pub fn read_usd(path: &Path) -> Result<Imported, LoadError> {
     Ok(out)
 }
 
-/// Checks a layer's bytes before the crate parses them: UTF-8 text with a `#usda` header
-/// and at most [`MAX_NESTING`] levels of brackets outside strings and comments.
+/// Checks a layer's bytes before the crate parses them: UTF-8 text with a `#usda` header,
+/// at most [`MAX_NESTING`] levels of brackets outside strings and comments, and prim names
+/// that are identifiers.
 fn check_layer(bytes: &[u8]) -> Result<(), String> {
     let text =
         std::str::from_utf8(bytes).map_err(|_| "not UTF-8 text (binary .usdc layers are not read)".to_string())?;
     if !text.trim_start().starts_with("#usda") {
         return Err("not a USD text layer: it does not start with `#usda`".into());
     }
+    check_prim_names(text)?;
     let (mut depth, mut line) = (0usize, 1u32);
     let b = text.as_bytes();
     let mut i = 0;
@@ -117,6 +119,26 @@ fn check_layer(bytes: &[u8]) -> Result<(), String> {
             _ => {}
         }
         i += 1;
+    }
+    Ok(())
+}
+
+/// Checks that every prim a layer defines (`def`, `over` or `class`, then an optional type,
+/// then the quoted name) is named by an identifier (a letter or `_`, then letters, digits
+/// or `_`), as USD requires: the crate recurses without end on a prim path holding other
+/// characters (a name like `"Wor}d"` overflowed the stack).
+fn check_prim_names(text: &str) -> Result<(), String> {
+    for (n, line) in text.lines().enumerate() {
+        let words = line.trim_start();
+        let Some(rest) = ["def ", "over ", "class "].iter().find_map(|k| words.strip_prefix(k)) else { continue };
+        // The name is the first quoted string; a line without one is left to the parser.
+        let Some(name) = rest.split('"').nth(1) else { continue };
+        let mut chars = name.chars();
+        let valid = chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if !valid {
+            return Err(format!("line {}: prim name \"{name}\" is not an identifier (letters, digits and _)", n + 1));
+        }
     }
     Ok(())
 }

@@ -153,6 +153,14 @@ fn malformed_files_are_errors_with_lines_and_no_panic() {
     assert!(e.contains("#usda"), "{e}");
 }
 
+#[test]
+fn prim_names_that_are_not_identifiers_are_errors_not_a_stack_overflow() {
+    // Found by `mutated_scenes_never_panic`: the crate recursed without end on this path.
+    let e = read_text(&SCENE.replace("\"World\"\n{", "\"Wor}d\"\n{")).unwrap_err().to_string();
+    assert!(e.contains("line 6") && e.contains("not an identifier"), "{e}");
+    assert!(read_text(&SCENE.replace("\"World\"\n{", "\"_World2\"\n{")).is_ok());
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
 
