@@ -424,7 +424,7 @@ fn build_node(items: &mut [BuildItem], offset: usize, depth: usize) -> BuildNode
     // deepens by one level per halving, so this cannot recurse without end).
     let split = if depth >= MAX_DEPTH { None } else { choose_split(items, &bounds, &centroids) };
     let mid = match split {
-        Some((axis, lo, scale, bin)) => partition(items, |it| bin_of(it.bounds.center()[axis], lo, scale) < bin),
+        Some((axis, lo, scale, bin)) => partition(items, |it| bins_of(it.bounds.center(), lo, scale)[axis] < bin),
         None if items.len() > MAX_LEAF => {
             // Centroids coincide: split by count so leaves stay small.
             items.len() / 2
@@ -459,11 +459,13 @@ fn bounds_and_centroids(items: &[BuildItem]) -> (Aabb, Aabb) {
         .reduce(|| (Aabb::EMPTY, Aabb::EMPTY), |a, b| (a.0.union(b.0), a.1.union(b.1)))
 }
 
-/// The bin of a centroid coordinate; the split and the partition both use it, so an item
-/// goes to the side its bin was counted on.
+/// The bins of a centroid along the three axes (all three at once, in SIMD); the split and
+/// the partition both use it, so an item goes to the side its bin was counted on. Below the
+/// first bin (and NaN) is bin 0, past the last is the last.
 #[inline]
-fn bin_of(c: f32, lo: f32, scale: f32) -> usize {
-    (((c - lo) * scale) as usize).min(BINS - 1)
+fn bins_of(c: Vec3A, lo: Vec3A, scale: Vec3A) -> [usize; 3] {
+    let b = ((c - lo) * scale).max(Vec3A::ZERO).min(Vec3A::splat((BINS - 1) as f32)).as_uvec3();
+    [b.x as usize, b.y as usize, b.z as usize]
 }
 
 /// Boxes and counts of the items falling in each bin, along each axis.
@@ -487,17 +489,16 @@ impl Bins {
     }
 }
 
-/// The binned SAH split (axis, bin origin, bin scale, first bin of the right side), or None
+/// The binned SAH split (axis, bin origin and scale along every axis, first bin of the right side), or None
 /// when no split beats a leaf (or the items' centroids coincide).
-fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<(usize, f32, f32, usize)> {
+fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<(usize, Vec3A, Vec3A, usize)> {
     let extent = centroids.max - centroids.min;
     let scale = Vec3A::select(extent.cmpgt(Vec3A::ZERO), BINS as f32 / extent, Vec3A::ZERO);
     let fill = |items: &[BuildItem]| {
         let mut bins = Bins::EMPTY;
         for it in items {
-            let c = it.bounds.center();
-            for axis in 0..3 {
-                let b = bin_of(c[axis], centroids.min[axis], scale[axis]);
+            let b = bins_of(it.bounds.center(), centroids.min, scale);
+            for (axis, &b) in b.iter().enumerate() {
                 bins.bounds[axis][b] = bins.bounds[axis][b].union(it.bounds);
                 bins.counts[axis][b] += 1;
             }
@@ -538,7 +539,7 @@ fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<
     let (cost, axis, bin) = best?;
     let leaf_cost = items.len() as f32 * bounds.half_area();
     let split_cost = TRAVERSAL_COST * bounds.half_area() + cost;
-    (split_cost < leaf_cost || items.len() > MAX_LEAF).then_some((axis, centroids.min[axis], scale[axis], bin))
+    (split_cost < leaf_cost || items.len() > MAX_LEAF).then_some((axis, centroids.min, scale, bin))
 }
 
 /// Moves items for which `left` holds to the front; returns how many there are.
