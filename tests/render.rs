@@ -104,17 +104,43 @@ fn fur_matches_the_golden_image_whatever_the_thread_count() {
     assert!(avg > 40.0 && avg < 200.0, "mean value {avg}");
 }
 
+/// A scene of black tube `strands` in front of a white environment, seen along -z from
+/// z = 5 with a 10-degree field of view, rendered with `settings`.
+fn black_strands_on_white(
+    strands: tress::geometry::StrandSet,
+    settings: tress::scene::RenderSettings,
+) -> tress::scene::Description {
+    use glam::{Affine3A, Vec3};
+    use tress::light::Light;
+    use tress::math::Color;
+    use tress::scene::{CameraDesc, Description, HairEntry, HairSource};
+    use tress::shading::{tube::Tube, Material};
+    let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
+    Description {
+        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 10.0 },
+        settings,
+        lights: vec![Light::Environment { radiance: Color::ONE }],
+        hair: vec![HairEntry {
+            source: HairSource::Inline(strands),
+            material: Material::Tube(black),
+            transform: Affine3A::IDENTITY,
+            radius_scale: 1.0,
+            file_colors: false,
+            lod: None,
+        }],
+        ..Default::default()
+    }
+}
+
 /// Strands of opacity `a` in front of a uniform background let through `1 - a` of it on
 /// average (stochastic transparency), and stacked strands multiply their transmittance.
 #[test]
 fn semi_transparent_strands_let_the_background_through() {
-    use glam::{Affine3A, Vec3};
+    use glam::Vec3;
     use tress::geometry::StrandSet;
-    use tress::light::Light;
-    use tress::math::{rng::PixelSampler, Color, Ray};
+    use tress::math::{rng::PixelSampler, Ray};
     use tress::render::{trace, Counters};
-    use tress::scene::{CameraDesc, Description, HairEntry, HairSource, RenderSettings};
-    use tress::shading::{tube::Tube, Material};
+    use tress::scene::RenderSettings;
     let seen = |opacities: &[f32]| {
         let mut strands = StrandSet::new();
         for (i, _) in opacities.iter().enumerate() {
@@ -123,22 +149,8 @@ fn semi_transparent_strands_let_the_background_through() {
             strands.push_strand([(Vec3::new(-1.0, 0.0, z), 0.2), (Vec3::new(1.0, 0.0, z), 0.2)]);
         }
         strands.opacity = Some(opacities.iter().flat_map(|&a| [a, a]).collect());
-        let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
-        let desc = Description {
-            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 10.0 },
-            settings: RenderSettings { width: 8, height: 8, spp: 1, ..Default::default() },
-            lights: vec![Light::Environment { radiance: Color::ONE }],
-            meshes: vec![],
-            hair: vec![HairEntry {
-                source: HairSource::Inline(strands),
-                material: Material::Tube(black),
-                transform: Affine3A::IDENTITY,
-                radius_scale: 1.0,
-                file_colors: false,
-                lod: None,
-            }],
-            ..Default::default()
-        };
+        let desc =
+            black_strands_on_white(strands, RenderSettings { width: 8, height: 8, spp: 1, ..Default::default() });
         let world = prepare(&desc).unwrap().0;
         let n = 4096;
         let mut sum = 0.0;
@@ -158,32 +170,18 @@ fn semi_transparent_strands_let_the_background_through() {
 
 #[test]
 fn a_gaussian_filter_widens_edges_and_keeps_coverage() {
-    use glam::{Affine3A, Vec3};
+    use glam::Vec3;
     use tress::film::PixelFilter;
     use tress::geometry::StrandSet;
-    use tress::light::Light;
-    use tress::math::Color;
-    use tress::scene::{CameraDesc, Description, HairEntry, HairSource, RenderSettings};
-    use tress::shading::{tube::Tube, Material};
+    use tress::scene::RenderSettings;
     // A thick horizontal strand, about 5.5 pixels tall, across a 16x16 image.
     let render = |filter: PixelFilter| {
         let mut strands = StrandSet::new();
         strands.push_strand([(Vec3::new(-2.0, 0.01, 0.0), 0.15), (Vec3::new(2.0, 0.01, 0.0), 0.15)]);
-        let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
-        let desc = Description {
-            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 10.0 },
-            settings: RenderSettings { width: 16, height: 16, spp: 256, filter, ..Default::default() },
-            lights: vec![Light::Environment { radiance: Color::ONE }],
-            hair: vec![HairEntry {
-                source: HairSource::Inline(strands),
-                material: Material::Tube(black),
-                transform: Affine3A::IDENTITY,
-                radius_scale: 1.0,
-                file_colors: false,
-                lod: None,
-            }],
-            ..Default::default()
-        };
+        let desc = black_strands_on_white(
+            strands,
+            RenderSettings { width: 16, height: 16, spp: 256, filter, ..Default::default() },
+        );
         tress::render::render(&prepare(&desc).unwrap().0, None).0
     };
     // Pixels of column 8 between all and nothing, and the column's summed coverage.
