@@ -633,21 +633,24 @@ mod tests {
         desc.hair[0].transform = Affine3A::from_translation(Vec3::new(0.1, 0.2, 0.3));
         let (copied, _) = prepare(&desc).unwrap();
         let (moved, _) = prepare_owned(desc.clone()).unwrap();
-        let strands = |w: &World| {
-            w.accel
-                .objects
-                .iter()
-                .filter_map(|o| match &o.shape {
-                    Shape::Strands(s) => Some(s.clone()),
-                    Shape::Mesh(_) => None,
-                })
-                .collect::<Vec<_>>()
-        };
-        let (a, b) = (strands(&copied), strands(&moved));
+        let (a, b) = (strand_sets(&copied), strand_sets(&moved));
         assert_eq!(a.len(), 1);
         assert_eq!(a[0].strand_count(), 300);
         assert_eq!(a, b);
         assert_eq!(crate::partial::fingerprint(&copied), crate::partial::fingerprint(&moved));
+    }
+
+    /// Every strand set of `world`, in object order.
+    fn strand_sets(world: &World) -> Vec<StrandSet> {
+        world
+            .accel
+            .objects
+            .iter()
+            .filter_map(|o| match &o.shape {
+                Shape::Strands(s) => Some(s.clone()),
+                Shape::Mesh(_) => None,
+            })
+            .collect()
     }
 
     /// A hair system (per-strand root UV and clump, per-strand random diffuse colour) and
@@ -701,17 +704,7 @@ seed = 3
             background: world.background,
             warnings: Vec::new(),
         };
-        let strands = |w: &World| -> Vec<StrandSet> {
-            w.accel
-                .objects
-                .iter()
-                .filter_map(|o| match &o.shape {
-                    Shape::Strands(s) => Some(s.clone()),
-                    Shape::Mesh(_) => None,
-                })
-                .collect()
-        };
-        let (moved, kept) = (strands(&world), strands(&file));
+        let (moved, kept) = (strand_sets(&world), strand_sets(&file));
         assert_eq!(moved.len(), 2);
         for (m, k) in moved.iter().zip(&kept) {
             assert!(k.file_order.is_none());
