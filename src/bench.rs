@@ -8,9 +8,11 @@
 //! rays start at each primary hit moved 2e-5 along the geometric normal facing the viewer
 //! and go towards the distant light.
 
-use crate::accel::{Accel, HitKind, Shape};
+use crate::accel::bvh::PACKET;
+use crate::accel::{Accel, Hit, HitKind, Shape};
 use crate::light::Light;
 use crate::math::rng::hash_u32;
+use crate::math::Ray;
 use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings, World};
 use crate::shading::Material;
 use crate::stats::process_cpu_time;
@@ -103,34 +105,63 @@ fn u01(key: u32) -> f32 {
     (hash_u32(key) >> 8) as f32 * (1.0 / 16_777_216.0)
 }
 
+/// How the benchmark hands rays to the acceleration structure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Tracing {
+    /// One ray at a time ([`Accel::intersect`], [`Accel::occluded`]), like the Embree
+    /// program's `rtcIntersect1` / `rtcOccluded1`.
+    Single,
+    /// A pixel's samples (shadow rays: 16 consecutive origins) as one packet
+    /// ([`Accel::intersect_packet`], [`Accel::occluded_packet`]): the same rays and hits.
+    Packet,
+}
+
+/// The shadow-ray origin for the closest hit of `ray`: the hit point moved off the surface
+/// along the geometric normal facing the viewer.
+fn shadow_origin(world: &World, ray: &Ray, hit: &Hit) -> Vec3 {
+    let n = match hit.kind {
+        HitKind::Segment { normal, .. } => normal,
+        HitKind::Triangle { .. } => match &world.accel.objects[hit.object as usize].shape {
+            Shape::Mesh(m) => {
+                let [a, b, c] = m.corners(hit.prim);
+                (b - a).cross(c - a).normalize_or_zero()
+            }
+            Shape::Strands(_) => Vec3::ZERO,
+        },
+    };
+    let n = if n.dot(ray.dir) > 0.0 { -n } else { n };
+    ray.at(hit.t) + n * SHADOW_EPS
+}
+
 /// Traces every camera ray (closest hit) on the current rayon pool; returns the shadow-ray
 /// origins of the hits and the rate.
-pub fn trace_primary(world: &World, threads: usize) -> (Vec<Vec3>, Rate) {
+pub fn trace_primary(world: &World, threads: usize, tracing: Tracing) -> (Vec<Vec3>, Rate) {
     let (w, h, spp) = (world.settings.width, world.settings.height, world.settings.spp);
     measure(threads, || {
         let origins: Vec<Vec3> = (0..h)
             .into_par_iter()
             .flat_map_iter(|y| {
                 let mut row = Vec::new();
+                let mut hits = Vec::new();
                 for x in 0..w {
-                    for s in 0..spp {
-                        let key = ((y * w + x) * spp + s).wrapping_mul(2);
-                        let ray = world.camera.ray(x as f32 + u01(key), y as f32 + u01(key + 1));
-                        if let Some(hit) = world.accel.intersect(&ray) {
-                            let n = match hit.kind {
-                                HitKind::Segment { normal, .. } => normal,
-                                HitKind::Triangle { .. } => match &world.accel.objects[hit.object as usize].shape {
-                                    Shape::Mesh(m) => {
-                                        let [a, b, c] = m.corners(hit.prim);
-                                        (b - a).cross(c - a).normalize_or_zero()
-                                    }
-                                    Shape::Strands(_) => Vec3::ZERO,
-                                },
-                            };
-                            let n = if n.dot(ray.dir) > 0.0 { -n } else { n };
-                            row.push(ray.at(hit.t) + n * SHADOW_EPS);
-                        }
+                    let rays: Vec<Ray> = (0..spp)
+                        .map(|s| {
+                            let key = ((y * w + x) * spp + s).wrapping_mul(2);
+                            world.camera.ray(x as f32 + u01(key), y as f32 + u01(key + 1))
+                        })
+                        .collect();
+                    hits.clear();
+                    hits.resize(rays.len(), None);
+                    match tracing {
+                        Tracing::Single => rays.iter().zip(&mut hits).for_each(|(r, h)| *h = world.accel.intersect(r)),
+                        Tracing::Packet => rays
+                            .chunks(PACKET)
+                            .zip(hits.chunks_mut(PACKET))
+                            .for_each(|(r, h)| world.accel.intersect_packet(r, h)),
                     }
+                    row.extend(
+                        rays.iter().zip(&hits).filter_map(|(r, h)| h.as_ref().map(|h| shadow_origin(world, r, h))),
+                    );
                 }
                 row
             })
@@ -141,11 +172,25 @@ pub fn trace_primary(world: &World, threads: usize) -> (Vec<Vec3>, Rate) {
 
 /// Traces one any-hit ray per origin towards `light` on the current rayon pool; returns
 /// how many were blocked and the rate.
-pub fn trace_shadow(world: &World, origins: &[Vec3], light: Vec3, threads: usize) -> (u64, Rate) {
+pub fn trace_shadow(world: &World, origins: &[Vec3], light: Vec3, threads: usize, tracing: Tracing) -> (u64, Rate) {
     measure(threads, || {
         let blocked = origins
             .par_chunks(4096)
-            .map(|chunk| chunk.iter().filter(|&&o| world.accel.occluded(o, light, f32::INFINITY, None)).count() as u64)
+            .map(|chunk| match tracing {
+                Tracing::Single => {
+                    chunk.iter().filter(|&&o| world.accel.occluded(o, light, f32::INFINITY, None)).count() as u64
+                }
+                Tracing::Packet => chunk
+                    .chunks(PACKET)
+                    .map(|o| {
+                        let dirs = [light; PACKET];
+                        world
+                            .accel
+                            .occluded_packet(o, &dirs[..o.len()], &[f32::INFINITY; PACKET][..o.len()])
+                            .count_ones() as u64
+                    })
+                    .sum(),
+            })
             .sum();
         (blocked, origins.len() as u64)
     })

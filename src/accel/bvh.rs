@@ -14,7 +14,7 @@
 use crate::math::Aabb;
 use glam::{Vec3, Vec3A};
 use rayon::prelude::*;
-use wide::{bytemuck, f32x4, u32x4};
+use wide::{bytemuck, f32x4, f32x8, u32x4};
 
 /// Children per node.
 const WIDTH: usize = 8;
@@ -163,8 +163,61 @@ struct Entry {
     count: u8,
     /// The leaf's tag ([`BuildItem::tag`]).
     tag: u8,
-    /// Distance at which the ray enters the child's box.
+    /// Packet traversal: the rays that enter the child (bit i for ray i); 0 for one ray.
+    rays: u16,
+    /// Distance at which the ray enters the child's box (a packet: the nearest of its rays').
     t: f32,
+}
+
+/// The traversal stack: the binary tree is at most MAX_DEPTH + 32 levels deep (past
+/// MAX_DEPTH the builder halves by count, and there are fewer than 2^32 items); each 8-wide
+/// level, at least one binary level, pushes at most seven entries.
+/// Left uninitialised: zeroing it would cost more than a short traversal.
+type Stack = [std::mem::MaybeUninit<Entry>; (WIDTH - 1) * (MAX_DEPTH + 32) + WIDTH];
+
+/// Pushes the children in `mask` (made by `entry`) on the stack, farthest first, and returns
+/// the nearest, which the traversal enters next (None when the mask is empty).
+#[inline(always)]
+fn push_nearest_first(
+    mut mask: u32,
+    entry: impl Fn(u32) -> Entry,
+    stack: &mut Stack,
+    top: &mut usize,
+) -> Option<Entry> {
+    // Most nodes are entered through one or two children: those skip the sort.
+    match mask.count_ones() {
+        0 => None,
+        1 => Some(entry(mask.trailing_zeros())),
+        2 => {
+            let a = entry(mask.trailing_zeros());
+            let b = entry((mask & (mask - 1)).trailing_zeros());
+            let (first, second) = if b.t < a.t { (b, a) } else { (a, b) };
+            stack[*top].write(second);
+            *top += 1;
+            Some(first)
+        }
+        _ => {
+            // Children hit, nearest first: insertion sort of at most eight.
+            let mut hits = [Entry::default(); WIDTH];
+            let mut n = 0;
+            while mask != 0 {
+                let e = entry(mask.trailing_zeros());
+                mask &= mask - 1;
+                let mut k = n;
+                while k > 0 && hits[k - 1].t > e.t {
+                    hits[k] = hits[k - 1];
+                    k -= 1;
+                }
+                hits[k] = e;
+                n += 1;
+            }
+            for e in hits[1..n].iter().rev() {
+                stack[*top].write(*e);
+                *top += 1;
+            }
+            Some(hits[0])
+        }
+    }
 }
 
 impl Bvh {
@@ -230,13 +283,9 @@ impl Bvh {
         mut visit: impl FnMut(&[u32], u8, &mut f32) -> bool,
         enter: impl Fn(&RayBoxTest, &Node, f32) -> ([f32; WIDTH], u32),
     ) {
-        // The binary tree is at most MAX_DEPTH + 32 levels deep (past MAX_DEPTH the builder
-        // halves by count, and there are fewer than 2^32 items); each 8-wide level, at
-        // least one binary level, pushes at most seven entries.
-        // Left uninitialised: zeroing it would cost more than a short traversal.
-        let mut stack = [std::mem::MaybeUninit::<Entry>::uninit(); (WIDTH - 1) * (MAX_DEPTH + 32) + WIDTH];
+        let mut stack: Stack = [std::mem::MaybeUninit::uninit(); _];
         let mut top = 0usize;
-        let mut current = Entry { index: 0, count: 0, tag: 0, t: 0.0 };
+        let mut current = Entry::default();
         loop {
             if current.count > 0 {
                 let first = current.index as usize;
@@ -245,54 +294,20 @@ impl Bvh {
                 }
             } else {
                 let node = &self.nodes[current.index as usize];
-                let (near, mut mask) = enter(ray, node, *tmax);
+                let (near, mask) = enter(ray, node, *tmax);
                 let entry = |i: u32| {
                     let child = node.child[i as usize];
                     Entry {
                         index: child & INDEX_MASK,
                         count: (child >> INDEX_BITS) as u8,
                         tag: if TAGS { node.tag[i as usize] } else { 0 },
+                        rays: 0,
                         t: near[i as usize],
                     }
                 };
-                // Most nodes are entered through one or two children: those skip the sort.
-                match mask.count_ones() {
-                    0 => {}
-                    1 => {
-                        current = entry(mask.trailing_zeros());
-                        continue;
-                    }
-                    2 => {
-                        let a = entry(mask.trailing_zeros());
-                        let b = entry((mask & (mask - 1)).trailing_zeros());
-                        let (first, second) = if b.t < a.t { (b, a) } else { (a, b) };
-                        stack[top].write(second);
-                        top += 1;
-                        current = first;
-                        continue;
-                    }
-                    _ => {
-                        // Children hit, nearest first: insertion sort of at most eight.
-                        let mut hits = [Entry::default(); WIDTH];
-                        let mut n = 0;
-                        while mask != 0 {
-                            let e = entry(mask.trailing_zeros());
-                            mask &= mask - 1;
-                            let mut k = n;
-                            while k > 0 && hits[k - 1].t > e.t {
-                                hits[k] = hits[k - 1];
-                                k -= 1;
-                            }
-                            hits[k] = e;
-                            n += 1;
-                        }
-                        for e in hits[1..n].iter().rev() {
-                            stack[top].write(*e);
-                            top += 1;
-                        }
-                        current = hits[0];
-                        continue;
-                    }
+                if let Some(e) = push_nearest_first(mask, entry, &mut stack, &mut top) {
+                    current = e;
+                    continue;
                 }
             }
             // Pop the next child the ray still reaches.
@@ -305,6 +320,196 @@ impl Bvh {
                 let e = unsafe { stack[top].assume_init() };
                 if e.t <= *tmax {
                     current = e;
+                    break;
+                }
+            }
+        }
+    }
+}
+
+/// Most rays in a packet ([`Bvh::traverse_packet`]).
+pub const PACKET: usize = 16;
+
+/// A packet's rays as bits (bit i for ray i).
+pub type RayMask = u16;
+
+/// The rays of `mask` whose `tmax` still reaches distance `t`.
+#[inline(always)]
+fn reaching(tmax: &[f32; PACKET], t: f32, mask: RayMask) -> RayMask {
+    let (lo, hi) =
+        (f32x8::new(tmax[..8].try_into().unwrap_or([0.0; 8])), f32x8::new(tmax[8..].try_into().unwrap_or([0.0; 8])));
+    let t = f32x8::splat(t);
+    let reach = lo.simd_ge(t).to_bitmask() | hi.simd_ge(t).to_bitmask() << 8;
+    mask & reach as RayMask
+}
+
+/// The node test of a packet: each ray of `rays` through [`enter_portable`] (or its AVX2
+/// twin `enter`); per child, the rays that enter it and the nearest of their entry distances.
+#[inline(always)]
+fn enter_packet(
+    tests: &[RayBoxTest],
+    tmax: &[f32; PACKET],
+    mut rays: RayMask,
+    node: &Node,
+    enter: impl Fn(&RayBoxTest, &Node, f32) -> ([f32; WIDTH], u32),
+) -> ([f32; WIDTH], [RayMask; WIDTH]) {
+    let mut nearest = [f32::INFINITY; WIDTH];
+    let mut entering = [0; WIDTH];
+    while rays != 0 {
+        let r = rays.trailing_zeros() as usize;
+        rays &= rays - 1;
+        let (near, mut mask) = enter(&tests[r], node, tmax[r]);
+        while mask != 0 {
+            let c = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            entering[c] |= 1 << r;
+            nearest[c] = nearest[c].min(near[c]);
+        }
+    }
+    (nearest, entering)
+}
+
+/// [`enter_packet`] with AVX2 and FMA, each ray through the arithmetic of [`enter_avx2`]
+/// (so the same boxes and distances), with the node's grid decoded once for all rays.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn enter_packet_avx2(
+    tests: &[RayBoxTest],
+    tmax: &[f32; PACKET],
+    mut rays: RayMask,
+    node: &Node,
+) -> ([f32; WIDTH], [RayMask; WIDTH]) {
+    use std::arch::x86_64::*;
+    let mut q = [_mm256_setzero_ps(); 6];
+    for (row, q) in q.iter_mut().enumerate() {
+        *q = _mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(_mm_cvtsi64_si128(i64::from_le_bytes(node.planes[row]))));
+    }
+    let child: [i32; WIDTH] = bytemuck::cast(node.child);
+    let child = _mm256_setr_epi32(child[0], child[1], child[2], child[3], child[4], child[5], child[6], child[7]);
+    let unused = _mm256_castsi256_ps(_mm256_cmpeq_epi32(child, _mm256_set1_epi32(-1)));
+    let infinity = _mm256_set1_ps(f32::INFINITY);
+    let mut nearest = infinity;
+    // Per ray, the children it enters, one byte each.
+    let mut entered = [0u8; PACKET];
+    while rays != 0 {
+        let r = rays.trailing_zeros() as usize;
+        rays &= rays - 1;
+        let ray = &tests[r];
+        let (scale, base) = ray.plane_factors(node);
+        let mut near = _mm256_set1_ps(ray.tmin);
+        let mut far = _mm256_set1_ps(tmax[r]);
+        for a in 0..3 {
+            let (s, b) = (_mm256_set1_ps(scale[a]), _mm256_set1_ps(base[a]));
+            let (t0, t1) = (_mm256_fmadd_ps(q[a], s, b), _mm256_fmadd_ps(q[a + 3], s, b));
+            near = _mm256_max_ps(near, _mm256_min_ps(t0, t1));
+            far = _mm256_min_ps(far, _mm256_max_ps(t0, t1));
+        }
+        far = _mm256_mul_ps(far, _mm256_set1_ps(EXIT_SLACK));
+        let hit = _mm256_andnot_ps(unused, _mm256_cmp_ps::<_CMP_LE_OQ>(near, far));
+        entered[r] = _mm256_movemask_ps(hit) as u8;
+        nearest = _mm256_min_ps(nearest, _mm256_blendv_ps(infinity, near, hit));
+    }
+    // Transpose the 16 x 8 bits: bit c of every ray's byte, gathered by a byte movemask.
+    let bytes: __m128i = bytemuck::cast(entered);
+    let mut entering = [0; WIDTH];
+    for (c, e) in entering.iter_mut().enumerate() {
+        *e = _mm_movemask_epi8(_mm_sll_epi64(bytes, _mm_cvtsi32_si128(7 - c as i32))) as RayMask;
+    }
+    (bytemuck::cast(nearest), entering)
+}
+
+impl Bvh {
+    /// [`Bvh::traverse`] for a packet of up to [`PACKET`] rays (`tests[i]` with `tmax[i]`,
+    /// for the rays `i` in `rays`) that mostly visit the same nodes, such as a pixel's samples: each node is fetched,
+    /// sorted and pushed once for all of them, and every leaf is handed to
+    /// `visit(ids, tag, rays, tmax)` with the rays that enter it. `visit` shortens their
+    /// `tmax` on hits and returns the rays that are done (any-hit queries), which then leave
+    /// the packet. Each ray sees every leaf it would see alone, so closest hits are the same.
+    #[inline]
+    pub fn traverse_packet<const TAGS: bool>(
+        &self,
+        tests: &[RayBoxTest],
+        rays: RayMask,
+        tmax: &mut [f32; PACKET],
+        visit: impl FnMut(&[u32], u8, RayMask, &mut [f32; PACKET]) -> RayMask,
+    ) {
+        // Rays without a test are not traced.
+        let rays = rays & (RayMask::MAX >> (PACKET - tests.len().min(PACKET)));
+        if self.nodes.is_empty() || rays == 0 {
+            return;
+        }
+        #[cfg(target_arch = "x86_64")]
+        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+            // SAFETY: the CPU has the features `traverse_packet_avx2` is compiled for.
+            return unsafe { self.traverse_packet_avx2::<TAGS>(tests, rays, tmax, visit) };
+        }
+        self.traverse_packet_with::<TAGS>(tests, rays, tmax, visit, |tests, tmax, rays, node| {
+            enter_packet(tests, tmax, rays, node, enter_portable)
+        })
+    }
+
+    /// [`Bvh::traverse_packet`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn traverse_packet_avx2<const TAGS: bool>(
+        &self,
+        tests: &[RayBoxTest],
+        rays: RayMask,
+        tmax: &mut [f32; PACKET],
+        visit: impl FnMut(&[u32], u8, RayMask, &mut [f32; PACKET]) -> RayMask,
+    ) {
+        self.traverse_packet_with::<TAGS>(tests, rays, tmax, visit, |tests, tmax, rays, node| {
+            enter_packet_avx2(tests, tmax, rays, node)
+        })
+    }
+
+    /// The packet traversal loop, with the node test `enter` of a packet ([`enter_packet`]).
+    #[inline(always)]
+    fn traverse_packet_with<const TAGS: bool>(
+        &self,
+        tests: &[RayBoxTest],
+        mut live: RayMask,
+        tmax: &mut [f32; PACKET],
+        mut visit: impl FnMut(&[u32], u8, RayMask, &mut [f32; PACKET]) -> RayMask,
+        enter: impl Fn(&[RayBoxTest], &[f32; PACKET], RayMask, &Node) -> ([f32; WIDTH], [RayMask; WIDTH]),
+    ) {
+        let mut stack: Stack = [std::mem::MaybeUninit::uninit(); _];
+        let mut top = 0usize;
+        let mut current = Entry { rays: live, ..Entry::default() };
+        loop {
+            if current.count > 0 {
+                let first = current.index as usize;
+                live &= !visit(&self.items[first..first + current.count as usize], current.tag, current.rays, tmax);
+            } else {
+                let node = &self.nodes[current.index as usize];
+                let (near, entering) = enter(tests, tmax, current.rays, node);
+                let mask = entering.iter().enumerate().fold(0, |m, (c, &r)| m | u32::from(r != 0) << c);
+                let entry = |i: u32| {
+                    let child = node.child[i as usize];
+                    Entry {
+                        index: child & INDEX_MASK,
+                        count: (child >> INDEX_BITS) as u8,
+                        tag: if TAGS { node.tag[i as usize] } else { 0 },
+                        rays: entering[i as usize],
+                        t: near[i as usize],
+                    }
+                };
+                if let Some(e) = push_nearest_first(mask, entry, &mut stack, &mut top) {
+                    current = e;
+                    continue;
+                }
+            }
+            // Pop the next child some live ray still reaches.
+            loop {
+                if top == 0 || live == 0 {
+                    return;
+                }
+                top -= 1;
+                // SAFETY: entries below `top` were written by the push above.
+                let e = unsafe { stack[top].assume_init() };
+                let rays = reaching(tmax, e.t, e.rays & live);
+                if rays != 0 {
+                    current = Entry { rays, ..e };
                     break;
                 }
             }
@@ -717,6 +922,51 @@ mod tests {
             }
         }
         assert!(crossing > 1000, "the test needs rays that cross boxes: {crossing}");
+    }
+
+    /// Per ray, the items in the leaves a packet traversal with node test `enter` visits.
+    fn visited_by_packet(
+        bvh: &Bvh,
+        tests: &[RayBoxTest],
+        enter: impl Fn(&[RayBoxTest], &[f32; PACKET], RayMask, &Node) -> ([f32; WIDTH], [RayMask; WIDTH]),
+    ) -> Vec<std::collections::BTreeSet<u32>> {
+        let mut seen = vec![std::collections::BTreeSet::new(); tests.len()];
+        let all = RayMask::MAX >> (PACKET - tests.len());
+        let visit = |ids: &[u32], _, rays: RayMask, _: &mut [f32; PACKET]| {
+            (0..tests.len()).filter(|i| rays >> i & 1 == 1).for_each(|i| seen[i].extend(ids.iter().copied()));
+            0
+        };
+        bvh.traverse_packet_with::<false>(tests, all, &mut [f32::INFINITY; PACKET], visit, enter);
+        seen
+    }
+
+    #[test]
+    fn a_packet_visits_what_each_of_its_rays_visits_alone() {
+        let mut rng = GenRng::seed_from_u64(5);
+        let bvh = Bvh::build(random_items(&mut rng, 3000));
+        for _ in 0..100 {
+            let o = Vec3::new(rng.random(), rng.random(), rng.random()) * 30.0 - 10.0;
+            let target = Vec3::new(rng.random(), rng.random(), rng.random()) * 10.0;
+            let n = rng.random_range(1..=PACKET);
+            let tests: Vec<RayBoxTest> = (0..n)
+                .map(|_| {
+                    let jitter = Vec3::new(rng.random(), rng.random(), rng.random()) * 0.5;
+                    RayBoxTest::new(o, (target + jitter - o).normalize(), 0.0)
+                })
+                .collect();
+            let portable = visited_by_packet(&bvh, &tests, |t, m, r, n| enter_packet(t, m, r, n, enter_portable));
+            for (test, seen) in tests.iter().zip(&portable) {
+                assert_eq!(*seen, visited(&bvh, test, enter_portable));
+            }
+            #[cfg(target_arch = "x86_64")]
+            if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+                // SAFETY: the CPU has AVX2 and FMA.
+                let wide = visited_by_packet(&bvh, &tests, |t, m, r, n| unsafe { enter_packet_avx2(t, m, r, n) });
+                for (test, seen) in tests.iter().zip(&wide) {
+                    assert_eq!(*seen, visited(&bvh, test, |r, n, t| unsafe { enter_avx2(r, n, t) }));
+                }
+            }
+        }
     }
 
     #[test]

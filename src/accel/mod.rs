@@ -12,7 +12,7 @@ pub use layers::{LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBL
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray, RayCone};
-use bvh::{BuildItem, Bvh, RayBoxTest};
+use bvh::{BuildItem, Bvh, RayBoxTest, RayMask, PACKET};
 use glam::Vec3;
 use lod::{LodCamera, LodLeaf, LodParams, LodRay, StrandLod, Widen};
 use rayon::prelude::*;
@@ -296,6 +296,101 @@ impl Accel {
             false
         });
         stopped
+    }
+}
+
+impl Accel {
+    /// The closest hits of a packet of up to [`PACKET`] rays (`hits[i]` for `rays[i]`), the
+    /// same as [`Accel::intersect`] gives each: rays that mostly cross the same boxes, like a
+    /// pixel's samples, share the node visits ([`Bvh::traverse_packet`]).
+    pub fn intersect_packet(&self, rays: &[Ray], hits: &mut [Option<Hit>]) {
+        let mut tmax = [0.0; PACKET];
+        rays.iter().zip(&mut tmax).for_each(|(r, t)| *t = r.tmax);
+        let origins: [(Vec3, Vec3, RayCone); PACKET] =
+            std::array::from_fn(|i| rays.get(i).map_or(Default::default(), |r| (r.origin, r.dir, r.cone)));
+        self.walk_packet(&origins[..rays.len().min(PACKET)], &mut tmax, |i, object, o, prims, widen, tmax| {
+            let r = &rays[i];
+            if let Some((prim, t, kind, level)) =
+                intersect_leaf(&o.shape, prims, r.origin, r.dir, *tmax, None, false, widen)
+            {
+                *tmax = t;
+                hits[i] = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
+            }
+            false
+        });
+    }
+
+    /// [`Accel::occluded`] for a packet of up to [`PACKET`] segments from `origins[i]` along
+    /// unit `dirs[i]` up to `tmax[i]`: bit i of the result is set when segment i is blocked.
+    pub fn occluded_packet(&self, origins: &[Vec3], dirs: &[Vec3], tmax: &[f32]) -> RayMask {
+        let n = origins.len().min(dirs.len()).min(tmax.len()).min(PACKET);
+        let mut t = [0.0; PACKET];
+        t[..n].copy_from_slice(&tmax[..n]);
+        let rays: [(Vec3, Vec3, RayCone); PACKET] =
+            std::array::from_fn(|i| if i < n { (origins[i], dirs[i], RayCone::default()) } else { Default::default() });
+        self.walk_packet(&rays[..n], &mut t, |i, _, o, prims, widen, t| {
+            intersect_leaf(&o.shape, prims, origins[i], dirs[i], *t, None, true, widen).is_some()
+        })
+    }
+
+    /// [`Accel::walk`] for a packet of up to [`PACKET`] rays (origin, unit direction, cone)
+    /// with their `tmax`: the top level and the objects without level of detail are
+    /// traversed by the packet, an object with level of detail ray by ray (each ray sees it
+    /// at its own level). `leaf(ray, object, o, prims, widen, tmax)` returns true when
+    /// that ray is done; the result holds the rays a leaf stopped.
+    #[inline(always)]
+    fn walk_packet(
+        &self,
+        rays: &[(Vec3, Vec3, RayCone)],
+        tmax: &mut [f32; PACKET],
+        mut leaf: impl FnMut(usize, u32, &Object, &[u32], Widen, &mut f32) -> bool,
+    ) -> RayMask {
+        let tests: [RayBoxTest; PACKET] = std::array::from_fn(|i| {
+            rays.get(i).map_or(RayBoxTest::new(Vec3::ZERO, Vec3::X, 0.0), |r| RayBoxTest::new(r.0, r.1, 0.0))
+        });
+        let tests = &tests[..rays.len()];
+        let mut stopped: RayMask = 0;
+        self.top.traverse_packet::<false>(tests, RayMask::MAX, tmax, |objects, _, mut live, tmax| {
+            for &object in objects {
+                let o = &self.objects[object as usize];
+                let mut done = 0;
+                if o.lod.is_none() {
+                    o.bvh.traverse_packet::<false>(tests, live, tmax, |prims, _, rays, tmax| {
+                        let mut done_here = 0;
+                        for_each_ray(rays, |i| {
+                            if leaf(i, object, o, prims, None, &mut tmax[i]) {
+                                done_here |= 1 << i;
+                            }
+                        });
+                        done |= done_here;
+                        done_here
+                    });
+                } else {
+                    for_each_ray(live, |i| {
+                        let (origin, dir, cone) = rays[i];
+                        let lod_ray = LodRay::new(origin, dir, cone);
+                        if o.traverse(&tests[i], &lod_ray, &mut tmax[i], |prims, widen, t| {
+                            leaf(i, object, o, prims, widen, t)
+                        }) {
+                            done |= 1 << i;
+                        }
+                    });
+                }
+                stopped |= done;
+                live &= !done;
+            }
+            stopped
+        });
+        stopped
+    }
+}
+
+/// Calls `f(i)` for every ray `i` in the mask, in order.
+#[inline(always)]
+fn for_each_ray(mut rays: RayMask, mut f: impl FnMut(usize)) {
+    while rays != 0 {
+        f(rays.trailing_zeros() as usize);
+        rays &= rays - 1;
     }
 }
 
@@ -636,6 +731,46 @@ mod tests {
             assert_eq!(blocked, expected.is_some_and(|e| e.0 < 5.0));
         }
         assert!(hits > 500, "the test needs rays that hit: {hits}");
+    }
+
+    #[test]
+    fn packets_find_the_hits_of_single_rays() {
+        let mut rng = GenRng::seed_from_u64(11);
+        let plain = random_scene(&mut rng);
+        // The same objects, the strands with level of detail (traversed ray by ray).
+        let shapes = plain.objects.iter().map(|o| (o.shape.clone(), o.material, Some(LodParams::default())));
+        let lod = Accel::build_with_lod(shapes.collect());
+        let (mut hits, mut blocked) = (0, 0);
+        for accel in [&plain, &lod] {
+            for p in 0..300 {
+                // A pixel's worth of rays from one eye (coherent), or scattered ones.
+                let eye = random_vec(&mut rng, 12.0);
+                let target = random_vec(&mut rng, 3.0);
+                let n = rng.random_range(1..=PACKET);
+                let rays: Vec<Ray> = (0..n)
+                    .map(|_| {
+                        let origin = if p % 3 == 0 { random_vec(&mut rng, 12.0) } else { eye };
+                        let mut ray = Ray::new(origin, (target + random_vec(&mut rng, 0.05) - origin).normalize());
+                        ray.cone = RayCone { width: 0.0, spread: 0.002 };
+                        ray
+                    })
+                    .collect();
+                let mut got = vec![None; n];
+                accel.intersect_packet(&rays, &mut got);
+                let origins: Vec<Vec3> = rays.iter().map(|r| r.origin).collect();
+                let dirs: Vec<Vec3> = rays.iter().map(|r| r.dir).collect();
+                let tmax: Vec<f32> = (0..n).map(|i| 2.0 + i as f32).collect();
+                let occluded = accel.occluded_packet(&origins, &dirs, &tmax);
+                for (i, ray) in rays.iter().enumerate() {
+                    assert_eq!(got[i], accel.intersect(ray), "ray {i} of packet {p}");
+                    let expected = accel.occluded(ray.origin, ray.dir, tmax[i], None);
+                    assert_eq!(occluded >> i & 1 == 1, expected, "shadow ray {i} of packet {p}");
+                    hits += got[i].is_some() as u32;
+                    blocked += expected as u32;
+                }
+            }
+        }
+        assert!(hits > 1000 && blocked > 500, "the test needs rays that hit: {hits}, {blocked}");
     }
 
     #[test]

@@ -8,7 +8,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 use tress::accel::Shape;
-use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_shadow, Memory};
+use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_shadow, Memory, Tracing};
 use tress::film::Region;
 use tress::partial::{fingerprint, Checkpointer, Partial};
 use tress::render::{render_tiles, Control, TiledFilm};
@@ -96,6 +96,9 @@ enum Command {
         /// Repetitions of each measurement (the median is reported).
         #[arg(long, default_value_t = 3)]
         reps: usize,
+        /// How rays are traced: one at a time, or a pixel's samples as one packet.
+        #[arg(long, value_enum, default_value = "packet")]
+        tracing: Tracing,
     },
 }
 
@@ -304,8 +307,8 @@ fn run(cli: Cli) -> Result<()> {
             }
             Ok(())
         }
-        Command::Bench { scene, overrides, thread_counts, reps } => {
-            bench(scene.as_deref(), &overrides, &thread_counts, reps)
+        Command::Bench { scene, overrides, thread_counts, reps, tracing } => {
+            bench(scene.as_deref(), &overrides, &thread_counts, reps, tracing)
         }
     }
 }
@@ -615,7 +618,7 @@ fn lod_info(world: &World) {
     }
 }
 
-fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usize) -> Result<()> {
+fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usize, tracing: Tracing) -> Result<()> {
     let desc = load(scene, o)?;
     let all = pool(0)?.current_num_threads();
     let median = |mut v: Vec<f64>| {
@@ -661,12 +664,12 @@ fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usi
         let mut shadow = Vec::new();
         let mut origins = Vec::new();
         for _ in 0..reps.max(1) {
-            let (o, r) = pool.install(|| trace_primary(&world, threads));
+            let (o, r) = pool.install(|| trace_primary(&world, threads, tracing));
             primary.push(r);
             origins = o;
         }
         for _ in 0..reps.max(1) {
-            shadow.push(pool.install(|| trace_shadow(&world, &origins, light, threads)).1);
+            shadow.push(pool.install(|| trace_shadow(&world, &origins, light, threads, tracing)).1);
         }
         for (name, rates) in [("primary", &primary), ("shadow", &shadow)] {
             let wall: Vec<f64> = rates.iter().map(|r| r.mrays()).collect();
