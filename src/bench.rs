@@ -8,11 +8,10 @@
 //! rays start at each primary hit moved 2e-5 along the geometric normal facing the viewer
 //! and go towards the distant light.
 
-use crate::accel::bvh::PACKET;
 use crate::accel::{Accel, Hit, HitKind, Shape};
 use crate::light::Light;
 use crate::math::rng::hash_u32;
-use crate::math::Ray;
+use crate::math::{Ray, PACKET};
 use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings, World};
 use crate::shading::Material;
 use crate::stats::process_cpu_time;

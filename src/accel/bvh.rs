@@ -11,7 +11,7 @@
 //! Items may carry a small tag (level of detail: the widest level a hair segment is drawn
 //! at); a leaf hands the largest of its items' tags to the callback.
 
-use crate::math::Aabb;
+use crate::math::{Aabb, RayMask, PACKET};
 use glam::{Vec3, Vec3A};
 use rayon::prelude::*;
 use wide::{bytemuck, f32x4, f32x8, u32x4};
@@ -326,12 +326,6 @@ impl Bvh {
         }
     }
 }
-
-/// Most rays in a packet ([`Bvh::traverse_packet`]).
-pub const PACKET: usize = 16;
-
-/// A packet's rays as bits (bit i for ray i).
-pub type RayMask = u16;
 
 /// The rays of `mask` whose `tmax` still reaches distance `t`.
 #[inline(always)]

@@ -7,7 +7,7 @@
 //! traversal.
 
 use super::lod::Widen;
-use super::{for_each_group, Accel, Hit, HitKind, Object, Shape, Skip};
+use super::{for_each_group, Accel, Hit, HitKind, LeafRay, Object, Shape, Skip};
 use crate::geometry::{segment, triangle, StrandSet};
 use crate::math::rng::{hash_combine, unit_float};
 use crate::math::{Ray, RayCone};
@@ -93,7 +93,7 @@ fn strand_hits(
     for_each_group(
         s,
         prims,
-        (origin, dir),
+        LeafRay::new(origin, dir),
         skipped,
         widen,
         #[inline(always)]

@@ -11,8 +11,8 @@ pub mod lod;
 pub use layers::{LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
-use crate::math::{Aabb, Ray, RayCone};
-use bvh::{BuildItem, Bvh, RayBoxTest, RayMask, PACKET};
+use crate::math::{Aabb, Ray, RayCone, RayMask, PACKET};
+use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
 use lod::{LodCamera, LodLeaf, LodParams, LodRay, StrandLod, Widen};
 use rayon::prelude::*;
@@ -247,7 +247,7 @@ impl Accel {
         let mut best = None;
         self.walk(ray.origin, ray.dir, ray.cone, 0.0, &mut tmax, |object, o, prims, widen, tmax| {
             if let Some((prim, t, kind, level)) =
-                intersect_leaf(&o.shape, prims, ray.origin, ray.dir, *tmax, None, false, widen)
+                intersect_leaf(&o.shape, prims, LeafRay::new(ray.origin, ray.dir), *tmax, None, false, widen)
             {
                 *tmax = t;
                 best = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
@@ -263,7 +263,7 @@ impl Accel {
         let mut t = tmax;
         self.walk(origin, dir, RayCone::default(), 0.0, &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
-            intersect_leaf(&o.shape, prims, origin, dir, *t, skip, true, widen).is_some()
+            intersect_leaf(&o.shape, prims, LeafRay::new(origin, dir), *t, skip, true, widen).is_some()
         })
     }
 
@@ -302,17 +302,14 @@ impl Accel {
 impl Accel {
     /// The closest hits of a packet of up to [`PACKET`] rays (`hits[i]` for `rays[i]`), the
     /// same as [`Accel::intersect`] gives each: rays that mostly cross the same boxes, like a
-    /// pixel's samples, share the node visits ([`Bvh::traverse_packet`]).
+    /// pixel's samples, share the node visits ([`Bvh::traverse_packet`]) and the loading of
+    /// strand leaves ([`segment::near8_packet`]).
     pub fn intersect_packet(&self, rays: &[Ray], hits: &mut [Option<Hit>]) {
+        let rays = &rays[..rays.len().min(PACKET)];
         let mut tmax = [0.0; PACKET];
         rays.iter().zip(&mut tmax).for_each(|(r, t)| *t = r.tmax);
-        let origins: [(Vec3, Vec3, RayCone); PACKET] =
-            std::array::from_fn(|i| rays.get(i).map_or(Default::default(), |r| (r.origin, r.dir, r.cone)));
-        self.walk_packet(&origins[..rays.len().min(PACKET)], &mut tmax, |i, object, o, prims, widen, tmax| {
-            let r = &rays[i];
-            if let Some((prim, t, kind, level)) =
-                intersect_leaf(&o.shape, prims, r.origin, r.dir, *tmax, None, false, widen)
-            {
+        self.walk_packet(rays, &mut tmax, |i, object, o, prims, widen, ray, tmax| {
+            if let Some((prim, t, kind, level)) = intersect_leaf(&o.shape, prims, ray, *tmax, None, false, widen) {
                 *tmax = t;
                 hits[i] = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
             }
@@ -326,27 +323,27 @@ impl Accel {
         let n = origins.len().min(dirs.len()).min(tmax.len()).min(PACKET);
         let mut t = [0.0; PACKET];
         t[..n].copy_from_slice(&tmax[..n]);
-        let rays: [(Vec3, Vec3, RayCone); PACKET] =
-            std::array::from_fn(|i| if i < n { (origins[i], dirs[i], RayCone::default()) } else { Default::default() });
-        self.walk_packet(&rays[..n], &mut t, |i, _, o, prims, widen, t| {
-            intersect_leaf(&o.shape, prims, origins[i], dirs[i], *t, None, true, widen).is_some()
+        let rays: [Ray; PACKET] =
+            std::array::from_fn(|i| if i < n { Ray::new(origins[i], dirs[i]) } else { Ray::new(Vec3::ZERO, Vec3::X) });
+        self.walk_packet(&rays[..n], &mut t, |_, _, o, prims, widen, ray, t| {
+            intersect_leaf(&o.shape, prims, ray, *t, None, true, widen).is_some()
         })
     }
 
-    /// [`Accel::walk`] for a packet of up to [`PACKET`] rays (origin, unit direction, cone)
-    /// with their `tmax`: the top level and the objects without level of detail are
-    /// traversed by the packet, an object with level of detail ray by ray (each ray sees it
-    /// at its own level). `leaf(ray, object, o, prims, widen, tmax)` returns true when
-    /// that ray is done; the result holds the rays a leaf stopped.
+    /// [`Accel::walk`] for a packet of up to [`PACKET`] rays with their `tmax`: the top
+    /// level and the objects without level of detail are traversed by the packet, an object
+    /// with level of detail ray by ray (each ray sees it at its own level).
+    /// `leaf(ray, object, o, prims, widen, leaf_ray, tmax)` tests a leaf for ray `ray`, and
+    /// returns true when that ray is done; the result holds the rays a leaf stopped.
     #[inline(always)]
     fn walk_packet(
         &self,
-        rays: &[(Vec3, Vec3, RayCone)],
+        rays: &[Ray],
         tmax: &mut [f32; PACKET],
-        mut leaf: impl FnMut(usize, u32, &Object, &[u32], Widen, &mut f32) -> bool,
+        mut leaf: impl FnMut(usize, u32, &Object, &[u32], Widen, LeafRay, &mut f32) -> bool,
     ) -> RayMask {
         let tests: [RayBoxTest; PACKET] = std::array::from_fn(|i| {
-            rays.get(i).map_or(RayBoxTest::new(Vec3::ZERO, Vec3::X, 0.0), |r| RayBoxTest::new(r.0, r.1, 0.0))
+            rays.get(i).map_or(RayBoxTest::new(Vec3::ZERO, Vec3::X, 0.0), |r| RayBoxTest::new(r.origin, r.dir, 0.0))
         });
         let tests = &tests[..rays.len()];
         let mut stopped: RayMask = 0;
@@ -354,27 +351,32 @@ impl Accel {
             for &object in objects {
                 let o = &self.objects[object as usize];
                 let mut done = 0;
-                if o.lod.is_none() {
-                    o.bvh.traverse_packet::<false>(tests, live, tmax, |prims, _, rays, tmax| {
+                match (&o.shape, &o.lod) {
+                    (_, Some(_)) => for_each_ray(live, |i| {
+                        let (r, lod_ray) = (&rays[i], LodRay::new(rays[i].origin, rays[i].dir, rays[i].cone));
+                        let ray = LeafRay::new(r.origin, r.dir);
+                        if o.traverse(&tests[i], &lod_ray, &mut tmax[i], |prims, widen, t| {
+                            leaf(i, object, o, prims, widen, ray, t)
+                        }) {
+                            done |= 1 << i;
+                        }
+                    }),
+                    (shape, None) => o.bvh.traverse_packet::<false>(tests, live, tmax, |prims, _, entering, tmax| {
+                        // A strand leaf is loaded once and culled for all its rays.
+                        let near = match shape {
+                            Shape::Strands(s) => Some(segment::near8_packet(rays, entering, &s.points, prims, 1.0)),
+                            Shape::Mesh(_) => None,
+                        };
                         let mut done_here = 0;
-                        for_each_ray(rays, |i| {
-                            if leaf(i, object, o, prims, None, &mut tmax[i]) {
+                        for_each_ray(entering, |i| {
+                            let ray = LeafRay { origin: rays[i].origin, dir: rays[i].dir, near: near.map(|n| n[i]) };
+                            if ray.near != Some(0) && leaf(i, object, o, prims, None, ray, &mut tmax[i]) {
                                 done_here |= 1 << i;
                             }
                         });
                         done |= done_here;
                         done_here
-                    });
-                } else {
-                    for_each_ray(live, |i| {
-                        let (origin, dir, cone) = rays[i];
-                        let lod_ray = LodRay::new(origin, dir, cone);
-                        if o.traverse(&tests[i], &lod_ray, &mut tmax[i], |prims, widen, t| {
-                            leaf(i, object, o, prims, widen, t)
-                        }) {
-                            done |= 1 << i;
-                        }
-                    });
+                    }),
                 }
                 stopped |= done;
                 live &= !done;
@@ -413,6 +415,24 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
     }
 }
 
+/// A ray as a leaf's test sees it.
+#[derive(Clone, Copy, Debug)]
+struct LeafRay {
+    origin: Vec3,
+    /// Unit direction.
+    dir: Vec3,
+    /// For a strand leaf (at most eight segments, full detail) traced by a packet, the bits
+    /// [`segment::near8`] gives the ray, computed for the whole packet at once.
+    near: Option<u32>,
+}
+
+impl LeafRay {
+    /// The ray from `origin` along unit `dir`, its leaf's bound not yet computed.
+    fn new(origin: Vec3, dir: Vec3) -> LeafRay {
+        LeafRay { origin, dir, near: None }
+    }
+}
+
 /// The nearest hit among a leaf's primitives before `tmax`, ignoring `skip`: (primitive,
 /// distance, where, level); with `any`, the first hit found. Segments are tested four at a
 /// time, their radii widened for the ray's level of detail by `widen`.
@@ -421,8 +441,7 @@ fn build_items(shape: &Shape) -> Vec<BuildItem> {
 fn intersect_leaf(
     shape: &Shape,
     prims: &[u32],
-    origin: Vec3,
-    dir: Vec3,
+    ray: LeafRay,
     tmax: f32,
     skip: Option<Skip>,
     any: bool,
@@ -434,7 +453,7 @@ fn intersect_leaf(
     match shape {
         Shape::Mesh(m) => {
             for &p in prims {
-                if let Some(h) = triangle::intersect_triangle(origin, dir, 0.0, tmax, m.corners(p)) {
+                if let Some(h) = triangle::intersect_triangle(ray.origin, ray.dir, 0.0, tmax, m.corners(p)) {
                     tmax = h.t;
                     best = Some((p, h.t, HitKind::Triangle { b1: h.b1, b2: h.b2 }, 0));
                     if any {
@@ -446,8 +465,8 @@ fn intersect_leaf(
         // Two copies of the loop: at full detail `widen` is a constant there, and the
         // segments are tested as they are, without the level of detail's per-lane work.
         Shape::Strands(s) => match widen {
-            None => return strand_leaf(s, prims, (origin, dir), tmax, skipped, any, None),
-            Some(view) => return strand_leaf(s, prims, (origin, dir), tmax, skipped, any, Some(view)),
+            None => return strand_leaf(s, prims, ray, tmax, skipped, any, None),
+            Some(view) => return strand_leaf(s, prims, ray, tmax, skipped, any, Some(view)),
         },
     }
     best
@@ -458,7 +477,7 @@ fn intersect_leaf(
 fn strand_leaf(
     s: &StrandSet,
     prims: &[u32],
-    (origin, dir): (Vec3, Vec3),
+    ray: LeafRay,
     mut tmax: f32,
     skipped: impl Fn(u32) -> bool,
     any: bool,
@@ -468,11 +487,11 @@ fn strand_leaf(
     for_each_group(
         s,
         prims,
-        (origin, dir),
+        ray,
         skipped,
         widen,
         #[inline(always)]
-        |ids, lanes| exact4(s, (origin, dir), ids, lanes, any, widen, &mut tmax, &mut best),
+        |ids, lanes| exact4(s, (ray.origin, ray.dir), ids, lanes, any, widen, &mut tmax, &mut best),
     );
     best
 }
@@ -488,7 +507,7 @@ fn strand_leaf(
 fn for_each_group(
     s: &StrandSet,
     prims: &[u32],
-    (origin, dir): (Vec3, Vec3),
+    ray: LeafRay,
     skipped: impl Fn(u32) -> bool,
     widen: Widen,
     mut test: impl FnMut(&[u32], &Lanes4) -> bool,
@@ -508,7 +527,10 @@ fn for_each_group(
                 &decoded[..leaf.len()]
             }
         };
-        let mut near = segment::near8(origin, dir, &s.points, firsts, widest);
+        let mut near = match ray.near {
+            Some(near) => near,
+            None => segment::near8(ray.origin, ray.dir, &s.points, firsts, widest),
+        };
         while near != 0 {
             let mut ids = [0; 4];
             let mut n = 0;
@@ -659,7 +681,7 @@ fn lod_seed(object: usize) -> u32 {
 /// One primitive's hit before `tmax`: (distance, where).
 #[cfg(test)]
 fn intersect_primitive(shape: &Shape, prim: u32, origin: Vec3, dir: Vec3, tmax: f32) -> Option<(f32, HitKind)> {
-    intersect_leaf(shape, &[prim], origin, dir, tmax, None, false, None).map(|(_, t, k, _)| (t, k))
+    intersect_leaf(shape, &[prim], LeafRay::new(origin, dir), tmax, None, false, None).map(|(_, t, k, _)| (t, k))
 }
 
 #[cfg(test)]

@@ -23,6 +23,7 @@
 // The tests below are written `!(x > 0.0)` on purpose: a NaN must fail them and be rejected.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use crate::math::{Ray, RayMask, PACKET};
 use glam::Vec3;
 use wide::{bytemuck, f32x4, u32x4};
 
@@ -162,69 +163,144 @@ pub fn near8(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32], radiu
     near
 }
 
+/// [`near8`] for a packet of rays (`rays[i]` for the rays `i` in `mask`; bit i of a
+/// [`RayMask`]): the same bits for each ray as [`near8`] gives it alone, with the
+/// segments loaded and transposed once for all of them on AVX2 CPUs.
+///
+/// Panics like [`near8`], or if `mask` names a ray past the end of `rays`.
+#[inline]
+pub fn near8_packet(
+    rays: &[Ray],
+    mut mask: RayMask,
+    points: &[[f32; 4]],
+    firsts: &[u32],
+    radius_scale: f32,
+) -> [u32; PACKET] {
+    assert!(firsts.len() <= 8, "near8 takes at most eight segments");
+    let mut near = [0; PACKET];
+    #[cfg(target_arch = "x86_64")]
+    if std::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has the features `Near8Avx2`'s functions are compiled for.
+        unsafe {
+            let segments = Near8Avx2::load(points, firsts, radius_scale);
+            while mask != 0 {
+                let i = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                near[i] = segments.near(rays[i].origin, rays[i].dir);
+            }
+        }
+        return near;
+    }
+    while mask != 0 {
+        let i = mask.trailing_zeros() as usize;
+        mask &= mask - 1;
+        near[i] = near8(rays[i].origin, rays[i].dir, points, firsts, radius_scale);
+    }
+    near
+}
+
 /// [`near8`]'s one 8-wide pass: [`Candidates::new`] written with AVX2 intrinsics, operation
 /// for operation (no fused multiply-adds), so both give the same bits.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn near8_avx2(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32], radius_scale: f32) -> u32 {
-    use std::arch::x86_64::*;
-    // Straight-line code, no helper closures: those would be compiled without AVX2 and called.
-    // Both end points of each segment; all zeros (no surface) past the last segment.
-    let mut ends = [[[0.0f32; 4]; 8]; 2];
-    for (i, &first) in firsts.iter().enumerate() {
-        ends[0][i] = points[first as usize];
-        ends[1][i] = points[first as usize + 1];
+    Near8Avx2::load(points, firsts, radius_scale).near(origin, dir)
+}
+
+/// Eight segments in AVX2 registers, structure of arrays (segment i in lane i), with what
+/// [`near8`]'s bound needs of them alone: first points, axes, squared widest radius, and
+/// which lanes hold a segment with a surface.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Near8Avx2 {
+    x0: std::arch::x86_64::__m256,
+    y0: std::arch::x86_64::__m256,
+    z0: std::arch::x86_64::__m256,
+    ax: std::arch::x86_64::__m256,
+    ay: std::arch::x86_64::__m256,
+    az: std::arch::x86_64::__m256,
+    rmax2: std::arch::x86_64::__m256,
+    valid: std::arch::x86_64::__m256,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Near8Avx2 {
+    /// Loads the segments starting at `firsts` (at most eight), radii times `radius_scale`.
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn load(points: &[[f32; 4]], firsts: &[u32], radius_scale: f32) -> Near8Avx2 {
+        use std::arch::x86_64::*;
+        // Straight-line code, no helper closures: those would be compiled without AVX2 and called.
+        // Both end points of each segment; all zeros (no surface) past the last segment.
+        let mut ends = [[[0.0f32; 4]; 8]; 2];
+        for (i, &first) in firsts.iter().enumerate() {
+            ends[0][i] = points[first as usize];
+            ends[1][i] = points[first as usize + 1];
+        }
+        // Structure of arrays: x, y, z and radius of one end of the eight segments, segment i
+        // in lane i (a 4x4 transpose in each 128-bit half: segments 0-3 and 4-7).
+        let mut soa = [[_mm256_setzero_ps(); 4]; 2];
+        for (end, points) in ends.iter().enumerate() {
+            let row = |k: usize| _mm256_set_m128(bytemuck::cast(points[k + 4]), bytemuck::cast(points[k]));
+            let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+            let (t0, t1) = (_mm256_unpacklo_ps(r0, r1), _mm256_unpackhi_ps(r0, r1));
+            let (t2, t3) = (_mm256_unpacklo_ps(r2, r3), _mm256_unpackhi_ps(r2, r3));
+            soa[end] = [
+                _mm256_shuffle_ps::<0x44>(t0, t2),
+                _mm256_shuffle_ps::<0xee>(t0, t2),
+                _mm256_shuffle_ps::<0x44>(t1, t3),
+                _mm256_shuffle_ps::<0xee>(t1, t3),
+            ];
+        }
+        let [[x0, y0, z0, r0], [x1, y1, z1, r1]] = soa;
+        let (r0, r1) =
+            (_mm256_mul_ps(r0, _mm256_set1_ps(radius_scale)), _mm256_mul_ps(r1, _mm256_set1_ps(radius_scale)));
+        let zero = _mm256_setzero_ps();
+        let valid = _mm256_and_ps(
+            _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(r0, zero), _mm256_cmp_ps::<_CMP_GE_OQ>(r1, zero)),
+            _mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_add_ps(r0, r1), zero),
+        );
+        let (ax, ay, az) = (_mm256_sub_ps(x1, x0), _mm256_sub_ps(y1, y0), _mm256_sub_ps(z1, z0));
+        let l2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, ax), _mm256_mul_ps(ay, ay)), _mm256_mul_ps(az, az));
+        let valid = _mm256_and_ps(valid, _mm256_cmp_ps::<_CMP_GT_OQ>(l2, zero));
+        let rmax = _mm256_max_ps(r0, r1);
+        Near8Avx2 { x0, y0, z0, ax, ay, az, rmax2: _mm256_mul_ps(rmax, rmax), valid }
     }
-    // Structure of arrays: x, y, z and radius of one end of the eight segments, segment i
-    // in lane i (a 4x4 transpose in each 128-bit half: segments 0-3 and 4-7).
-    let mut soa = [[_mm256_setzero_ps(); 4]; 2];
-    for (end, points) in ends.iter().enumerate() {
-        let row = |k: usize| _mm256_set_m128(bytemuck::cast(points[k + 4]), bytemuck::cast(points[k]));
-        let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
-        let (t0, t1) = (_mm256_unpacklo_ps(r0, r1), _mm256_unpackhi_ps(r0, r1));
-        let (t2, t3) = (_mm256_unpacklo_ps(r2, r3), _mm256_unpackhi_ps(r2, r3));
-        soa[end] = [
-            _mm256_shuffle_ps::<0x44>(t0, t2),
-            _mm256_shuffle_ps::<0xee>(t0, t2),
-            _mm256_shuffle_ps::<0x44>(t1, t3),
-            _mm256_shuffle_ps::<0xee>(t1, t3),
-        ];
+
+    /// The bits of [`near8`] for the ray from `origin` along `dir`.
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn near(&self, origin: Vec3, dir: Vec3) -> u32 {
+        use std::arch::x86_64::*;
+        let Near8Avx2 { x0, y0, z0, ax, ay, az, rmax2, valid } = *self;
+        let zero = _mm256_setzero_ps();
+        let sign = _mm256_set1_ps(-0.0);
+        let (dx, dy, dz) = (_mm256_set1_ps(dir.x), _mm256_set1_ps(dir.y), _mm256_set1_ps(dir.z));
+        let nx = _mm256_sub_ps(_mm256_mul_ps(dy, az), _mm256_mul_ps(dz, ay));
+        let ny = _mm256_sub_ps(_mm256_mul_ps(dz, ax), _mm256_mul_ps(dx, az));
+        let nz = _mm256_sub_ps(_mm256_mul_ps(dx, ay), _mm256_mul_ps(dy, ax));
+        let wx = _mm256_sub_ps(_mm256_set1_ps(origin.x), x0);
+        let wy = _mm256_sub_ps(_mm256_set1_ps(origin.y), y0);
+        let wz = _mm256_sub_ps(_mm256_set1_ps(origin.z), z0);
+        let n2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(nx, nx), _mm256_mul_ps(ny, ny)), _mm256_mul_ps(nz, nz));
+        let w_inf = _mm256_max_ps(
+            _mm256_max_ps(_mm256_andnot_ps(sign, wx), _mm256_andnot_ps(sign, wy)),
+            _mm256_andnot_ps(sign, wz),
+        );
+        let n_inf = _mm256_max_ps(
+            _mm256_max_ps(_mm256_andnot_ps(sign, nx), _mm256_andnot_ps(sign, ny)),
+            _mm256_andnot_ps(sign, nz),
+        );
+        let e = _mm256_mul_ps(_mm256_mul_ps(_mm256_set1_ps(3.0 / 262_144.0), w_inf), n_inf);
+        let wn = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, nx), _mm256_mul_ps(wy, ny)), _mm256_mul_ps(wz, nz));
+        let m = _mm256_sub_ps(_mm256_andnot_ps(sign, wn), e);
+        let bound = _mm256_mul_ps(_mm256_mul_ps(rmax2, n2), _mm256_set1_ps(1.0 + 1.0 / 512.0));
+        let far = _mm256_and_ps(
+            _mm256_cmp_ps::<_CMP_GT_OQ>(m, zero),
+            _mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_mul_ps(m, m), bound),
+        );
+        _mm256_movemask_ps(_mm256_andnot_ps(far, valid)) as u32
     }
-    let [[x0, y0, z0, r0], [x1, y1, z1, r1]] = soa;
-    let (r0, r1) = (_mm256_mul_ps(r0, _mm256_set1_ps(radius_scale)), _mm256_mul_ps(r1, _mm256_set1_ps(radius_scale)));
-    let zero = _mm256_setzero_ps();
-    let sign = _mm256_set1_ps(-0.0);
-    let valid = _mm256_and_ps(
-        _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(r0, zero), _mm256_cmp_ps::<_CMP_GE_OQ>(r1, zero)),
-        _mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_add_ps(r0, r1), zero),
-    );
-    let (ax, ay, az) = (_mm256_sub_ps(x1, x0), _mm256_sub_ps(y1, y0), _mm256_sub_ps(z1, z0));
-    let l2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, ax), _mm256_mul_ps(ay, ay)), _mm256_mul_ps(az, az));
-    let valid = _mm256_and_ps(valid, _mm256_cmp_ps::<_CMP_GT_OQ>(l2, zero));
-    let (dx, dy, dz) = (_mm256_set1_ps(dir.x), _mm256_set1_ps(dir.y), _mm256_set1_ps(dir.z));
-    let nx = _mm256_sub_ps(_mm256_mul_ps(dy, az), _mm256_mul_ps(dz, ay));
-    let ny = _mm256_sub_ps(_mm256_mul_ps(dz, ax), _mm256_mul_ps(dx, az));
-    let nz = _mm256_sub_ps(_mm256_mul_ps(dx, ay), _mm256_mul_ps(dy, ax));
-    let wx = _mm256_sub_ps(_mm256_set1_ps(origin.x), x0);
-    let wy = _mm256_sub_ps(_mm256_set1_ps(origin.y), y0);
-    let wz = _mm256_sub_ps(_mm256_set1_ps(origin.z), z0);
-    let n2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(nx, nx), _mm256_mul_ps(ny, ny)), _mm256_mul_ps(nz, nz));
-    let w_inf = _mm256_max_ps(
-        _mm256_max_ps(_mm256_andnot_ps(sign, wx), _mm256_andnot_ps(sign, wy)),
-        _mm256_andnot_ps(sign, wz),
-    );
-    let n_inf = _mm256_max_ps(
-        _mm256_max_ps(_mm256_andnot_ps(sign, nx), _mm256_andnot_ps(sign, ny)),
-        _mm256_andnot_ps(sign, nz),
-    );
-    let e = _mm256_mul_ps(_mm256_mul_ps(_mm256_set1_ps(3.0 / 262_144.0), w_inf), n_inf);
-    let wn = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, nx), _mm256_mul_ps(wy, ny)), _mm256_mul_ps(wz, nz));
-    let m = _mm256_sub_ps(_mm256_andnot_ps(sign, wn), e);
-    let rmax = _mm256_max_ps(r0, r1);
-    let bound = _mm256_mul_ps(_mm256_mul_ps(_mm256_mul_ps(rmax, rmax), n2), _mm256_set1_ps(1.0 + 1.0 / 512.0));
-    let far =
-        _mm256_and_ps(_mm256_cmp_ps::<_CMP_GT_OQ>(m, zero), _mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_mul_ps(m, m), bound));
-    _mm256_movemask_ps(_mm256_andnot_ps(far, valid)) as u32
 }
 
 /// The result of [`intersect_cylinder4`]: which lanes hit, and where.
@@ -1095,7 +1171,8 @@ mod tests {
         // Leaves of one to eight segments, some degenerate (zero length, zero or NaN radius)
         // and some far, against rays from near and far, radii widened by a random factor
         // half of the time: near8's one 8-wide pass (AVX2 on this machine) must keep exactly
-        // the lanes `Candidates` keeps on the widened segments, four at a time.
+        // the lanes `Candidates` keeps on the widened segments, four at a time; so must
+        // near8_packet for each ray of a packet.
         let mut rng = Lcg(11);
         let mut kept = 0;
         for _ in 0..20_000 {
@@ -1126,6 +1203,10 @@ mod tests {
                 expected |= (Candidates::new(o, d, p0, p1).near().to_bitmask() & 0xf) << (4 * half);
             }
             assert_eq!(near8(o, d, &points, &firsts, widen), expected, "o {o:?} d {d:?} {points:?} x{widen}");
+            // As the third ray of a packet (the others elsewhere), with the leaf loaded once.
+            let rays = [Ray::new(o, d); 4];
+            let packet = near8_packet(&rays, 0b1100, &points, &firsts, widen);
+            assert_eq!((packet[0], packet[2], packet[3]), (0, expected, expected));
             kept += expected.count_ones();
         }
         assert!(kept > 1000, "too few segments near the rays to test anything: {kept}");

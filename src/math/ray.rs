@@ -102,3 +102,9 @@ fn next_up(x: f32) -> f32 {
 fn next_down(x: f32) -> f32 {
     -next_up(-x)
 }
+
+/// Most rays traced together as one packet (a pixel's samples; [`crate::accel::Accel::intersect_packet`]).
+pub const PACKET: usize = 16;
+
+/// The rays of a packet as bits: bit i for ray i.
+pub type RayMask = u16;
