@@ -17,7 +17,7 @@ cargo build --release --quiet --manifest-path "$root/Cargo.toml"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 "$root/target/release/tress" bench "$dir" --thread-counts 1,2 --reps "$reps" | tee "$out/tress.txt" >&2
-"$root/bench/embree/bench" --dir "$dir" --kind round_linear --reps "$reps" --spp 16 --threads 1,2 --no-packets \
+"$root/bench/embree/bench" --dir "$dir" --kind round_linear --reps "$reps" --spp 16 --threads 1,2 \
   | tee "$out/embree.txt" >&2
 
 # field VALUE after a word in the RESULT line matching a pattern
@@ -28,12 +28,21 @@ line build_ms "$(pick "$out/tress.txt" 'RESULT build_ms' 'build_ms median')" "$(
 line build_cpu_ms "$(pick "$out/tress.txt" 'RESULT build_ms' 'all threads\) median')" "$(pick "$out/embree.txt" 'RESULT build_ms' 'all threads\) median')"
 line bytes_per_segment "$(pick "$out/tress.txt" 'RESULT mem' 'total/segment')" "$(pick "$out/embree.txt" 'RESULT mem' 'total/segment')"
 line bvh_bytes_per_segment "$(pick "$out/tress.txt" 'RESULT mem' 'bvh/segment')" "$(pick "$out/embree.txt" 'RESULT mem' 'bvh/segment')"
+# Single rays against rtcIntersect1 / rtcOccluded1; packets (a pixel's 16 samples) against
+# Embree's packets of the same rays: rtcIntersect16 over a pixel's samples, rtcOccluded16
+# over 16 consecutive shadow rays.
 for t in 1 2; do
-  for kind in primary shadow; do
-    case $kind in primary) e='rtcIntersect1' ;; shadow) e='rtcOccluded1' ;; esac
+  for kind in primary shadow primary-packet shadow-packet; do
+    case $kind in
+      primary) e='rtcIntersect1 ' ;;
+      shadow) e='rtcOccluded1 ' ;;
+      primary-packet) e='rtcIntersect16 pixel' ;;
+      shadow-packet) e='rtcOccluded16' ;;
+    esac
+    ek=${kind%-packet}
     line "${kind}_mrays_${t}t" "$(pick "$out/tress.txt" "RESULT threads $t $kind " 'Mrays/s median')" \
-      "$(pick "$out/embree.txt" "RESULT threads $t $kind +$e" 'Mrays/s median')"
+      "$(pick "$out/embree.txt" "RESULT threads $t $ek +$e" 'Mrays/s median')"
     line "${kind}_mrays_cpu_${t}t" "$(pick "$out/tress.txt" "RESULT threads $t $kind " 'cpu-time based')" \
-      "$(pick "$out/embree.txt" "RESULT threads $t $kind +$e" 'cpu-time based')"
+      "$(pick "$out/embree.txt" "RESULT threads $t $ek +$e" 'cpu-time based')"
   done
 done

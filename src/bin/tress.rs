@@ -96,9 +96,11 @@ enum Command {
         /// Repetitions of each measurement (the median is reported).
         #[arg(long, default_value_t = 3)]
         reps: usize,
-        /// How rays are traced: one at a time, or a pixel's samples as one packet.
-        #[arg(long, value_enum, default_value = "packet")]
-        tracing: Tracing,
+        /// How rays are traced, comma separated: one at a time (`single`, reported as
+        /// `primary` / `shadow`), and a pixel's samples as one packet (`packet`, reported as
+        /// `primary-packet` / `shadow-packet`).
+        #[arg(long, value_enum, value_delimiter = ',', default_value = "single,packet")]
+        tracing: Vec<Tracing>,
     },
 }
 
@@ -308,7 +310,7 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Bench { scene, overrides, thread_counts, reps, tracing } => {
-            bench(scene.as_deref(), &overrides, &thread_counts, reps, tracing)
+            bench(scene.as_deref(), &overrides, &thread_counts, reps, &tracing)
         }
     }
 }
@@ -618,7 +620,13 @@ fn lod_info(world: &World) {
     }
 }
 
-fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usize, tracing: Tracing) -> Result<()> {
+fn bench(
+    scene: Option<&Path>,
+    o: &Overrides,
+    thread_counts: &[usize],
+    reps: usize,
+    tracings: &[Tracing],
+) -> Result<()> {
     let desc = load(scene, o)?;
     let all = pool(0)?.current_num_threads();
     let median = |mut v: Vec<f64>| {
@@ -660,28 +668,35 @@ fn bench(scene: Option<&Path>, o: &Overrides, thread_counts: &[usize], reps: usi
     for &t in thread_counts {
         let threads = if t == 0 { all } else { t };
         let pool = pool(threads)?;
-        let mut primary = Vec::new();
-        let mut shadow = Vec::new();
-        let mut origins = Vec::new();
-        for _ in 0..reps.max(1) {
-            let (o, r) = pool.install(|| trace_primary(&world, threads, tracing));
-            primary.push(r);
-            origins = o;
-        }
-        for _ in 0..reps.max(1) {
-            shadow.push(pool.install(|| trace_shadow(&world, &origins, light, threads, tracing)).1);
-        }
-        for (name, rates) in [("primary", &primary), ("shadow", &shadow)] {
-            let wall: Vec<f64> = rates.iter().map(|r| r.mrays()).collect();
-            let cpu: Vec<f64> = rates.iter().map(|r| r.mrays_cpu()).collect();
-            println!(
-                "RESULT threads {threads} {name:<8} Mrays/s median {:7.3} [{}] | cpu-time based {:7.3} [{}] | rays {}",
-                median(wall.clone()),
-                list(&wall),
-                median(cpu.clone()),
-                list(&cpu),
-                rates[0].rays
-            );
+        for &tracing in tracings {
+            let mut primary = Vec::new();
+            let mut shadow = Vec::new();
+            let mut origins = Vec::new();
+            for _ in 0..reps.max(1) {
+                let (o, r) = pool.install(|| trace_primary(&world, threads, tracing));
+                primary.push(r);
+                origins = o;
+            }
+            for _ in 0..reps.max(1) {
+                shadow.push(pool.install(|| trace_shadow(&world, &origins, light, threads, tracing)).1);
+            }
+            let suffix = match tracing {
+                Tracing::Single => "",
+                Tracing::Packet => "-packet",
+            };
+            for (name, rates) in [("primary", &primary), ("shadow", &shadow)] {
+                let wall: Vec<f64> = rates.iter().map(|r| r.mrays()).collect();
+                let cpu: Vec<f64> = rates.iter().map(|r| r.mrays_cpu()).collect();
+                println!(
+                    "RESULT threads {threads} {:<15} Mrays/s median {:7.3} [{}] | cpu-time based {:7.3} [{}] | rays {}",
+                    format!("{name}{suffix}"),
+                    median(wall.clone()),
+                    list(&wall),
+                    median(cpu.clone()),
+                    list(&cpu),
+                    rates[0].rays
+                );
+            }
         }
     }
     Ok(())
