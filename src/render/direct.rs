@@ -88,6 +88,18 @@ pub fn trace(
     trace_with(world, ray, depth, sampler, counters, &Whitted { see_emitters: true }, true)
 }
 
+/// [`trace`] for a camera ray, whose closest hit may be known already (`known_hit`, as
+/// in [`super::trace_camera_cached`]).
+pub(super) fn trace_camera(
+    world: &World,
+    ray: &Ray,
+    known_hit: Option<Option<Hit>>,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+) -> (Color, Option<FirstHit>) {
+    trace_known(world, ray, known_hit, sampler, counters, &Whitted { see_emitters: true })
+}
+
 /// What an integrator adds to direct light at a hit; the direct integrator and the final
 /// gather differ only here.
 pub(super) trait Indirect: Sized {
@@ -167,6 +179,34 @@ pub(super) fn trace_with(
     indirect: &impl Indirect,
     see_emitters: bool,
 ) -> (Color, Option<FirstHit>) {
+    trace_from(world, ray, None, depth, sampler, counters, indirect, see_emitters)
+}
+
+/// [`trace_with`] for a camera ray (depth 0, emitters seen), whose closest hit may be known
+/// already (`known_hit`, as in [`super::trace_camera_cached`]).
+pub(super) fn trace_known(
+    world: &World,
+    ray: &Ray,
+    known_hit: Option<Option<Hit>>,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+    indirect: &impl Indirect,
+) -> (Color, Option<FirstHit>) {
+    trace_from(world, ray, known_hit, 0, sampler, counters, indirect, true)
+}
+
+/// [`trace_with`], with the ray's closest hit when already known.
+#[allow(clippy::too_many_arguments)]
+fn trace_from(
+    world: &World,
+    ray: &Ray,
+    known_hit: Option<Option<Hit>>,
+    depth: u32,
+    sampler: &mut PixelSampler,
+    counters: &mut Counters,
+    indirect: &impl Indirect,
+    see_emitters: bool,
+) -> (Color, Option<FirstHit>) {
     counters.rays += 1;
     // Area lights are not in the BVH; a ray sees one if it meets it before any geometry.
     let seen_light = |tmax: f32| {
@@ -185,7 +225,7 @@ pub(super) fn trace_with(
     // would be paid twice (50 %-tip fur, `cargo bench --bench transparency`: 1.75x the
     // opaque render time with it, 1.4x without).
     let opaque_first = tail.is_none() || !world.accel.has_strand_opacity();
-    let hit = if opaque_first { world.accel.intersect(ray) } else { None };
+    let hit = if opaque_first { known_hit.unwrap_or_else(|| world.accel.intersect(ray)) } else { None };
     let tail = match tail {
         Some(tail) if !opaque_first || hit.is_some_and(|h| world.accel.hit_opacity(&h) < 1.0) => tail,
         _ => {

@@ -73,9 +73,12 @@ fn next_hit(
 }
 
 /// Radiance along a camera ray by path tracing, and the first hit for AOVs.
+/// `known_hit` is the camera ray's closest hit when already traced (as in
+/// [`super::trace_camera_cached`]).
 pub fn trace(
     world: &World,
     ray: &Ray,
+    mut known_hit: Option<Option<Hit>>,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
@@ -89,7 +92,10 @@ pub fn trace(
     let mut vertex = 0u32;
     loop {
         counters.rays += 1;
-        let hit = next_hit(world, &ray, sampler, &mut layers, &mut seen);
+        let hit = match known_hit.take() {
+            Some(hit) => hit,
+            None => next_hit(world, &ray, sampler, &mut layers, &mut seen),
+        };
         let t_hit = hit.map_or(ray.tmax, |h| h.t);
         let seen_light = world
             .lights
