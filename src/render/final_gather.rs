@@ -47,7 +47,8 @@ impl Indirect for FinalGather<'_> {
             let mut ray = Ray::new(d.origin, s.dir);
             ray.cone = at.cone.scattered(at.hit.t, s.pdf, n);
             sum += s.weight
-                * trace_with(world, &ray, depth + 1, sampler, counters, &Whitted { see_emitters: false }, false).0;
+                * trace_with(world, &ray, depth + 1, sampler, counters, &Whitted { see_emitters: false }, false, false)
+                    .0;
         }
         sum / n as f32
     }
@@ -62,5 +63,5 @@ pub fn trace(
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    trace_with(world, ray, 0, sampler, counters, &FinalGather { cache }, true)
+    trace_with(world, ray, 0, sampler, counters, &FinalGather { cache }, true, false)
 }

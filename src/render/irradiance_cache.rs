@@ -161,7 +161,7 @@ impl IrradianceCache {
         let ray = world.camera.ray(x as f32 + 0.5, y as f32 + 0.5);
         let recorder = Recorder { cache: self, settings, found: RefCell::new(Vec::new()) };
         let mut counters = Counters::default();
-        trace_with(world, &ray, 0, &mut sampler, &mut counters, &recorder, true);
+        trace_with(world, &ray, 0, &mut sampler, &mut counters, &recorder, true, false);
         (recorder.found.into_inner(), counters.rays)
     }
 }
@@ -225,7 +225,7 @@ fn gather_record(
             let d = departure(at.surface, at.hit, dir, false);
             let gathered = Whitted { see_emitters: false };
             let (l, first) =
-                trace_with(world, &Ray::new(d.origin, dir), depth + 1, sampler, counters, &gathered, false);
+                trace_with(world, &Ray::new(d.origin, dir), depth + 1, sampler, counters, &gathered, false, false);
             let t = first.map_or(f32::INFINITY, |f| f.t);
             radiance[j * sectors + k] = l;
             dist[j * sectors + k] = t;

@@ -102,13 +102,22 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
     let mut hits = 0u32;
     let mut spread = adaptive::Spread::default();
     let mut taken = 0;
+    let mut layers_first = false;
     while taken < max {
         let batch = min.min(max - taken);
         for s in taken..taken + batch {
             let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
             let (jx, jy) = world.settings.filter.place(sampler.next_2d());
             let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
-            let (color, first) = trace_camera_cached(world, cache, &ray, &mut sampler, counters);
+            let (color, first) = match world.settings.integrator {
+                Integrator::Direct => direct::trace_camera_ray(world, &ray, &mut sampler, counters, layers_first),
+                _ => trace_camera_cached(world, cache, &ray, &mut sampler, counters),
+            };
+            // Fur drawn semi-transparent for its level of detail here: likely so for the
+            // next sample too (the samples of a pixel run in a fixed order: deterministic).
+            layers_first = first.is_some_and(|f| {
+                f.lod_level.is_some_and(|l| world.accel.objects[f.object as usize].lod_opacity(l) < 1.0)
+            });
             sum += color;
             spread.add(color, first.map(|f| (f.object, f.strand)));
             if let Some(f) = first {
