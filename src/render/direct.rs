@@ -88,16 +88,30 @@ pub fn trace(
     trace_with(world, ray, depth, sampler, counters, &Whitted { see_emitters: true }, true)
 }
 
-/// [`trace`] for a camera ray, whose closest hit may be known already (`known_hit`, as
-/// in [`super::trace_camera_cached`]).
+/// What the rest of its pixel tells of a camera ray before it is traced.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CameraHint {
+    /// Nothing: the ray is traced like any other.
+    None,
+    /// Its closest hit, traced with the pixel's other rays as a packet (only in scenes
+    /// without semi-transparent strands, where every integrator starts with that query).
+    Hit(Option<Hit>),
+    /// The pixel's previous sample met fur drawn semi-transparent for its level of detail
+    /// first: likely so for this one too, so the closest-hit query that would come first
+    /// is skipped (the samples of a pixel run in a fixed order: deterministic). The
+    /// estimate is the same either way.
+    LayersFirst,
+}
+
+/// [`trace`] for a camera ray, with what its pixel tells of it (`hint`).
 pub(super) fn trace_camera(
     world: &World,
     ray: &Ray,
-    known_hit: Option<Option<Hit>>,
+    hint: CameraHint,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    trace_known(world, ray, known_hit, sampler, counters, &Whitted { see_emitters: true })
+    trace_hinted(world, ray, hint, sampler, counters, &Whitted { see_emitters: true })
 }
 
 /// What an integrator adds to direct light at a hit; the direct integrator and the final
@@ -179,28 +193,27 @@ pub(super) fn trace_with(
     indirect: &impl Indirect,
     see_emitters: bool,
 ) -> (Color, Option<FirstHit>) {
-    trace_from(world, ray, None, depth, sampler, counters, indirect, see_emitters)
+    trace_from(world, ray, CameraHint::None, depth, sampler, counters, indirect, see_emitters)
 }
 
-/// [`trace_with`] for a camera ray (depth 0, emitters seen), whose closest hit may be known
-/// already (`known_hit`, as in [`super::trace_camera_cached`]).
-pub(super) fn trace_known(
+/// [`trace_with`] for a camera ray (depth 0, emitters seen), with what its pixel tells of it.
+pub(super) fn trace_hinted(
     world: &World,
     ray: &Ray,
-    known_hit: Option<Option<Hit>>,
+    hint: CameraHint,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
     indirect: &impl Indirect,
 ) -> (Color, Option<FirstHit>) {
-    trace_from(world, ray, known_hit, 0, sampler, counters, indirect, true)
+    trace_from(world, ray, hint, 0, sampler, counters, indirect, true)
 }
 
-/// [`trace_with`], with the ray's closest hit when already known.
+/// [`trace_with`], with a camera ray's [`CameraHint`].
 #[allow(clippy::too_many_arguments)]
 fn trace_from(
     world: &World,
     ray: &Ray,
-    known_hit: Option<Option<Hit>>,
+    hint: CameraHint,
     depth: u32,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
@@ -224,8 +237,17 @@ fn trace_from(
     // skip it: there the nearest hit is mostly semi-transparent and the first traversal
     // would be paid twice (50 %-tip fur, `cargo bench --bench transparency`: 1.75x the
     // opaque render time with it, 1.4x without).
-    let opaque_first = tail.is_none() || !world.accel.has_strand_opacity();
-    let hit = if opaque_first { known_hit.unwrap_or_else(|| world.accel.intersect(ray)) } else { None };
+    // Where a ray most likely meets semi-transparent coarse fur first
+    // ([`CameraHint::LayersFirst`]), the closest hit would be paid on top of the layers'
+    // query: 10 k instructions of 30 k on such rays in scenes/lod_field.toml, where the
+    // thin fur is drawn semi-transparent from 2 to 3 units on (docs/performance.md, session 5).
+    let layers_first = hint == CameraHint::LayersFirst;
+    let opaque_first = tail.is_none() || !layers_first && !world.accel.has_strand_opacity();
+    let hit = match hint {
+        CameraHint::Hit(known) if opaque_first => known,
+        _ if opaque_first => world.accel.intersect(ray),
+        _ => None,
+    };
     let tail = match tail {
         Some(tail) if !opaque_first || hit.is_some_and(|h| world.accel.hit_opacity(&h) < 1.0) => tail,
         _ => {
@@ -534,5 +556,44 @@ pub(super) fn departure(surface: &Surface, hit: &Hit, dir: Vec3, tube: bool) -> 
             let skip = Skip { object: hit.object, first: hit.prim.saturating_sub(1), last: hit.prim + 1 };
             Departure { origin, skip: Some(skip) }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::prepare;
+
+    /// The prediction only chooses the queries: a ray that meets semi-transparent coarse fur
+    /// first renders bit for bit the same when it skips the closest-hit query, and one that
+    /// meets opaque geometry first keeps its first hit.
+    #[test]
+    fn skipping_the_closest_hit_changes_no_semi_transparent_ray() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lod_field.toml");
+        let mut desc = crate::io::scene_file::read_scene(&path).unwrap();
+        (desc.settings.width, desc.settings.height) = (96, 54);
+        let (world, _) = prepare(&desc).unwrap();
+        let whitted = Whitted { see_emitters: true };
+        let (mut semi, mut opaque) = (0, 0);
+        for (x, y) in (0..54).flat_map(|y| (0..96).map(move |x| (x, y))) {
+            let ray = world.camera.ray(x as f32 + 0.5, y as f32 + 0.5);
+            let run = |layers_first| {
+                let mut sampler = PixelSampler::new(7, x, y, 0);
+                let hint = if layers_first { CameraHint::LayersFirst } else { CameraHint::None };
+                trace_hinted(&world, &ray, hint, &mut sampler, &mut Counters::default(), &whitted)
+            };
+            let ((color, first), (skipped, skipped_first)) = (run(false), run(true));
+            let Some(first) = first else { continue };
+            let lod_opacity = world.accel.objects[first.object as usize].lod_opacity(first.lod_level.unwrap_or(0));
+            if lod_opacity < 1.0 {
+                semi += 1;
+                assert_eq!(color.to_array().map(f32::to_bits), skipped.to_array().map(f32::to_bits), "pixel {x} {y}");
+            } else {
+                opaque += 1;
+                let f = skipped_first.expect("the same first hit");
+                assert_eq!((f.object, f.t.to_bits()), (first.object, first.t.to_bits()), "pixel {x} {y}");
+            }
+        }
+        assert!(semi > 50 && opaque > 50, "{semi} semi-transparent and {opaque} opaque first hits");
     }
 }

@@ -10,10 +10,9 @@
 //! ([`IrradianceCache`]), diffuse surfaces read the gathered light from it where a record
 //! serves, and gather anew elsewhere; hair always gathers anew.
 
-use super::direct::{departure, trace_known, trace_with, At, Counters, FirstHit, Indirect, Whitted};
+use super::direct::{departure, trace_hinted, trace_with, At, CameraHint, Counters, FirstHit, Indirect, Whitted};
 use super::irradiance_cache::{cached_albedo, IrradianceCache};
 use crate::math::rng::PixelSampler;
-use crate::accel::Hit;
 use crate::math::{Color, Ray};
 use crate::scene::World;
 use crate::shading::Material;
@@ -60,9 +59,9 @@ pub fn trace(
     world: &World,
     cache: Option<&IrradianceCache>,
     ray: &Ray,
-    known_hit: Option<Option<Hit>>,
+    hint: CameraHint,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    trace_known(world, ray, known_hit, sampler, counters, &FinalGather { cache })
+    trace_hinted(world, ray, hint, sampler, counters, &FinalGather { cache })
 }

@@ -10,13 +10,13 @@ mod irradiance_cache;
 mod path;
 mod tiled;
 
-pub use direct::{trace, Counters, FirstHit, BLEND_TRANSMITTANCE};
+pub use direct::{trace, CameraHint, Counters, FirstHit, BLEND_TRANSMITTANCE};
 pub use irradiance_cache::IrradianceCache;
 pub use tiled::{render_tiles, tile_count_of, AfterTile, Control, TileMask, TiledFilm};
 
+use crate::accel::Hit;
 use crate::film::{Film, Pixel};
 use crate::math::rng::PixelSampler;
-use crate::accel::Hit;
 use crate::math::{Color, Ray, PACKET};
 use crate::scene::{Integrator, World};
 use glam::Vec3;
@@ -69,24 +69,23 @@ pub fn trace_camera(
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    trace_camera_cached(world, None, ray, None, sampler, counters)
+    trace_camera_cached(world, None, ray, CameraHint::None, sampler, counters)
 }
 
-/// [`trace_camera`], the final gather reading `cache` on diffuse surfaces. `known_hit` is
-/// the ray's closest hit when it was already traced with the rest of its pixel's samples
-/// ([`camera_hits`]); `None` traces it here.
+/// [`trace_camera`], the final gather reading `cache` on diffuse surfaces, with what the
+/// ray's pixel tells of it (`hint`).
 pub fn trace_camera_cached(
     world: &World,
     cache: Option<&IrradianceCache>,
     ray: &Ray,
-    known_hit: Option<Option<Hit>>,
+    hint: CameraHint,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
     match world.settings.integrator {
-        Integrator::Direct => direct::trace_camera(world, ray, known_hit, sampler, counters),
-        Integrator::FinalGather => final_gather::trace(world, cache, ray, known_hit, sampler, counters),
-        Integrator::Path => path::trace(world, ray, known_hit, sampler, counters),
+        Integrator::Direct => direct::trace_camera(world, ray, hint, sampler, counters),
+        Integrator::FinalGather => final_gather::trace(world, cache, ray, hint, sampler, counters),
+        Integrator::Path => path::trace(world, ray, hint, sampler, counters),
     }
 }
 
@@ -124,6 +123,8 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
     let mut hits = 0u32;
     let mut spread = adaptive::Spread::default();
     let mut taken = 0;
+    // Whether the previous sample met fur drawn semi-transparent for its level of detail first.
+    let mut layers_first = false;
     while taken < max {
         let batch = min.min(max - taken);
         let (mut samplers, mut rays) = (Vec::with_capacity(batch as usize), Vec::with_capacity(batch as usize));
@@ -135,8 +136,15 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
         }
         let known = camera_hits(world, &rays);
         for (i, (ray, mut sampler)) in rays.iter().zip(samplers).enumerate() {
-            let known_hit = known.as_ref().map(|h| h[i]);
-            let (color, first) = trace_camera_cached(world, cache, ray, known_hit, &mut sampler, counters);
+            let hint = match &known {
+                Some(hits) => CameraHint::Hit(hits[i]),
+                None if layers_first => CameraHint::LayersFirst,
+                None => CameraHint::None,
+            };
+            let (color, first) = trace_camera_cached(world, cache, ray, hint, &mut sampler, counters);
+            layers_first = first.is_some_and(|f| {
+                f.lod_level.is_some_and(|l| world.accel.objects[f.object as usize].lod_opacity(l) < 1.0)
+            });
             sum += color;
             spread.add(color, first.map(|f| (f.object, f.strand)));
             if let Some(f) = first {

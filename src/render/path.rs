@@ -13,7 +13,7 @@
 //! `max_depth` counts scattering vertices after the first: with 0, the camera hit's direct
 //! light only (the direct integrator's image); with 1, one bounce of indirect light.
 
-use super::direct::{departure, surface_at, Counters, FirstHit};
+use super::direct::{departure, surface_at, CameraHint, Counters, FirstHit};
 use crate::accel::{Hit, LayerHit, NEGLIGIBLE_TRANSMITTANCE};
 use crate::light::Light;
 use crate::math::rng::PixelSampler;
@@ -73,12 +73,11 @@ fn next_hit(
 }
 
 /// Radiance along a camera ray by path tracing, and the first hit for AOVs.
-/// `known_hit` is the camera ray's closest hit when already traced (as in
-/// [`super::trace_camera_cached`]).
+/// `hint` may hold the camera ray's closest hit, already traced ([`CameraHint::Hit`]).
 pub fn trace(
     world: &World,
     ray: &Ray,
-    mut known_hit: Option<Option<Hit>>,
+    hint: CameraHint,
     sampler: &mut PixelSampler,
     counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
@@ -92,9 +91,9 @@ pub fn trace(
     let mut vertex = 0u32;
     loop {
         counters.rays += 1;
-        let hit = match known_hit.take() {
-            Some(hit) => hit,
-            None => next_hit(world, &ray, sampler, &mut layers, &mut seen),
+        let hit = match hint {
+            CameraHint::Hit(hit) if vertex == 0 => hit,
+            _ => next_hit(world, &ray, sampler, &mut layers, &mut seen),
         };
         let t_hit = hit.map_or(ray.tmax, |h| h.t);
         let seen_light = world
