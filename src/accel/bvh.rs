@@ -611,29 +611,35 @@ fn binned_split<const B: usize>(items: &[BuildItem], bounds: &Aabb, centroids: &
 /// centroids on either side (the children's, taken on the way).
 fn partition(items: &mut [BuildItem], left: impl Fn(Vec3A) -> bool) -> (usize, Aabb, Aabb) {
     let (mut left_centroids, mut right_centroids) = (Aabb::EMPTY, Aabb::EMPTY);
+    // Items before `i` go left, from `j` on right; those between are still to sort.
     let (mut i, mut j) = (0, items.len());
     loop {
-        while i < j {
+        let right_one = loop {
+            if i == j {
+                return (i, left_centroids, right_centroids);
+            }
             let c = items[i].bounds.center();
             if !left(c) {
-                break;
+                break c;
             }
             left_centroids = left_centroids.grow(c);
             i += 1;
-        }
-        while i < j {
-            let c = items[j - 1].bounds.center();
+        };
+        let left_one = loop {
+            j -= 1;
+            if j == i {
+                return (i, left_centroids, right_centroids.grow(right_one));
+            }
+            let c = items[j].bounds.center();
             if left(c) {
-                break;
+                break c;
             }
             right_centroids = right_centroids.grow(c);
-            j -= 1;
-        }
-        if i == j {
-            return (i, left_centroids, right_centroids);
-        }
-        // items[i] belongs right and items[j - 1] left: the loops above count them after the swap.
-        items.swap(i, j - 1);
+        };
+        items.swap(i, j);
+        left_centroids = left_centroids.grow(left_one);
+        right_centroids = right_centroids.grow(right_one);
+        i += 1;
     }
 }
 
