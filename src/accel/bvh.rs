@@ -530,7 +530,6 @@ impl BuildItem {
     }
 }
 
-const BINS: usize = 32;
 /// Most items in a leaf.
 pub const MAX_LEAF: usize = 8;
 /// Cost of visiting a node relative to intersecting one item (SAH constants). Leaves test
@@ -571,45 +570,56 @@ impl Bvh {
     /// never be hit and would poison the heuristic. Only the first [`MAX_ITEMS`] items are
     /// indexed (scene loading rejects larger objects with an error before they get here).
     pub fn build(mut items: Vec<BuildItem>) -> Bvh {
-        items.retain(|it| !it.bounds.is_empty() && it.bounds.min.is_finite() && it.bounds.max.is_finite());
+        let valid = |it: &BuildItem| !it.bounds.is_empty() && it.bounds.min.is_finite() && it.bounds.max.is_finite();
+        // Checked in parallel first: usually every item is valid and nothing needs to move.
+        if !items.par_iter().all(valid) {
+            items.retain(valid);
+        }
         items.truncate(MAX_ITEMS);
         if items.is_empty() {
             return Bvh::default();
         }
-        let root = build_node(&mut items, 0, 0);
-        // About one node per 19 items on hair (docs/performance.md); the vector grows if needed
-        // and gives back what it did not use below.
-        let mut nodes = Vec::with_capacity(items.len() / 16 + 1);
-        nodes.push(EMPTY_NODE);
-        let bounds = match &root {
-            BuildNode::Leaf { bounds, .. } => {
+        let (bounds, centroids) = bounds_and_centroids(&items);
+        let root = build_node(&mut items, 0, 0, bounds, centroids);
+        let nodes = match &root {
+            BuildNode::Leaf { .. } => {
                 // A single leaf still needs a node to hang from.
-                let grid = Grid::spanning(*bounds);
+                let mut nodes = vec![EMPTY_NODE];
+                let grid = Grid::spanning(bounds);
                 (nodes[0].origin, nodes[0].step) = (grid.origin.into(), grid.step.into());
                 set_child(&mut nodes[0], &grid, 0, &root, 0);
-                *bounds
+                nodes
             }
-            BuildNode::Inner { bounds, .. } => {
-                collapse(&root, 0, &mut nodes);
-                *bounds
-            }
+            BuildNode::Inner { .. } => collapse_root(&root),
         };
-        drop(root);
-        nodes.shrink_to_fit();
+        drop_tree(root, 0);
         // Collected into a new vector (not in place, which would keep the build items'
         // twelve times larger allocation alive).
-        let ids: Vec<u32> = items.iter().map(|it| it.id).collect();
+        let ids: Vec<u32> = items.par_iter().map(|it| it.id).collect();
         drop(items);
         Bvh { nodes, items: ids, bounds: Some(bounds) }
+    }
+}
+
+/// Frees the binary tree (one allocation per inner node), the subtrees of its top
+/// `PARALLEL_DROP_DEPTH` levels in parallel.
+fn drop_tree(node: BuildNode, depth: usize) {
+    const PARALLEL_DROP_DEPTH: usize = 4;
+    if let BuildNode::Inner { children, .. } = node {
+        if depth < PARALLEL_DROP_DEPTH {
+            let [l, r] = *children;
+            rayon::join(|| drop_tree(l, depth + 1), || drop_tree(r, depth + 1));
+        }
     }
 }
 
 /// Deepest tree the traversal stack can hold; below it, nodes become leaves.
 const MAX_DEPTH: usize = 60;
 
-/// Builds the subtree over `items`, which start at index `offset` of the whole item array.
-fn build_node(items: &mut [BuildItem], offset: usize, depth: usize) -> BuildNode {
-    let (bounds, centroids) = bounds_and_centroids(items);
+/// Builds the subtree over `items`, which start at index `offset` of the whole item array;
+/// `bounds` and `centroids` bound the items' boxes and centres (the parent's split knows
+/// both, which spares every node a pass over its items).
+fn build_node(items: &mut [BuildItem], offset: usize, depth: usize, bounds: Aabb, centroids: Aabb) -> BuildNode {
     let leaf = |items: &[BuildItem]| BuildNode::Leaf {
         bounds,
         first: offset,
@@ -622,20 +632,27 @@ fn build_node(items: &mut [BuildItem], offset: usize, depth: usize) -> BuildNode
     // Past the depth the traversal stack is sized for, split by count (the tree then
     // deepens by one level per halving, so this cannot recurse without end).
     let split = if depth >= MAX_DEPTH { None } else { choose_split(items, &bounds, &centroids) };
-    let mid = match split {
-        Some((axis, lo, scale, bin)) => partition(items, |it| bins_of(it.bounds.center(), lo, scale)[axis] < bin),
-        None if items.len() > MAX_LEAF => {
-            // Centroids coincide: split by count so leaves stay small.
-            items.len() / 2
+    let (mid, sides) = match split {
+        Some(split) => {
+            let (mid, left_centroids, right_centroids) = partition_parallel(items, |c| split.goes_left(c));
+            (mid, Some(((split.left, left_centroids), (split.right, right_centroids))))
         }
+        // Centroids coincide: split by count so leaves stay small.
+        None if items.len() > MAX_LEAF => (items.len() / 2, None),
         None => return leaf(items),
     };
-    let mid = if mid == 0 || mid == items.len() { items.len() / 2 } else { mid };
+    // The split's bins put at least one item on each side; the check keeps a split by count
+    // (which always progresses) should rounding ever disagree.
+    let (mid, sides) = if mid == 0 || mid == items.len() { (items.len() / 2, None) } else { (mid, sides) };
     let (left, right) = items.split_at_mut(mid);
+    let ((lb, lc), (rb, rc)) = sides.unwrap_or_else(|| (bounds_and_centroids(left), bounds_and_centroids(right)));
     let (l, r) = if left.len() + right.len() >= PARALLEL_THRESHOLD {
-        rayon::join(|| build_node(left, offset, depth + 1), || build_node(right, offset + mid, depth + 1))
+        rayon::join(
+            || build_node(left, offset, depth + 1, lb, lc),
+            || build_node(right, offset + mid, depth + 1, rb, rc),
+        )
     } else {
-        (build_node(left, offset, depth + 1), build_node(right, offset + mid, depth + 1))
+        (build_node(left, offset, depth + 1, lb, lc), build_node(right, offset + mid, depth + 1, rb, rc))
     };
     BuildNode::join(l, r)
 }
@@ -658,28 +675,37 @@ fn bounds_and_centroids(items: &[BuildItem]) -> (Aabb, Aabb) {
         .reduce(|| (Aabb::EMPTY, Aabb::EMPTY), |a, b| (a.0.union(b.0), a.1.union(b.1)))
 }
 
-/// The bins of a centroid along the three axes (all three at once, in SIMD); the split and
-/// the partition both use it, so an item goes to the side its bin was counted on. Below the
-/// first bin (and NaN) is bin 0, past the last is the last.
+/// The bins of a centroid along the three axes (all three at once, in SIMD), `last` the
+/// index of the last bin; the split and the partition both use it, so an item goes to the
+/// side its bin was counted on. Below the first bin (and NaN) is bin 0, past the last is the
+/// last.
 #[inline]
-fn bins_of(c: Vec3A, lo: Vec3A, scale: Vec3A) -> [usize; 3] {
-    let b = ((c - lo) * scale).max(Vec3A::ZERO).min(Vec3A::splat((BINS - 1) as f32)).as_uvec3();
-    [b.x as usize, b.y as usize, b.z as usize]
+fn bins_of(c: Vec3A, lo: Vec3A, scale: Vec3A, last: f32) -> [usize; 3] {
+    let b = ((c - lo) * scale).max(Vec3A::ZERO).min(Vec3A::splat(last));
+    // On x86-64, truncated in one SSE2 instruction: the lanes lie in [0, last], where it is
+    // exact (`as_uvec3` converts lane by lane, each a saturating cast: once a quarter of the
+    // build's instructions).
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE2 is part of x86-64.
+    let b: [i32; 4] = bytemuck::cast(unsafe { std::arch::x86_64::_mm_cvttps_epi32(b.into()) });
+    #[cfg(not(target_arch = "x86_64"))]
+    let b = b.as_uvec3().to_array();
+    [b[0] as usize, b[1] as usize, b[2] as usize]
 }
 
-/// Boxes and counts of the items falling in each bin, along each axis.
+/// Boxes and counts of the items falling in each of `B` bins, along each axis.
 #[derive(Clone, Copy)]
-struct Bins {
-    bounds: [[Aabb; BINS]; 3],
-    counts: [[u32; BINS]; 3],
+struct Bins<const B: usize> {
+    bounds: [[Aabb; B]; 3],
+    counts: [[u32; B]; 3],
 }
 
-impl Bins {
-    const EMPTY: Bins = Bins { bounds: [[Aabb::EMPTY; BINS]; 3], counts: [[0; BINS]; 3] };
+impl<const B: usize> Bins<B> {
+    const EMPTY: Bins<B> = Bins { bounds: [[Aabb::EMPTY; B]; 3], counts: [[0; B]; 3] };
 
-    fn merge(mut self, o: Bins) -> Bins {
+    fn merge(mut self, o: Bins<B>) -> Bins<B> {
         for axis in 0..3 {
-            for b in 0..BINS {
+            for b in 0..B {
                 self.bounds[axis][b] = self.bounds[axis][b].union(o.bounds[axis][b]);
                 self.counts[axis][b] += o.counts[axis][b];
             }
@@ -688,15 +714,48 @@ impl Bins {
     }
 }
 
-/// The binned SAH split (axis, bin origin and scale along every axis, first bin of the right side), or None
-/// when no split beats a leaf (or the items' centroids coincide).
-fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<(usize, Vec3A, Vec3A, usize)> {
+/// A binned SAH split: the items whose centroid falls in a bin below `bin` along `axis` go
+/// left; `left` and `right` bound the items of either side.
+struct Split {
+    axis: usize,
+    lo: Vec3A,
+    scale: Vec3A,
+    last: f32,
+    bin: usize,
+    left: Aabb,
+    right: Aabb,
+}
+
+impl Split {
+    #[inline]
+    fn goes_left(&self, centroid: Vec3A) -> bool {
+        bins_of(centroid, self.lo, self.scale, self.last)[self.axis] < self.bin
+    }
+}
+
+/// The binned SAH split of the items, or None when no split beats a leaf (or the items'
+/// centroids coincide). Small nodes use fewer bins: there the fixed cost of the bins (their
+/// reset and sweep) outweighs the items', and a handful of items needs no 32 candidate planes.
+fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<Split> {
+    // The thresholds: the fewest instructions at which the traced hairy torus's camera and
+    // shadow rays cost within 0.5 % of 32 bins everywhere (docs/performance.md, session 5).
+    match items.len() {
+        0..=8 => binned_split::<4>(items, bounds, centroids),
+        9..=32 => binned_split::<8>(items, bounds, centroids),
+        33..=128 => binned_split::<16>(items, bounds, centroids),
+        _ => binned_split::<32>(items, bounds, centroids),
+    }
+}
+
+/// [`choose_split`] with `B` bins along each axis.
+fn binned_split<const B: usize>(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<Split> {
     let extent = centroids.max - centroids.min;
-    let scale = Vec3A::select(extent.cmpgt(Vec3A::ZERO), BINS as f32 / extent, Vec3A::ZERO);
+    let scale = Vec3A::select(extent.cmpgt(Vec3A::ZERO), B as f32 / extent, Vec3A::ZERO);
+    let last = (B - 1) as f32;
     let fill = |items: &[BuildItem]| {
-        let mut bins = Bins::EMPTY;
+        let mut bins = Bins::<B>::EMPTY;
         for it in items {
-            let b = bins_of(it.bounds.center(), centroids.min, scale);
+            let b = bins_of(it.bounds.center(), centroids.min, scale, last);
             for (axis, &b) in b.iter().enumerate() {
                 bins.bounds[axis][b] = bins.bounds[axis][b].union(it.bounds);
                 bins.counts[axis][b] += 1;
@@ -716,17 +775,17 @@ fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<
         }
         let (bin_bounds, bin_counts) = (&bins.bounds[axis], &bins.counts[axis]);
         // Sweep from the right to get the cost of every right side, then from the left.
-        let mut right_area = [0.0f32; BINS];
-        let mut right_count = [0u32; BINS];
+        let mut right_area = [0.0f32; B];
+        let mut right_count = [0u32; B];
         let (mut acc, mut n) = (Aabb::EMPTY, 0);
-        for i in (1..BINS).rev() {
+        for i in (1..B).rev() {
             acc = acc.union(bin_bounds[i]);
             n += bin_counts[i];
             right_area[i] = acc.half_area();
             right_count[i] = n;
         }
         let (mut acc, mut n) = (Aabb::EMPTY, 0);
-        for i in 0..BINS - 1 {
+        for i in 0..B - 1 {
             acc = acc.union(bin_bounds[i]);
             n += bin_counts[i];
             let cost = acc.half_area() * n as f32 + right_area[i + 1] * right_count[i + 1] as f32;
@@ -738,44 +797,168 @@ fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<
     let (cost, axis, bin) = best?;
     let leaf_cost = items.len() as f32 * bounds.half_area();
     let split_cost = TRAVERSAL_COST * bounds.half_area() + cost;
-    (split_cost < leaf_cost || items.len() > MAX_LEAF).then_some((axis, centroids.min, scale, bin))
+    if split_cost >= leaf_cost && items.len() <= MAX_LEAF {
+        return None;
+    }
+    let side = |bins: &[Aabb]| bins.iter().fold(Aabb::EMPTY, |b, &c| b.union(c));
+    let (left, right) = (side(&bins.bounds[axis][..bin]), side(&bins.bounds[axis][bin..]));
+    Some(Split { axis, lo: centroids.min, scale, last, bin, left, right })
 }
 
-/// Moves items for which `left` holds to the front; returns how many there are.
-fn partition(items: &mut [BuildItem], left: impl Fn(&BuildItem) -> bool) -> usize {
-    let mut mid = 0;
-    for i in 0..items.len() {
-        if left(&items[i]) {
-            items.swap(i, mid);
-            mid += 1;
+/// Moves the items whose centroid `left` accepts to the front, swapping each misplaced pair
+/// once (Hoare's two-index partition); returns how many there are and the bounds of the
+/// centroids on either side (the children's, taken on the way).
+fn partition(items: &mut [BuildItem], left: impl Fn(Vec3A) -> bool) -> (usize, Aabb, Aabb) {
+    let (mut left_centroids, mut right_centroids) = (Aabb::EMPTY, Aabb::EMPTY);
+    // Items before `i` go left, from `j` on right; those between are still to sort.
+    let (mut i, mut j) = (0, items.len());
+    loop {
+        let right_one = loop {
+            if i == j {
+                return (i, left_centroids, right_centroids);
+            }
+            let c = items[i].bounds.center();
+            if !left(c) {
+                break c;
+            }
+            left_centroids = left_centroids.grow(c);
+            i += 1;
+        };
+        let left_one = loop {
+            j -= 1;
+            if j == i {
+                return (i, left_centroids, right_centroids.grow(right_one));
+            }
+            let c = items[j].bounds.center();
+            if left(c) {
+                break c;
+            }
+            right_centroids = right_centroids.grow(c);
+        };
+        items.swap(i, j);
+        left_centroids = left_centroids.grow(left_one);
+        right_centroids = right_centroids.grow(right_one);
+        i += 1;
+    }
+}
+
+/// [`partition`] of a large node in parallel, in place: each run of [`SCAN_CHUNK`] items is
+/// partitioned on its own, then the right items before the split point trade places with
+/// the left items after it, the k-th of the ones with the k-th of the others. The order
+/// depends on the chunk size alone, not on the threads.
+fn partition_parallel(items: &mut [BuildItem], left: impl Fn(Vec3A) -> bool + Sync) -> (usize, Aabb, Aabb) {
+    if items.len() < 2 * SCAN_CHUNK {
+        return partition(items, left);
+    }
+    let parts: Vec<(usize, Aabb, Aabb)> = items.par_chunks_mut(SCAN_CHUNK).map(|c| partition(c, &left)).collect();
+    let mid = parts.iter().map(|p| p.0).sum();
+    let (mut misplaced_right, mut misplaced_left) = (Vec::new(), Vec::new());
+    for (k, &(lefts, _, _)) in parts.iter().enumerate() {
+        let (start, end) = (k * SCAN_CHUNK, ((k + 1) * SCAN_CHUNK).min(items.len()));
+        let (rights, lefts_end) = (start + lefts..end.min(mid), start + lefts);
+        if !rights.is_empty() {
+            misplaced_right.push(rights);
+        }
+        if lefts_end > start.max(mid) {
+            misplaced_left.push(start.max(mid) - mid..lefts_end - mid);
         }
     }
-    mid
+    let (head, tail) = items.split_at_mut(mid);
+    let (mut rights, mut lefts) = (misplaced_right.into_iter(), misplaced_left.into_iter());
+    let (mut r, mut l) = (rights.next(), lefts.next());
+    while let (Some(a), Some(b)) = (&mut r, &mut l) {
+        let n = a.len().min(b.len());
+        head[a.start..a.start + n].swap_with_slice(&mut tail[b.start..b.start + n]);
+        (a.start, b.start) = (a.start + n, b.start + n);
+        if a.start == a.end {
+            r = rights.next();
+        }
+        if b.start == b.end {
+            l = lefts.next();
+        }
+    }
+    let (lc, rc) = parts.iter().fold((Aabb::EMPTY, Aabb::EMPTY), |(l, r), p| (l.union(p.1), r.union(p.2)));
+    (mid, lc, rc)
 }
 
-/// Writes the 4-wide node for binary inner node `node` at `nodes[at]`, and its subtree
-/// after it: the node's children are opened, largest box first, until there are eight.
-fn collapse(node: &BuildNode, at: usize, nodes: &mut Vec<Node>) {
-    let mut children: Vec<&BuildNode> = match node {
-        BuildNode::Inner { children, .. } => vec![&children[0], &children[1]],
-        BuildNode::Leaf { .. } => vec![node],
-    };
-    while children.len() < WIDTH {
-        let open = children
+/// The children of binary inner node `node` that its 8-wide node gets (the first `n` of the
+/// array): children are opened, largest box first, until there are eight.
+fn open(node: &BuildNode) -> ([&BuildNode; WIDTH], usize) {
+    let mut children = [node; WIDTH];
+    let mut n = 1;
+    if let BuildNode::Inner { children: pair, .. } = node {
+        (children[0], children[1], n) = (&pair[0], &pair[1], 2);
+    }
+    while n < WIDTH {
+        let open = children[..n]
             .iter()
             .enumerate()
             .filter(|(_, c)| matches!(c, BuildNode::Inner { .. }))
             .max_by(|a, b| a.1.bounds().half_area().total_cmp(&b.1.bounds().half_area()))
             .map(|(i, _)| i);
         let Some(i) = open else { break };
-        let BuildNode::Inner { children: grand, .. } = children.swap_remove(i) else { unreachable!() };
-        children.push(&grand[0]);
-        children.push(&grand[1]);
+        let BuildNode::Inner { children: grand, .. } = children[i] else { unreachable!() };
+        // The opened child's slot takes the last child, its two children go last.
+        (children[i], children[n - 1], children[n]) = (children[n - 1], &grand[0], &grand[1]);
+        n += 1;
     }
-    let grid = Grid::spanning(children.iter().fold(Aabb::EMPTY, |b, c| b.union(c.bounds())));
+    (children, n)
+}
+
+/// How many 8-wide nodes [`collapse`] writes for `node` and its subtree.
+fn wide_nodes(node: &BuildNode) -> usize {
+    match node {
+        BuildNode::Leaf { .. } => 0,
+        BuildNode::Inner { .. } => {
+            let (children, n) = open(node);
+            1 + children[..n].iter().map(|c| wide_nodes(c)).sum::<usize>()
+        }
+    }
+}
+
+/// The 8-wide nodes of the tree under binary inner node `root`, depth first. The subtrees
+/// of the root's children are written in parallel, each into a vector of its own starting
+/// at the index [`wide_nodes`] says, then concatenated: the same nodes in the same order as
+/// one serial [`collapse`].
+fn collapse_root(root: &BuildNode) -> Vec<Node> {
+    let (children, n) = open(root);
+    let children = &children[..n];
+    let sizes: Vec<usize> = children.par_iter().map(|c| wide_nodes(c)).collect();
+    let starts: Vec<usize> = sizes.iter().scan(1, |next, &s| Some(std::mem::replace(next, *next + s))).collect();
+    let subtrees: Vec<Vec<Node>> = children
+        .par_iter()
+        .zip(&sizes)
+        .zip(&starts)
+        .map(|((&child, &size), &start)| {
+            let mut nodes = Vec::with_capacity(size);
+            if size > 0 {
+                nodes.push(EMPTY_NODE);
+                collapse(child, 0, &mut nodes, start);
+            }
+            nodes
+        })
+        .collect();
+    let mut nodes = Vec::with_capacity(1 + sizes.iter().sum::<usize>());
+    nodes.push(EMPTY_NODE);
+    let grid = Grid::spanning(root.bounds());
+    (nodes[0].origin, nodes[0].step) = (grid.origin.into(), grid.step.into());
+    for (slot, (child, &start)) in children.iter().zip(&starts).enumerate() {
+        set_child(&mut nodes[0], &grid, slot, child, start as u32);
+    }
+    for subtree in subtrees {
+        nodes.extend(subtree);
+    }
+    nodes
+}
+
+/// Writes the 8-wide node for binary inner node `node` at `nodes[at]`, and its subtree
+/// after it; `nodes[0]` is node `start` of the whole hierarchy.
+fn collapse(node: &BuildNode, at: usize, nodes: &mut Vec<Node>, start: usize) {
+    let (children, n) = open(node);
+    let grid = Grid::spanning(node.bounds());
     nodes[at].origin = grid.origin.into();
     nodes[at].step = grid.step.into();
-    for (slot, child) in children.into_iter().enumerate() {
+    for (slot, &child) in children[..n].iter().enumerate() {
         let index = match child {
             BuildNode::Leaf { .. } => 0,
             BuildNode::Inner { .. } => {
@@ -783,9 +966,9 @@ fn collapse(node: &BuildNode, at: usize, nodes: &mut Vec<Node>) {
                 nodes.len() - 1
             }
         };
-        set_child(&mut nodes[at], &grid, slot, child, index as u32);
+        set_child(&mut nodes[at], &grid, slot, child, (start + index) as u32);
         if index > 0 {
-            collapse(child, index, nodes);
+            collapse(child, index, nodes, start);
         }
     }
 }
