@@ -18,7 +18,9 @@
 //! A Z-up stage (`upAxis = "Z"`) is turned Y-up. Only text layers are read: the crate's
 //! binary (`.usdc`) reader has not been checked against hostile files here. The crate's
 //! text parser recurses once per nesting level, so every layer's nesting depth is checked
-//! before it is parsed ([`MAX_NESTING`]); hostile files cannot overflow the stack.
+//! before it is parsed ([`MAX_NESTING`]); hostile files cannot overflow the stack. The
+//! crate walks a path's ancestors without end when a `}` closes no `{`, so path literals
+//! and `xformOpOrder` entries are checked too.
 //!
 //! [`write_usd`] writes linear `BasisCurves` (points, vertex widths and colours) and
 //! triangle `Mesh`es, which this module reads back unchanged.
@@ -69,8 +71,8 @@ pub fn read_usd(path: &Path) -> Result<Imported, LoadError> {
 }
 
 /// Checks a layer's bytes before the crate parses them: UTF-8 text with a `#usda` header,
-/// at most [`MAX_NESTING`] levels of brackets outside strings and comments, and prim names
-/// that are identifiers.
+/// at most [`MAX_NESTING`] levels of brackets outside strings and comments, prim names
+/// that are identifiers and path literals whose `}` close a `{`.
 fn check_layer(bytes: &[u8]) -> Result<(), String> {
     let text =
         std::str::from_utf8(bytes).map_err(|_| "not UTF-8 text (binary .usdc layers are not read)".to_string())?;
@@ -109,6 +111,7 @@ fn check_layer(bytes: &[u8]) -> Result<(), String> {
                 }
                 continue;
             }
+            b'<' => check_path_literal(b, i, line)?,
             b'(' | b'[' | b'{' => {
                 depth += 1;
                 if depth > MAX_NESTING {
@@ -133,11 +136,46 @@ fn check_prim_names(text: &str) -> Result<(), String> {
         let Some(rest) = ["def ", "over ", "class "].iter().find_map(|k| words.strip_prefix(k)) else { continue };
         // The name is the first quoted string; a line without one is left to the parser.
         let Some(name) = rest.split('"').nth(1) else { continue };
-        let mut chars = name.chars();
-        let valid = chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-            && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
-        if !valid {
+        if !is_identifier(name) {
             return Err(format!("line {}: prim name \"{name}\" is not an identifier (letters, digits and _)", n + 1));
+        }
+    }
+    Ok(())
+}
+
+/// Whether `name` is an identifier: a letter or `_`, then letters, digits or `_`.
+fn is_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// Checks the path literal opening at `b[at]` (a `<`, up to the next `>`): every `}` in it
+/// must close a variant selection's `{`. The crate's `Path::parent` returns a path ending in
+/// a `}` without a `{` unchanged, so walking the ancestors of `</A}>` never ends.
+fn check_path_literal(b: &[u8], at: usize, line: u32) -> Result<(), String> {
+    let mut open = false;
+    // Stopping at the next `<` or line end keeps the whole check linear in the text.
+    for &c in b[at + 1..].iter().take_while(|&&c| !matches!(c, b'>' | b'<' | b'\n')) {
+        match c {
+            b'{' => open = true,
+            b'}' if !open => return Err(format!("line {line}: path has a `}}` that closes no variant selection `{{`")),
+            b'}' => open = false,
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Checks that every `xformOpOrder` entry of a prim is `!resetXformStack!` or an
+/// (optionally `!invert!`ed) property name, identifiers joined by `:`: the crate makes an
+/// attribute path of each entry, and one holding a `}` (`xformOp:tr}anslate`) sends its
+/// ancestor walk round forever, like a path literal in [`check_path_literal`].
+fn check_op_order(x: &AnyPrim) -> Res<()> {
+    for op in x.xform_op_order()?.unwrap_or_default() {
+        let name = op.strip_prefix("!invert!").unwrap_or(&op);
+        if op != "!resetXformStack!" && !name.split(':').all(is_identifier) {
+            anyhow::bail!("{}: xformOpOrder entry \"{op}\" is not a property name", x.0.path());
         }
     }
     Ok(())
@@ -235,6 +273,7 @@ fn world_matrix(stage: &Stage, path: &sdf::Path) -> Res<DMat4> {
     let mut m = DMat4::IDENTITY;
     for p in chain.iter().rev() {
         let x = AnyPrim(stage.prim(p.clone()));
+        check_op_order(&x)?;
         let local = DMat4::from_cols_array(&x.local_to_parent_transform(TimeCode::new(0.0))?.0);
         m = if x.resets_xform_stack()? { local } else { m * local };
     }

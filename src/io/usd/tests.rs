@@ -161,6 +161,28 @@ fn prim_names_that_are_not_identifiers_are_errors_not_a_stack_overflow() {
     assert!(read_text(&SCENE.replace("\"World\"\n{", "\"_World2\"\n{")).is_ok());
 }
 
+#[test]
+fn braces_in_property_names_and_paths_are_errors_not_a_hang() {
+    // Found by `mutated_scenes_never_panic`: the crate's ancestor walk of the attribute
+    // path `/World.xformOp:tr}anslate` went round forever.
+    let e = read_text(&SCENE.replace("[\"xformOp:translate\"]", "[\"xformOp:tr}anslate\"]")).unwrap_err().to_string();
+    assert!(e.contains("/World") && e.contains("xformOp:tr}anslate"), "{e}");
+    // The same walk from a composition arc's path.
+    for arc in ["inherits = </A}>", "references = </A}>", "specializes = </A.b}c>"] {
+        let e = read_text(&SCENE.replace("prepend apiSchemas = []", arc)).unwrap_err().to_string();
+        assert!(e.contains("line 30") && e.contains("closes no"), "{arc}: {e}");
+    }
+    // Variant selections, inverted ops and a reset stack stay readable.
+    let fine = SCENE
+        .replace("int[] faceVertexCounts", "rel proxyPrim = </World{v=a}Cubic>\n        int[] faceVertexCounts")
+        .replace(
+            "[\"xformOp:translate\"]",
+            "[\"!resetXformStack!\", \"xformOp:translate\", \"!invert!xformOp:translate\"]",
+        );
+    let s = read_text(&fine).unwrap();
+    assert_eq!(s.hair[0].transform.transform_point3(Vec3::ZERO), Vec3::ZERO);
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
 
