@@ -304,8 +304,9 @@ impl Accel {
     /// same as [`Accel::intersect`] gives each: rays that mostly cross the same boxes, like a
     /// pixel's samples, share the node visits ([`Bvh::traverse_packet`]) and the loading of
     /// strand leaves ([`segment::near8_packet`]).
+    /// Rays past the first [`PACKET`], or past the end of `hits`, are not traced.
     pub fn intersect_packet(&self, rays: &[Ray], hits: &mut [Option<Hit>]) {
-        let rays = &rays[..rays.len().min(PACKET)];
+        let rays = &rays[..rays.len().min(hits.len()).min(PACKET)];
         let mut tmax = [0.0; PACKET];
         rays.iter().zip(&mut tmax).for_each(|(r, t)| *t = r.tmax);
         self.walk_packet(rays, &mut tmax, |i, object, o, prims, widen, ray, tmax| {
