@@ -169,6 +169,22 @@ struct Entry {
     t: f32,
 }
 
+impl Entry {
+    /// The entry of `node`'s child in `slot`, entered at distance `t` by `rays` (0 for one
+    /// ray); its tag is read only with `TAGS`.
+    #[inline(always)]
+    fn child<const TAGS: bool>(node: &Node, slot: usize, t: f32, rays: RayMask) -> Entry {
+        let child = node.child[slot];
+        Entry {
+            index: child & INDEX_MASK,
+            count: (child >> INDEX_BITS) as u8,
+            tag: if TAGS { node.tag[slot] } else { 0 },
+            rays,
+            t,
+        }
+    }
+}
+
 /// The traversal stack: the binary tree is at most MAX_DEPTH + 32 levels deep (past
 /// MAX_DEPTH the builder halves by count, and there are fewer than 2^32 items); each 8-wide
 /// level, at least one binary level, pushes at most seven entries.
@@ -295,16 +311,7 @@ impl Bvh {
             } else {
                 let node = &self.nodes[current.index as usize];
                 let (near, mask) = enter(ray, node, *tmax);
-                let entry = |i: u32| {
-                    let child = node.child[i as usize];
-                    Entry {
-                        index: child & INDEX_MASK,
-                        count: (child >> INDEX_BITS) as u8,
-                        tag: if TAGS { node.tag[i as usize] } else { 0 },
-                        rays: 0,
-                        t: near[i as usize],
-                    }
-                };
+                let entry = |i: u32| Entry::child::<TAGS>(node, i as usize, near[i as usize], 0);
                 if let Some(e) = push_nearest_first(mask, entry, &mut stack, &mut top) {
                     current = e;
                     continue;
@@ -478,16 +485,7 @@ impl Bvh {
                 let node = &self.nodes[current.index as usize];
                 let (near, entering) = enter(tests, tmax, current.rays, node);
                 let mask = entering.iter().enumerate().fold(0, |m, (c, &r)| m | u32::from(r != 0) << c);
-                let entry = |i: u32| {
-                    let child = node.child[i as usize];
-                    Entry {
-                        index: child & INDEX_MASK,
-                        count: (child >> INDEX_BITS) as u8,
-                        tag: if TAGS { node.tag[i as usize] } else { 0 },
-                        rays: entering[i as usize],
-                        t: near[i as usize],
-                    }
-                };
+                let entry = |i: u32| Entry::child::<TAGS>(node, i as usize, near[i as usize], entering[i as usize]);
                 if let Some(e) = push_nearest_first(mask, entry, &mut stack, &mut top) {
                     current = e;
                     continue;

@@ -180,15 +180,17 @@ pub fn near8_packet(
     let mut near = [0; PACKET];
     #[cfg(target_arch = "x86_64")]
     if std::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU has the features `Near8Avx2`'s functions are compiled for.
+        // SAFETY: the CPU has the features `near8_each_avx2` is compiled for.
         unsafe {
-            let segments = Near8Avx2::load(points, firsts, radius_scale);
-            while mask != 0 {
-                let i = mask.trailing_zeros() as usize;
-                mask &= mask - 1;
-                near[i] = segments.near(rays[i].origin, rays[i].dir);
-            }
-        }
+            near8_each_avx2(
+                points,
+                firsts,
+                radius_scale,
+                mask,
+                |i| (rays[i].origin, rays[i].dir),
+                |i, bits| near[i] = bits,
+            )
+        };
         return near;
     }
     while mask != 0 {
@@ -204,77 +206,65 @@ pub fn near8_packet(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn near8_avx2(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32], radius_scale: f32) -> u32 {
-    Near8Avx2::load(points, firsts, radius_scale).near(origin, dir)
+    let mut near = 0;
+    near8_each_avx2(points, firsts, radius_scale, 1, |_| (origin, dir), |_, bits| near = bits);
+    near
 }
 
-/// Eight segments in AVX2 registers, structure of arrays (segment i in lane i), with what
-/// [`near8`]'s bound needs of them alone: first points, axes, squared widest radius, and
-/// which lanes hold a segment with a surface.
+/// [`near8_avx2`] for the rays `i` in `rays` (origin and direction `ray(i)`): the eight
+/// segments are loaded and transposed once, then `near(i, bits)` gets each ray's bits.
+/// One function with straight-line code (the closures hold no intrinsics): helpers with
+/// AVX2 of their own would not be inlined, and pass their registers through memory.
 #[cfg(target_arch = "x86_64")]
-#[derive(Clone, Copy)]
-struct Near8Avx2 {
-    x0: std::arch::x86_64::__m256,
-    y0: std::arch::x86_64::__m256,
-    z0: std::arch::x86_64::__m256,
-    ax: std::arch::x86_64::__m256,
-    ay: std::arch::x86_64::__m256,
-    az: std::arch::x86_64::__m256,
-    rmax2: std::arch::x86_64::__m256,
-    valid: std::arch::x86_64::__m256,
-}
-
-#[cfg(target_arch = "x86_64")]
-impl Near8Avx2 {
-    /// Loads the segments starting at `firsts` (at most eight), radii times `radius_scale`.
-    #[target_feature(enable = "avx2")]
-    #[inline]
-    fn load(points: &[[f32; 4]], firsts: &[u32], radius_scale: f32) -> Near8Avx2 {
-        use std::arch::x86_64::*;
-        // Straight-line code, no helper closures: those would be compiled without AVX2 and called.
-        // Both end points of each segment; all zeros (no surface) past the last segment.
-        let mut ends = [[[0.0f32; 4]; 8]; 2];
-        for (i, &first) in firsts.iter().enumerate() {
-            ends[0][i] = points[first as usize];
-            ends[1][i] = points[first as usize + 1];
-        }
-        // Structure of arrays: x, y, z and radius of one end of the eight segments, segment i
-        // in lane i (a 4x4 transpose in each 128-bit half: segments 0-3 and 4-7).
-        let mut soa = [[_mm256_setzero_ps(); 4]; 2];
-        for (end, points) in ends.iter().enumerate() {
-            let row = |k: usize| _mm256_set_m128(bytemuck::cast(points[k + 4]), bytemuck::cast(points[k]));
-            let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
-            let (t0, t1) = (_mm256_unpacklo_ps(r0, r1), _mm256_unpackhi_ps(r0, r1));
-            let (t2, t3) = (_mm256_unpacklo_ps(r2, r3), _mm256_unpackhi_ps(r2, r3));
-            soa[end] = [
-                _mm256_shuffle_ps::<0x44>(t0, t2),
-                _mm256_shuffle_ps::<0xee>(t0, t2),
-                _mm256_shuffle_ps::<0x44>(t1, t3),
-                _mm256_shuffle_ps::<0xee>(t1, t3),
-            ];
-        }
-        let [[x0, y0, z0, r0], [x1, y1, z1, r1]] = soa;
-        let (r0, r1) =
-            (_mm256_mul_ps(r0, _mm256_set1_ps(radius_scale)), _mm256_mul_ps(r1, _mm256_set1_ps(radius_scale)));
-        let zero = _mm256_setzero_ps();
-        let valid = _mm256_and_ps(
-            _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(r0, zero), _mm256_cmp_ps::<_CMP_GE_OQ>(r1, zero)),
-            _mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_add_ps(r0, r1), zero),
-        );
-        let (ax, ay, az) = (_mm256_sub_ps(x1, x0), _mm256_sub_ps(y1, y0), _mm256_sub_ps(z1, z0));
-        let l2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, ax), _mm256_mul_ps(ay, ay)), _mm256_mul_ps(az, az));
-        let valid = _mm256_and_ps(valid, _mm256_cmp_ps::<_CMP_GT_OQ>(l2, zero));
-        let rmax = _mm256_max_ps(r0, r1);
-        Near8Avx2 { x0, y0, z0, ax, ay, az, rmax2: _mm256_mul_ps(rmax, rmax), valid }
+#[target_feature(enable = "avx2")]
+fn near8_each_avx2(
+    points: &[[f32; 4]],
+    firsts: &[u32],
+    radius_scale: f32,
+    mut rays: RayMask,
+    ray: impl Fn(usize) -> (Vec3, Vec3),
+    mut near: impl FnMut(usize, u32),
+) {
+    use std::arch::x86_64::*;
+    // Straight-line code, no helper closures: those would be compiled without AVX2 and called.
+    // Both end points of each segment; all zeros (no surface) past the last segment.
+    let mut ends = [[[0.0f32; 4]; 8]; 2];
+    for (i, &first) in firsts.iter().enumerate() {
+        ends[0][i] = points[first as usize];
+        ends[1][i] = points[first as usize + 1];
     }
-
-    /// The bits of [`near8`] for the ray from `origin` along `dir`.
-    #[target_feature(enable = "avx2")]
-    #[inline]
-    fn near(&self, origin: Vec3, dir: Vec3) -> u32 {
-        use std::arch::x86_64::*;
-        let Near8Avx2 { x0, y0, z0, ax, ay, az, rmax2, valid } = *self;
-        let zero = _mm256_setzero_ps();
-        let sign = _mm256_set1_ps(-0.0);
+    // Structure of arrays: x, y, z and radius of one end of the eight segments, segment i
+    // in lane i (a 4x4 transpose in each 128-bit half: segments 0-3 and 4-7).
+    let mut soa = [[_mm256_setzero_ps(); 4]; 2];
+    for (end, points) in ends.iter().enumerate() {
+        let row = |k: usize| _mm256_set_m128(bytemuck::cast(points[k + 4]), bytemuck::cast(points[k]));
+        let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+        let (t0, t1) = (_mm256_unpacklo_ps(r0, r1), _mm256_unpackhi_ps(r0, r1));
+        let (t2, t3) = (_mm256_unpacklo_ps(r2, r3), _mm256_unpackhi_ps(r2, r3));
+        soa[end] = [
+            _mm256_shuffle_ps::<0x44>(t0, t2),
+            _mm256_shuffle_ps::<0xee>(t0, t2),
+            _mm256_shuffle_ps::<0x44>(t1, t3),
+            _mm256_shuffle_ps::<0xee>(t1, t3),
+        ];
+    }
+    let [[x0, y0, z0, r0], [x1, y1, z1, r1]] = soa;
+    let (r0, r1) = (_mm256_mul_ps(r0, _mm256_set1_ps(radius_scale)), _mm256_mul_ps(r1, _mm256_set1_ps(radius_scale)));
+    let zero = _mm256_setzero_ps();
+    let valid = _mm256_and_ps(
+        _mm256_and_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(r0, zero), _mm256_cmp_ps::<_CMP_GE_OQ>(r1, zero)),
+        _mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_add_ps(r0, r1), zero),
+    );
+    let (ax, ay, az) = (_mm256_sub_ps(x1, x0), _mm256_sub_ps(y1, y0), _mm256_sub_ps(z1, z0));
+    let l2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, ax), _mm256_mul_ps(ay, ay)), _mm256_mul_ps(az, az));
+    let valid = _mm256_and_ps(valid, _mm256_cmp_ps::<_CMP_GT_OQ>(l2, zero));
+    let rmax = _mm256_max_ps(r0, r1);
+    let rmax2 = _mm256_mul_ps(rmax, rmax);
+    let sign = _mm256_set1_ps(-0.0);
+    while rays != 0 {
+        let i = rays.trailing_zeros() as usize;
+        rays &= rays - 1;
+        let (origin, dir) = ray(i);
         let (dx, dy, dz) = (_mm256_set1_ps(dir.x), _mm256_set1_ps(dir.y), _mm256_set1_ps(dir.z));
         let nx = _mm256_sub_ps(_mm256_mul_ps(dy, az), _mm256_mul_ps(dz, ay));
         let ny = _mm256_sub_ps(_mm256_mul_ps(dz, ax), _mm256_mul_ps(dx, az));
@@ -299,7 +289,7 @@ impl Near8Avx2 {
             _mm256_cmp_ps::<_CMP_GT_OQ>(m, zero),
             _mm256_cmp_ps::<_CMP_GT_OQ>(_mm256_mul_ps(m, m), bound),
         );
-        _mm256_movemask_ps(_mm256_andnot_ps(far, valid)) as u32
+        near(i, _mm256_movemask_ps(_mm256_andnot_ps(far, valid)) as u32);
     }
 }
 
