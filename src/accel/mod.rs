@@ -354,8 +354,8 @@ impl Accel {
                 let mut done = 0;
                 match (&o.shape, &o.lod) {
                     (_, Some(_)) => for_each_ray(live, |i| {
-                        let (r, lod_ray) = (&rays[i], LodRay::new(rays[i].origin, rays[i].dir, rays[i].cone));
-                        let ray = LeafRay::new(r.origin, r.dir);
+                        let r = &rays[i];
+                        let (ray, lod_ray) = (LeafRay::new(r.origin, r.dir), LodRay::new(r.origin, r.dir, r.cone));
                         if o.traverse(&tests[i], &lod_ray, &mut tmax[i], |prims, widen, t| {
                             leaf(i, object, o, prims, widen, ray, t)
                         }) {
@@ -387,6 +387,9 @@ impl Accel {
         stopped
     }
 }
+
+// A BVH leaf is culled for a packet by one `near8_packet`, which takes at most eight segments.
+const _: () = assert!(bvh::MAX_LEAF <= 8);
 
 /// Calls `f(i)` for every ray `i` in the mask, in order.
 #[inline(always)]
