@@ -182,11 +182,8 @@ pub fn trace_shadow(world: &World, origins: &[Vec3], light: Vec3, threads: usize
                 Tracing::Packet => chunk
                     .chunks(PACKET)
                     .map(|o| {
-                        let dirs = [light; PACKET];
-                        world
-                            .accel
-                            .occluded_packet(o, &dirs[..o.len()], &[f32::INFINITY; PACKET][..o.len()])
-                            .count_ones() as u64
+                        let rays: smallvec::SmallVec<[Ray; PACKET]> = o.iter().map(|&o| Ray::new(o, light)).collect();
+                        world.accel.occluded_packet(&rays, &[]).count_ones() as u64
                     })
                     .sum(),
             })

@@ -318,16 +318,18 @@ impl Accel {
         });
     }
 
-    /// [`Accel::occluded`] for a packet of up to [`PACKET`] segments from `origins[i]` along
-    /// unit `dirs[i]` up to `tmax[i]`: bit i of the result is set when segment i is blocked.
-    pub fn occluded_packet(&self, origins: &[Vec3], dirs: &[Vec3], tmax: &[f32]) -> RayMask {
-        let n = origins.len().min(dirs.len()).min(tmax.len()).min(PACKET);
+    /// Any-hit queries for a packet of up to [`PACKET`] shadow rays: bit i of the result is
+    /// set when something but `skips[i]` (none when `skips` is shorter) lies on ray i before
+    /// its `tmax`, strands with level of detail seen at the level of the ray's cone. For
+    /// opaque scenes this is [`Accel::transmittance_cone`] being 0, for rays that start
+    /// close together (a pixel's shadow rays towards one light) at a shared cost.
+    pub fn occluded_packet(&self, rays: &[Ray], skips: &[Option<Skip>]) -> RayMask {
+        let rays = &rays[..rays.len().min(PACKET)];
         let mut t = [0.0; PACKET];
-        t[..n].copy_from_slice(&tmax[..n]);
-        let rays: [Ray; PACKET] =
-            std::array::from_fn(|i| if i < n { Ray::new(origins[i], dirs[i]) } else { Ray::new(Vec3::ZERO, Vec3::X) });
-        self.walk_packet(&rays[..n], &mut t, |_, _, o, prims, widen, ray, t| {
-            intersect_leaf(&o.shape, prims, ray, *t, None, true, widen).is_some()
+        rays.iter().zip(&mut t).for_each(|(r, t)| *t = r.tmax);
+        self.walk_packet(rays, &mut t, |i, object, o, prims, widen, ray, t| {
+            let skip = skips.get(i).copied().flatten().filter(|s| s.object == object);
+            intersect_leaf(&o.shape, prims, ray, *t, skip, true, widen).is_some()
         })
     }
 
@@ -783,13 +785,19 @@ mod tests {
                     .collect();
                 let mut got = vec![None; n];
                 accel.intersect_packet(&rays, &mut got);
-                let origins: Vec<Vec3> = rays.iter().map(|r| r.origin).collect();
-                let dirs: Vec<Vec3> = rays.iter().map(|r| r.dir).collect();
-                let tmax: Vec<f32> = (0..n).map(|i| 2.0 + i as f32).collect();
-                let occluded = accel.occluded_packet(&origins, &dirs, &tmax);
+                // Shadow rays: the same rays up to a distance, some skipping a segment.
+                let mut shadows = rays.clone();
+                shadows.iter_mut().enumerate().for_each(|(i, r)| r.tmax = 2.0 + i as f32);
+                let skips: Vec<Option<Skip>> = (0..n)
+                    .map(|i| {
+                        got[i].filter(|_| i % 2 == 0).map(|h| Skip { object: h.object, first: h.prim, last: h.prim })
+                    })
+                    .collect();
+                let occluded = accel.occluded_packet(&shadows, &skips);
                 for (i, ray) in rays.iter().enumerate() {
                     assert_eq!(got[i], accel.intersect(ray), "ray {i} of packet {p}");
-                    let expected = accel.occluded(ray.origin, ray.dir, tmax[i], None);
+                    let expected =
+                        accel.transmittance_cone(ray.origin, ray.dir, shadows[i].tmax, skips[i], ray.cone, None) == 0.0;
                     assert_eq!(occluded >> i & 1 == 1, expected, "shadow ray {i} of packet {p}");
                     hits += got[i].is_some() as u32;
                     blocked += expected as u32;

@@ -7,7 +7,7 @@ use crate::accel::{Hit, HitKind, Object, Shape, Skip, StochasticTail, NEGLIGIBLE
 use crate::geometry::StrandPoint;
 use crate::light::{Light, LightSample};
 use crate::math::rng::PixelSampler;
-use crate::math::{offset_origin, Color, Ray, RayCone};
+use crate::math::{offset_origin, Color, Ray, RayCone, RayMask, PACKET};
 use crate::scene::World;
 use crate::shading::{Material, ShadingPoint};
 use glam::Vec3;
@@ -89,13 +89,20 @@ pub fn trace(
 }
 
 /// What the rest of its pixel tells of a camera ray before it is traced.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum CameraHint {
+#[derive(Debug)]
+pub enum CameraHint<'a> {
     /// Nothing: the ray is traced like any other.
     None,
     /// Its closest hit, traced with the pixel's other rays as a packet (only in scenes
-    /// without semi-transparent strands, where every integrator starts with that query).
-    Hit(Option<Hit>),
+    /// without semi-transparent strands, where every integrator starts with that query),
+    /// and where the shadow rays from that hit go to be traced with the pixel's others
+    /// (the direct integrator and the final gather defer them; the path tracer does not).
+    Hit {
+        /// The closest hit.
+        hit: Option<Hit>,
+        /// The pixel's deferred shadow rays, set to this ray's sample.
+        shadows: &'a mut PixelShadows,
+    },
     /// The pixel's previous sample met fur drawn semi-transparent for its level of detail
     /// first: likely so for this one too, so the closest-hit query that would come first
     /// is skipped (the samples of a pixel run in a fixed order: deterministic). The
@@ -241,12 +248,12 @@ fn trace_from(
     // ([`CameraHint::LayersFirst`]), the closest hit would be paid on top of the layers'
     // query: 10 k instructions of 30 k on such rays in scenes/lod_field.toml, where the
     // thin fur is drawn semi-transparent from 2 to 3 units on (docs/performance.md, session 5).
-    let layers_first = hint == CameraHint::LayersFirst;
+    let layers_first = matches!(hint, CameraHint::LayersFirst);
     let opaque_first = tail.is_none() || !layers_first && !world.accel.has_strand_opacity();
-    let hit = match hint {
-        CameraHint::Hit(known) if opaque_first => known,
-        _ if opaque_first => world.accel.intersect(ray),
-        _ => None,
+    let (hit, shadows) = match hint {
+        CameraHint::Hit { hit, shadows } if opaque_first => (hit, Shadows::Deferred(shadows)),
+        _ if opaque_first => (world.accel.intersect(ray), Shadows::Now),
+        _ => (None, Shadows::Now),
     };
     let tail = match tail {
         Some(tail) if !opaque_first || hit.is_some_and(|h| world.accel.hit_opacity(&h) < 1.0) => tail,
@@ -257,7 +264,7 @@ fn trace_from(
             let Some(hit) = hit else {
                 return (emitted(world.background), None);
             };
-            let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect, None);
+            let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect, shadows);
             return (color, Some(first));
         }
     };
@@ -284,7 +291,7 @@ fn trace_from(
             if blend || last || tail.draw(&layer.hit) < a {
                 // Blended by its opacity, or where the tail stops with all the light left.
                 let weight = if blend { carried * a } else { carried };
-                let shared = Some((&mut shadows, weight));
+                let shared = Shadows::Shared(&mut shadows, weight);
                 let (c, f) = shade(world, ray, &layer.hit, depth, sampler, counters, indirect, shared);
                 first.get_or_insert(f);
                 color += weight * c;
@@ -330,6 +337,91 @@ impl ShadowRay {
     fn trace(&self, world: &World, counters: &mut Counters) -> f32 {
         counters.rays += 1;
         world.accel.transmittance_cone(self.origin, self.dir, self.tmax, self.skip, self.cone, self.seed)
+    }
+}
+
+/// Where [`shade`] sends the shadow rays of a hit.
+enum Shadows<'a> {
+    /// Traced at once.
+    Now,
+    /// Offered to the rays the layers of a camera ray share, with the hit's blend weight.
+    Shared(&'a mut SharedShadows, f32),
+    /// Kept with the pixel's others, to be traced as packets.
+    Deferred(&'a mut PixelShadows),
+}
+
+/// Fewest rays worth tracing as a packet: render instructions on the hairy torus
+/// (docs/performance.md) fall by 2 % at 4 camera rays a pixel, 8 % at 8 and 11 % at 16,
+/// and rise by 7 % at 2, where a packet's fixed work per node is shared by too few rays.
+pub const MIN_PACKET: usize = 4;
+
+/// The shadow rays of a pixel's camera hits (in scenes without semi-transparent strands,
+/// where a shadow ray is an any-hit query), kept while the pixel's samples are shaded and
+/// then traced as packets, one light at a time: a pixel's shadow rays towards one light
+/// start close together and mostly cross the same boxes, like its camera rays
+/// ([`crate::accel::Accel::occluded_packet`]). Each adds its light to its sample's colour
+/// unless blocked, as it would have added it traced at once.
+#[derive(Debug, Default)]
+pub struct PixelShadows {
+    /// The sample being shaded.
+    sample: u32,
+    rays: SmallVec<[Deferred; 2 * PACKET]>,
+}
+
+/// One deferred shadow ray.
+#[derive(Clone, Copy, Debug)]
+struct Deferred {
+    light: u32,
+    sample: u32,
+    /// The light it adds when nothing blocks it.
+    value: Color,
+    ray: Ray,
+    skip: Option<Skip>,
+}
+
+impl PixelShadows {
+    /// Sets the sample whose shadow rays come next; returns `self` for a [`CameraHint`].
+    pub fn for_sample(&mut self, sample: usize) -> &mut PixelShadows {
+        self.sample = sample as u32;
+        self
+    }
+
+    fn push(&mut self, light: usize, value: Color, shadow: &ShadowRay) {
+        let ray = Ray { origin: shadow.origin, dir: shadow.dir, tmax: shadow.tmax, cone: shadow.cone };
+        let d = Deferred { light: light as u32, sample: self.sample, value, ray, skip: shadow.skip };
+        self.rays.push(d);
+    }
+
+    /// Traces the kept rays, light by light in the order of the samples, [`PACKET`] at a
+    /// time (fewer than [`MIN_PACKET`] one by one), adding the light of each unblocked one
+    /// to `colors[sample]`; then forgets them.
+    pub fn trace(&mut self, world: &World, colors: &mut [Color], counters: &mut Counters) {
+        counters.rays += self.rays.len() as u64;
+        for light in 0..world.lights.len() as u32 {
+            let mut batch: SmallVec<[Deferred; PACKET]> = SmallVec::new();
+            let mut rays = self.rays.iter().filter(|d| d.light == light).peekable();
+            while rays.peek().is_some() {
+                batch.clear();
+                batch.extend(rays.by_ref().take(PACKET).copied());
+                let blocked = if batch.len() >= MIN_PACKET {
+                    let packet: SmallVec<[Ray; PACKET]> = batch.iter().map(|d| d.ray).collect();
+                    let skips: SmallVec<[Option<Skip>; PACKET]> = batch.iter().map(|d| d.skip).collect();
+                    world.accel.occluded_packet(&packet, &skips)
+                } else {
+                    batch.iter().enumerate().fold(0, |mask, (i, d)| {
+                        let r = &d.ray;
+                        let open = world.accel.transmittance_cone(r.origin, r.dir, r.tmax, d.skip, r.cone, None);
+                        mask | (((open == 0.0) as RayMask) << i)
+                    })
+                };
+                for (i, d) in batch.iter().enumerate() {
+                    if blocked >> i & 1 == 0 {
+                        colors[d.sample as usize] += d.value;
+                    }
+                }
+            }
+        }
+        self.rays.clear();
     }
 }
 
@@ -407,7 +499,8 @@ impl SharedShadows {
 
 /// Direct light at one hit, the specular rays and what `indirect` adds; and the hit's
 /// description for the AOVs. With `shared` shadows and the hit's blend weight, the direct
-/// light is offered to them instead of added (the caller traces their shadow rays).
+/// light is offered to them instead of added (the caller traces their shadow rays); with
+/// deferred shadows, kept for the pixel's packets.
 #[allow(clippy::too_many_arguments)]
 fn shade(
     world: &World,
@@ -417,7 +510,7 @@ fn shade(
     sampler: &mut PixelSampler,
     counters: &mut Counters,
     indirect: &impl Indirect,
-    mut shared: Option<(&mut SharedShadows, f32)>,
+    mut shadows: Shadows,
 ) -> (Color, FirstHit) {
     let object = &world.accel.objects[hit.object as usize];
     let material = &world.materials[object.material as usize];
@@ -459,9 +552,10 @@ fn shade(
         // The shadow ray starts with the camera ray's footprint at the hit (level of detail).
         let cone = ray.cone.propagate(hit.t, 0.0);
         let shadow = ShadowRay { origin: d.origin, dir: ls.dir, tmax, skip: d.skip, cone, seed: shadow_seed };
-        match &mut shared {
-            Some((shadows, weight)) => shadows.offer(index, *weight * (f * ls.value), shadow),
-            None => {
+        match &mut shadows {
+            Shadows::Shared(shared, weight) => shared.offer(index, *weight * (f * ls.value), shadow),
+            Shadows::Deferred(pixel) => pixel.push(index, f * ls.value, &shadow),
+            Shadows::Now => {
                 let transmitted = shadow.trace(world, counters);
                 if transmitted > 0.0 {
                     color += f * ls.value * transmitted;

@@ -10,7 +10,7 @@ mod irradiance_cache;
 mod path;
 mod tiled;
 
-pub use direct::{trace, CameraHint, Counters, FirstHit, BLEND_TRANSMITTANCE};
+pub use direct::{trace, CameraHint, Counters, FirstHit, PixelShadows, BLEND_TRANSMITTANCE};
 pub use irradiance_cache::IrradianceCache;
 pub use tiled::{render_tiles, tile_count_of, AfterTile, Control, TileMask, TiledFilm};
 
@@ -92,17 +92,12 @@ pub fn trace_camera_cached(
 /// Per-ray values of one batch of a pixel's samples: on the stack up to a packet's worth.
 type PixelRays<T> = smallvec::SmallVec<[T; PACKET]>;
 
-/// Fewest camera rays of a pixel worth tracing as packets: render instructions on the
-/// hairy torus (docs/performance.md) fall by 2 % at 4 spp, 8 % at 8 and 11 % at 16, and
-/// rise by 7 % at 2, where a packet's fixed work per node is shared by too few rays.
-const MIN_PACKET: usize = 4;
-
 /// The closest hits of a pixel's camera rays, traced as packets ([`crate::accel::Accel::intersect_packet`]:
 /// the same hits as one by one, for less work), when every integrator starts with exactly
 /// that query (in scenes without semi-transparent strands) and there are enough rays
-/// ([`MIN_PACKET`]). `None` otherwise.
+/// ([`direct::MIN_PACKET`]). `None` otherwise.
 fn camera_hits(world: &World, rays: &[Ray]) -> Option<PixelRays<Option<Hit>>> {
-    if world.accel.has_transparency() || rays.len() < MIN_PACKET {
+    if world.accel.has_transparency() || rays.len() < direct::MIN_PACKET {
         return None;
     }
     let mut hits: PixelRays<Option<Hit>> = smallvec::smallvec![None; rays.len()];
@@ -138,9 +133,12 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
             samplers.push(sampler);
         }
         let known = camera_hits(world, &rays);
+        // With known hits, the batch's shadow rays are traced together once it is shaded.
+        let mut shadows = PixelShadows::default();
+        let (mut colors, mut firsts) = (PixelRays::<Color>::new(), PixelRays::<Option<FirstHit>>::new());
         for (i, (ray, mut sampler)) in rays.iter().zip(samplers).enumerate() {
             let hint = match &known {
-                Some(hits) => CameraHint::Hit(hits[i]),
+                Some(hits) => CameraHint::Hit { hit: hits[i], shadows: shadows.for_sample(i) },
                 None if layers_first => CameraHint::LayersFirst,
                 None => CameraHint::None,
             };
@@ -148,6 +146,11 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
             layers_first = first.is_some_and(|f| {
                 f.lod_level.is_some_and(|l| world.accel.objects[f.object as usize].lod_opacity(l) < 1.0)
             });
+            colors.push(color);
+            firsts.push(first);
+        }
+        shadows.trace(world, &mut colors, counters);
+        for (&color, first) in colors.iter().zip(firsts) {
             sum += color;
             spread.add(color, first.map(|f| (f.object, f.strand)));
             if let Some(f) = first {
@@ -176,4 +179,45 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
     pixel.coverage = hits as f32 / taken as f32;
     pixel.samples = taken as f32;
     pixel
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::accel::lod::LodParams;
+    use crate::scene::prepare;
+
+    /// A pixel traced with packets (its camera rays, then its shadow rays light by light)
+    /// gets the colour, bit for bit, of its samples traced one by one with every shadow ray
+    /// traced at once: on the demo (hair, meshes, a distant light and the environment), and
+    /// with opaque level of detail, whose shadow rays take their level from their cones.
+    #[test]
+    fn packets_render_pixels_as_single_rays_do() {
+        for lod in [None, Some(LodParams::default())] {
+            let mut desc = crate::demo::description(3000, 1);
+            (desc.settings.width, desc.settings.height, desc.settings.spp) = (48, 36, 8);
+            desc.hair[0].lod = lod;
+            let (world, _) = prepare(&desc).unwrap();
+            assert!(!world.accel.has_transparency());
+            let (mut hair, mut shadowed) = (0, 0);
+            for (x, y) in (0..36).flat_map(|y| (0..48).map(move |x| (x, y))) {
+                let mut counters = Counters::default();
+                let packed = render_pixel(&world, None, x, y, &mut counters);
+                let mut sum = Vec3::ZERO;
+                for s in 0..8 {
+                    let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
+                    let (jx, jy) = world.settings.filter.place(sampler.next_2d());
+                    let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
+                    let (color, first) = trace_camera(&world, &ray, &mut sampler, &mut counters);
+                    sum += color;
+                    hair += first.is_some_and(|f| f.strand.is_some()) as u32;
+                    // Black where a hit's every shadow ray was blocked and nothing else lit it.
+                    shadowed += (first.is_some() && color.max_element() < 0.05) as u32;
+                }
+                let single = sum / 8.0;
+                assert_eq!(packed.color.to_array().map(f32::to_bits), single.to_array().map(f32::to_bits), "{x} {y}");
+            }
+            assert!(hair > 1000 && shadowed > 100, "the test needs hair and shadows: {hair}, {shadowed}");
+        }
+    }
 }

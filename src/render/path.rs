@@ -91,8 +91,8 @@ pub fn trace(
     let mut vertex = 0u32;
     loop {
         counters.rays += 1;
-        let hit = match hint {
-            CameraHint::Hit(hit) if vertex == 0 => hit,
+        let hit = match &hint {
+            CameraHint::Hit { hit, .. } if vertex == 0 => *hit,
             _ => next_hit(world, &ray, sampler, &mut layers, &mut seen),
         };
         let t_hit = hit.map_or(ray.tmax, |h| h.t);
