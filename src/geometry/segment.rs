@@ -142,7 +142,7 @@ pub fn intersect_cylinder4(origin: Vec3, dir: Vec3, tmin: f32, tmax: f32, p0: [f
 /// survivors go on to the exact test. A cleared bit means the exact test would not hit.
 ///
 /// Panics if `firsts` holds more than eight segments or one whose points are out of bounds.
-#[inline]
+#[inline(always)]
 pub fn near8(origin: Vec3, dir: Vec3, points: &[[f32; 4]], firsts: &[u32], radius_scale: f32) -> u32 {
     assert!(firsts.len() <= 8, "near8 takes at most eight segments");
     #[cfg(target_arch = "x86_64")]
