@@ -360,23 +360,23 @@ pub const MIN_PACKET: usize = 4;
 /// then traced as packets, one light at a time: a pixel's shadow rays towards one light
 /// start close together and mostly cross the same boxes, like its camera rays
 /// ([`crate::accel::Accel::occluded_packet`]). Each adds its light to its sample's colour
-/// unless blocked, as it would have added it traced at once.
+/// unless blocked, as it would have added it traced at once. One serves all the pixels a
+/// task renders, so its arrays are allocated once.
 #[derive(Debug, Default)]
 pub struct PixelShadows {
     /// The sample being shaded.
     sample: u32,
-    rays: SmallVec<[Deferred; 2 * PACKET]>,
+    /// Per light, its rays in the order they came.
+    lights: Vec<LightRays>,
 }
 
-/// One deferred shadow ray.
-#[derive(Clone, Copy, Debug)]
-struct Deferred {
-    light: u32,
-    sample: u32,
-    /// The light it adds when nothing blocks it.
-    value: Color,
-    ray: Ray,
-    skip: Option<Skip>,
+/// The deferred shadow rays towards one light, in flat arrays that packets read as they are.
+#[derive(Debug, Default)]
+struct LightRays {
+    rays: Vec<Ray>,
+    skips: Vec<Option<Skip>>,
+    /// Per ray, its sample and the light it adds when nothing blocks it.
+    adds: Vec<(u32, Color)>,
 }
 
 impl PixelShadows {
@@ -387,41 +387,41 @@ impl PixelShadows {
     }
 
     fn push(&mut self, light: usize, value: Color, shadow: &ShadowRay) {
-        let ray = Ray { origin: shadow.origin, dir: shadow.dir, tmax: shadow.tmax, cone: shadow.cone };
-        let d = Deferred { light: light as u32, sample: self.sample, value, ray, skip: shadow.skip };
-        self.rays.push(d);
+        if self.lights.len() <= light {
+            self.lights.resize_with(light + 1, LightRays::default);
+        }
+        let rays = &mut self.lights[light];
+        rays.rays.push(Ray { origin: shadow.origin, dir: shadow.dir, tmax: shadow.tmax, cone: shadow.cone });
+        rays.skips.push(shadow.skip);
+        rays.adds.push((self.sample, value));
     }
 
     /// Traces the kept rays, light by light in the order of the samples, [`PACKET`] at a
     /// time (fewer than [`MIN_PACKET`] one by one), adding the light of each unblocked one
     /// to `colors[sample]`; then forgets them.
     pub fn trace(&mut self, world: &World, colors: &mut [Color], counters: &mut Counters) {
-        counters.rays += self.rays.len() as u64;
-        for light in 0..world.lights.len() as u32 {
-            let mut batch: SmallVec<[Deferred; PACKET]> = SmallVec::new();
-            let mut rays = self.rays.iter().filter(|d| d.light == light).peekable();
-            while rays.peek().is_some() {
-                batch.clear();
-                batch.extend(rays.by_ref().take(PACKET).copied());
-                let blocked = if batch.len() >= MIN_PACKET {
-                    let packet: SmallVec<[Ray; PACKET]> = batch.iter().map(|d| d.ray).collect();
-                    let skips: SmallVec<[Option<Skip>; PACKET]> = batch.iter().map(|d| d.skip).collect();
-                    world.accel.occluded_packet(&packet, &skips)
+        for light in &mut self.lights {
+            counters.rays += light.rays.len() as u64;
+            let chunks = light.rays.chunks(PACKET).zip(light.skips.chunks(PACKET)).zip(light.adds.chunks(PACKET));
+            for ((rays, skips), adds) in chunks {
+                let blocked = if rays.len() >= MIN_PACKET {
+                    world.accel.occluded_packet(rays, skips)
                 } else {
-                    batch.iter().enumerate().fold(0, |mask, (i, d)| {
-                        let r = &d.ray;
-                        let open = world.accel.transmittance_cone(r.origin, r.dir, r.tmax, d.skip, r.cone, None);
+                    rays.iter().zip(skips).enumerate().fold(0, |mask, (i, (r, &skip))| {
+                        let open = world.accel.transmittance_cone(r.origin, r.dir, r.tmax, skip, r.cone, None);
                         mask | (((open == 0.0) as RayMask) << i)
                     })
                 };
-                for (i, d) in batch.iter().enumerate() {
+                for (i, &(sample, value)) in adds.iter().enumerate() {
                     if blocked >> i & 1 == 0 {
-                        colors[d.sample as usize] += d.value;
+                        colors[sample as usize] += value;
                     }
                 }
             }
+            light.rays.clear();
+            light.skips.clear();
+            light.adds.clear();
         }
-        self.rays.clear();
     }
 }
 

@@ -111,7 +111,16 @@ fn camera_hits(world: &World, rays: &[Ray]) -> Option<PixelRays<Option<Hit>>> {
 /// `min_spp` while they disagree ([`adaptive::Spread`]), up to `max_spp`; sample `s` is
 /// the same whatever the batches, so a pixel refined to `n` samples equals a fixed-rate
 /// render at `n`.
-fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, counters: &mut Counters) -> Pixel {
+///
+/// `shadows` holds the shadow rays of a batch of samples traced as packets (empty between
+/// calls; one per task spares allocating its arrays per pixel).
+fn render_pixel(
+    world: &World,
+    cache: Option<&IrradianceCache>,
+    (x, y): (u32, u32),
+    shadows: &mut PixelShadows,
+    counters: &mut Counters,
+) -> Pixel {
     let (min, max, threshold) = match world.settings.adaptive {
         Some(a) => (a.min_spp, a.max_spp, Some(a.threshold)),
         None => (world.settings.spp, world.settings.spp, None),
@@ -134,7 +143,6 @@ fn render_pixel(world: &World, cache: Option<&IrradianceCache>, x: u32, y: u32, 
         }
         let known = camera_hits(world, &rays);
         // With known hits, the batch's shadow rays are traced together once it is shaded.
-        let mut shadows = PixelShadows::default();
         let (mut colors, mut firsts) = (PixelRays::<Color>::new(), PixelRays::<Option<FirstHit>>::new());
         for (i, (ray, mut sampler)) in rays.iter().zip(samplers).enumerate() {
             let hint = match &known {
@@ -202,7 +210,7 @@ mod tests {
             let (mut hair, mut shadowed) = (0, 0);
             for (x, y) in (0..36).flat_map(|y| (0..48).map(move |x| (x, y))) {
                 let mut counters = Counters::default();
-                let packed = render_pixel(&world, None, x, y, &mut counters);
+                let packed = render_pixel(&world, None, (x, y), &mut PixelShadows::default(), &mut counters);
                 let mut sum = Vec3::ZERO;
                 for s in 0..8 {
                     let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);

@@ -2,7 +2,7 @@
 //! and resumed, or be split over machines: every pixel depends only on (seed, pixel,
 //! sample), so any set of tiles, rendered in any order or process, gives the same pixels.
 
-use super::{render_pixel, Counters, IrradianceCache, Progress, RenderStats, TILE};
+use super::{render_pixel, Counters, IrradianceCache, PixelShadows, Progress, RenderStats, TILE};
 use crate::film::{Film, Region};
 use crate::scene::{Integrator, World};
 use rayon::prelude::*;
@@ -168,13 +168,14 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
             }
             let tile = tile_of(region, t);
             let mut counters = Counters::default();
+            let mut shadows = PixelShadows::default();
             let mut pixels = Film::new(tile.width, tile.height);
             for (i, p) in pixels.pixels.iter_mut().enumerate() {
                 if cancelled() {
                     return 0;
                 }
                 let (x, y) = (tile.x + i as u32 % tile.width, tile.y + i as u32 / tile.width);
-                *p = render_pixel(world, cache.as_ref(), x, y, &mut counters);
+                *p = render_pixel(world, cache.as_ref(), (x, y), &mut shadows, &mut counters);
             }
             {
                 let mut s = lock(&shared);
