@@ -12,7 +12,6 @@ use crate::geometry::{segment, triangle, StrandSet};
 use crate::math::rng::{hash_combine, unit_float};
 use crate::math::{Ray, RayCone};
 use glam::Vec3;
-use sobol_burley::parts::owen_scramble_rev;
 
 /// Transmittance below which a shadow ray counts as blocked and a stack of partial hits
 /// stops: light attenuated below 1/1000 adds less than the 8-bit output resolves.
@@ -134,21 +133,21 @@ fn is_partial(o: &Object) -> bool {
 /// How a front-to-back blend treats the hits behind the first ones: blended exactly while
 /// at least `blend` of the light is left, then walked stochastically, stopping at a hit
 /// with probability equal to its opacity. The walk's random number at a hit comes from
-/// the hit's primitive and the walk's [`Coins`], not from the order hits are found in, so
-/// the query can stop looking behind the hit a walk will stop at, as behind an opaque one.
+/// the hit's primitive and `seed`, not from the order hits are found in, so the query
+/// can stop looking behind the hit a walk will stop at, as behind an opaque one.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StochasticTail {
     /// Transmittance below which the walk turns stochastic.
     pub blend: f32,
-    /// The walk's random numbers (one set per ray, stratified over a pixel's samples).
-    pub coins: Coins,
+    /// Seed of the walk's random numbers (one per ray).
+    pub seed: u32,
 }
 
 impl StochasticTail {
     /// The uniform number in [0, 1) that decides whether the walk stops at `hit`.
     #[inline]
     pub fn draw(&self, hit: &Hit) -> f32 {
-        self.coins.draw(hit.object, hit.prim)
+        stop_draw(self.seed, hit.object, hit.prim)
     }
 }
 
@@ -157,43 +156,6 @@ impl StochasticTail {
 #[inline]
 fn stop_draw(seed: u32, object: u32, prim: u32) -> f32 {
     unit_float(hash_combine(&[seed, object, prim]))
-}
-
-/// The uniform numbers that decide, primitive by primitive, where a stochastic walk through
-/// semi-transparent hits stops, stratified over the samples of a pixel.
-///
-/// Stochastic transparency converges far faster when the samples of a pixel make
-/// stratified choices (Enderton et al. 2010, section 4: stratified coverage masks). Each
-/// walk starts from one value `u` of a sample dimension, which the pixel's Owen-scrambled
-/// Sobol samples stratify; primitive `p` draws `u` Owen-scrambled once more with a seed of
-/// its own (Owen 1995; the hash-based scramble of Burley 2020, `sobol_burley`). A scramble
-/// maps the strata of `u` onto strata, so over a pixel's samples each primitive's draws are
-/// stratified as `u` is: a primitive of opacity 1/4 met by all four samples of a pixel
-/// stops exactly one walk, not one on average. For a fixed `u`, draws scrambled with
-/// different seeds are independent uniform numbers, so the primitives along one ray are
-/// decided independently and the walk's expectation is the front-to-back blend. (Shifting
-/// `u` by a hash per primitive, a Cranley-Patterson rotation, stratifies as well, but the
-/// draws of two primitives along one ray then differ by a constant: their joint stopping
-/// probabilities, and so a pixel's expected colour, would depend on the hashes.)
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Coins {
-    /// The walk's sample value, as the bit-reversed integer the scramble works on.
-    rev: u32,
-}
-
-impl Coins {
-    /// The coins of a walk whose sample value is `u` in [0, 1).
-    #[inline]
-    pub fn new(u: f32) -> Coins {
-        Coins { rev: (((u.clamp(0.0, 1.0) * 16_777_216.0) as u32).min(16_777_215) << 8).reverse_bits() }
-    }
-
-    /// The uniform number in [0, 1) for primitive `prim` of `object`: the walk stops there
-    /// when it is below the opacity.
-    #[inline]
-    pub fn draw(&self, object: u32, prim: u32) -> f32 {
-        unit_float(owen_scramble_rev(self.rev, hash_combine(&[object, prim])).reverse_bits())
-    }
 }
 
 /// Inserts `layer` into the hits `out` sorted by distance and keeps what a front-to-back
@@ -296,41 +258,6 @@ impl Accel {
         });
     }
 
-    /// The nearest hit along `ray` at which a stochastic walk through the semi-transparent
-    /// hits stops (stochastic transparency, Enderton et al. 2010): an opaque hit always, a
-    /// hit of opacity `a` when its draw from `coins` is below `a`. Shaded with all the
-    /// light, the hit's colour has the expectation of the front-to-back blend of every hit,
-    /// `sum_i T_i a_i C_i`, since the walk passes each hit with probability `1 - a`,
-    /// independently ([`Coins`]). A hit's draw belongs to its primitive, not to the order
-    /// hits are found in, so this is one closest-hit traversal that counts only the hits
-    /// where the walk stops and culls behind the nearest of them.
-    pub fn intersect_stochastic(&self, ray: &Ray, coins: Coins) -> Option<Hit> {
-        let mut best = None;
-        let mut cutoff = ray.tmax;
-        self.walk(ray.origin, ray.dir, ray.cone, 0.0, &mut cutoff, |object, o, prims, widen, cutoff| {
-            leaf_hits(
-                &o.shape,
-                prims,
-                (ray.origin, ray.dir),
-                (0.0, *cutoff),
-                (None, true),
-                widen,
-                |prim, t, kind, level| {
-                    if t < *cutoff {
-                        let a = opacity(&o.shape, prim, kind) * o.lod_opacity(level);
-                        if a >= 1.0 || coins.draw(object, prim) < a {
-                            *cutoff = t;
-                            best = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
-                        }
-                    }
-                    false
-                },
-            );
-            false
-        });
-        best
-    }
-
     /// The fraction of light that passes from `origin` along unit `dir` up to distance
     /// `tmax`, ignoring `skip`: the product of `1 - opacity` over every hit (thesis section
     /// 2.2.8's transparency, applied to shadow rays so hair casts partial shadows). Meshes
@@ -399,7 +326,7 @@ impl Accel {
 mod tests {
     use super::*;
     use crate::geometry::{StrandSet, TriangleMesh};
-    use crate::math::rng::{hash_u32, GenRng};
+    use crate::math::rng::GenRng;
     use rand::{Rng, SeedableRng};
 
     /// `n` parallel strands of opacity `a` crossing the y axis at y = 1, 2, ..., n.
@@ -501,7 +428,7 @@ mod tests {
         let mut out = Vec::new();
         let mut lengths = [0; 9];
         for seed in 0..200 {
-            let tail = StochasticTail { blend: 0.3, coins: Coins::new(unit_float(hash_u32(seed))) };
+            let tail = StochasticTail { blend: 0.3, seed };
             accel.intersect_k(&ray, 0.0, 8, &[], Some(tail), &mut out);
             // Two layers are blended (light left 1, then 1/2), then the walk stops at the
             // first hit whose draw is below 1/2.

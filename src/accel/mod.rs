@@ -8,7 +8,7 @@ pub mod bvh;
 mod layers;
 pub mod lod;
 
-pub use layers::{Coins, LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBLE_TRANSMITTANCE};
+pub use layers::{LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBLE_TRANSMITTANCE};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray, RayCone, RayMask, PACKET};

@@ -3,7 +3,7 @@
 //! and refraction up to the maximum depth, and semi-transparent hair blended in layers.
 //! The final gather reuses it with an indirect term ([`Indirect`]).
 
-use crate::accel::{Coins, Hit, HitKind, Object, Shape, Skip, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
+use crate::accel::{Hit, HitKind, Object, Shape, Skip, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
 use crate::geometry::StrandPoint;
 use crate::light::{Light, LightSample};
 use crate::math::rng::PixelSampler;
@@ -226,15 +226,10 @@ fn trace_from(
         world.lights.iter().filter_map(|l| l.emitted(ray.origin, ray.dir, tmax)).min_by(|a, b| a.0.total_cmp(&b.0))
     };
     let emitted = |c: Color| if see_emitters { c } else { Color::ZERO };
-    // One sample dimension decides the stochastic choices among semi-transparent hits.
-    let u = world.accel.has_transparency().then(|| sampler.next_1d());
-    // Where only level of detail makes strands semi-transparent, coarse strands stand for
-    // several opaque fine ones: one stochastic walk, stratified over the pixel's samples,
-    // picks the hit shaded with all the light (`Accel::intersect_stochastic`) instead of
-    // a blend of layers (docs/performance.md, session 6).
-    let walk = u.filter(|_| !world.accel.has_strand_opacity()).map(Coins::new);
-    let tail =
-        u.filter(|_| walk.is_none()).map(|u| StochasticTail { blend: BLEND_TRANSMITTANCE, coins: Coins::new(u) });
+    let tail = world
+        .accel
+        .has_transparency()
+        .then(|| StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 });
     // When only level of detail makes strands semi-transparent, one closest-hit traversal
     // comes first: most fur is drawn opaque, and an opaque nearest hit is all the blend
     // below would shade, so most rays pay no multi-hit query (16 spp on
@@ -250,7 +245,6 @@ fn trace_from(
     let opaque_first = tail.is_none() || !layers_first && !world.accel.has_strand_opacity();
     let hit = match hint {
         CameraHint::Hit(known) if opaque_first => known,
-        _ if walk.is_some() => walk.and_then(|coins| world.accel.intersect_stochastic(ray, coins)),
         _ if opaque_first => world.accel.intersect(ray),
         _ => None,
     };
