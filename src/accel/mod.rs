@@ -4,20 +4,6 @@
 //! A strand set with level of detail keeps one BVH whose items carry their pruning group
 //! ([`lod`]); every query sees it at the level of its ray's cone (`Object::traverse`).
 
-pub mod bvh;
-mod layers;
-pub mod lod;
-
-pub use layers::{LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBLE_TRANSMITTANCE};
-
-use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
-use crate::math::{Aabb, Ray, RayCone, RayMask, PACKET};
-use bvh::{BuildItem, Bvh, RayBoxTest};
-use glam::Vec3;
-use lod::{LodCamera, LodLeaf, LodParams, LodRay, StrandLod, Widen};
-use rayon::prelude::*;
-use wide::f32x4;
-
 /// Defines a query `$name` whose body is compiled twice, for AVX2 and FMA (`$avx2`) and
 /// portably (`$portable`), and picks one at run time. A query's leaf tests are closures
 /// handed to the traversal, and a closure is compiled with its enclosing function's target
@@ -47,6 +33,20 @@ macro_rules! simd_query {
         fn $portable(&$self $(, $arg: $ty)*) -> $ret $body
     };
 }
+
+pub mod bvh;
+mod layers;
+pub mod lod;
+
+pub use layers::{LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBLE_TRANSMITTANCE};
+
+use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
+use crate::math::{Aabb, Ray, RayCone, RayMask, PACKET};
+use bvh::{BuildItem, Bvh, RayBoxTest};
+use glam::Vec3;
+use lod::{LodCamera, LodLeaf, LodParams, LodRay, StrandLod, Widen};
+use rayon::prelude::*;
+use wide::f32x4;
 
 /// The geometry of one object.
 #[derive(Clone, Debug)]

@@ -143,7 +143,8 @@ fn render_pixel(
         }
         let known = camera_hits(world, &rays);
         // With known hits, the batch's shadow rays are traced together once it is shaded.
-        let (mut colors, mut firsts) = (PixelRays::<Color>::new(), PixelRays::<Option<FirstHit>>::new());
+        // Colours are final once the shadow rays are traced; the AOVs are known now.
+        let (mut colors, mut keys) = (PixelRays::<Color>::new(), PixelRays::<Option<(u32, Option<u32>)>>::new());
         for (i, (ray, mut sampler)) in rays.iter().zip(samplers).enumerate() {
             let hint = match &known {
                 Some(hits) => CameraHint::Hit { hit: hits[i], shadows: shadows.for_sample(i) },
@@ -155,12 +156,7 @@ fn render_pixel(
                 f.lod_level.is_some_and(|l| world.accel.objects[f.object as usize].lod_opacity(l) < 1.0)
             });
             colors.push(color);
-            firsts.push(first);
-        }
-        shadows.trace(world, &mut colors, counters);
-        for (&color, first) in colors.iter().zip(firsts) {
-            sum += color;
-            spread.add(color, first.map(|f| (f.object, f.strand)));
+            keys.push(first.map(|f| (f.object, f.strand)));
             if let Some(f) = first {
                 if hits == 0 {
                     pixel.depth = f.t;
@@ -177,6 +173,11 @@ fn render_pixel(
                 }
                 hits += 1;
             }
+        }
+        shadows.trace(world, &mut colors, counters);
+        for (&color, &key) in colors.iter().zip(&keys) {
+            sum += color;
+            spread.add(color, key);
         }
         taken += batch;
         if !threshold.is_some_and(|t| spread.needs_more(t)) {
