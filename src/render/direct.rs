@@ -251,7 +251,12 @@ fn trace_from(
     let layers_first = matches!(hint, CameraHint::LayersFirst);
     let opaque_first = tail.is_none() || !layers_first && !world.accel.has_strand_opacity();
     let (hit, shadows) = match hint {
-        CameraHint::Hit { hit, shadows } if opaque_first => (hit, Shadows::Deferred(shadows)),
+        // A packet traces any-hit queries: shadow rays wait for one only where no strand
+        // is semi-transparent.
+        CameraHint::Hit { hit, shadows } if opaque_first => match tail {
+            None => (hit, Shadows::Deferred(shadows)),
+            Some(_) => (hit, Shadows::Now),
+        },
         _ if opaque_first => (world.accel.intersect(ray), Shadows::Now),
         _ => (None, Shadows::Now),
     };
