@@ -142,8 +142,8 @@ fn render_pixel(
             samplers.push(sampler);
         }
         let known = camera_hits(world, &rays);
-        // With known hits, the batch's shadow rays are traced together once it is shaded.
-        // Colours are final once the shadow rays are traced; the AOVs are known now.
+        // With known hits, the batch's shadow rays are traced together once it is shaded:
+        // colours are final only then, the AOVs are known at once.
         let (mut colors, mut keys) = (PixelRays::<Color>::new(), PixelRays::<Option<(u32, Option<u32>)>>::new());
         for (i, (ray, mut sampler)) in rays.iter().zip(samplers).enumerate() {
             let hint = match &known {
