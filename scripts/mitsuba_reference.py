@@ -2,8 +2,12 @@
 """Renders a reference scene directory of shared/scenes/gen_scenes.py with Mitsuba 3 (the
 LLVM variant, direct lighting), for an end-to-end time beside `tress render DIR`.
 
-Usage: python3 scripts/mitsuba_reference.py DIR OUT.exr [--spp N]
+Usage: python3 scripts/mitsuba_reference.py DIR OUT.exr [--spp N] [--seed N] [--sampler NAME]
+                                              [--emitter-samples N] [--bsdf-samples N]
 Needs `pip install mitsuba`. Prints the render time in seconds (scene loading excluded).
+The defaults are the end-to-end comparison's (Mitsuba's `independent` sampler, its `direct`
+integrator's one emitter and one BSDF sample per hit); the options serve the equal-noise
+comparison of docs/performance.md (e.g. `--sampler multijitter --emitter-samples 2`).
 """
 import argparse, json, os, time
 
@@ -15,6 +19,10 @@ def main():
     ap.add_argument("dir")
     ap.add_argument("out")
     ap.add_argument("--spp", type=int, default=None)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--sampler", default="independent")
+    ap.add_argument("--emitter-samples", type=int, default=1)
+    ap.add_argument("--bsdf-samples", type=int, default=1)
     a = ap.parse_args()
     mi.set_variant("llvm_ad_rgb")
     s = json.load(open(os.path.join(a.dir, "scene.json")))
@@ -22,13 +30,13 @@ def main():
     spp = a.spp or film["spp"]
     scene = {
         "type": "scene",
-        "integrator": {"type": "direct"},
+        "integrator": {"type": "direct", "emitter_samples": a.emitter_samples, "bsdf_samples": a.bsdf_samples},
         "sensor": {
             "type": "perspective",
             "fov": cam["vfov_deg"],
             "fov_axis": "y",
             "to_world": mi.ScalarTransform4f().look_at(origin=cam["eye"], target=cam["target"], up=cam["up"]),
-            "sampler": {"type": "independent", "sample_count": spp},
+            "sampler": {"type": a.sampler, "sample_count": spp, "seed": a.seed},
             "film": {"type": "hdrfilm", "width": film["width"], "height": film["height"],
                      "rfilter": {"type": "box"}},
         },
