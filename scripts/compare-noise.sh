@@ -52,10 +52,13 @@ for sampler in independent multijitter; do
   done
 done
 
+# One RMSE per line, in the order of the images given: the Mitsuba reference, then `names`.
+images=("$out/mitsuba-reference.exr")
+for name in "${names[@]}"; do images+=("$out/$name.exr"); done
+mapfile -t rmse < <("$py" "$root/scripts/rmse.py" "$out/reference.exr" "${images[@]}" | sed -E 's/.* rmse=//')
 echo
-"$py" "$root/scripts/rmse.py" "$out/reference.exr" "$out/mitsuba-reference.exr" |
-  sed -E "s#^.* rmse=#reference_gap spp=$ref_spp rmse=#"
-for name in "${names[@]}"; do
-  rmse=$("$py" "$root/scripts/rmse.py" "$out/reference.exr" "$out/$name.exr" | sed -E 's/.* rmse=//')
-  echo "${name%-*} spp=${name##*-} render_s=$(seconds "$out/$name.log") rmse=$rmse"
+echo "reference_gap spp=$ref_spp rmse=${rmse[0]}"
+for i in "${!names[@]}"; do
+  name=${names[$i]}
+  echo "${name%-*} spp=${name##*-} render_s=$(seconds "$out/$name.log") rmse=${rmse[$((i + 1))]}"
 done

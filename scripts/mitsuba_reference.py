@@ -7,7 +7,7 @@ Usage: python3 scripts/mitsuba_reference.py DIR OUT.exr [--spp N] [--seed N] [--
 Needs `pip install mitsuba`. Prints the render time in seconds (scene loading excluded).
 The defaults are the end-to-end comparison's (Mitsuba's `independent` sampler, its `direct`
 integrator's one emitter and one BSDF sample per hit); the options serve the equal-noise
-comparison of docs/performance.md (e.g. `--sampler multijitter --emitter-samples 2`).
+comparison of scripts/compare-noise.sh (e.g. `--sampler multijitter --seed 7`).
 """
 import argparse, json, os, time
 
