@@ -36,18 +36,24 @@ trap 'rm -rf "$out"' EXIT
 tress() { "$root/target/release/tress" render "$dir" --quiet "$@"; }
 mitsuba() { "$py" "$root/scripts/mitsuba_reference.py" "$dir" "$@"; }
 seconds() { sed -nE 's/^(mitsuba )?render +([0-9.]+) s.*/\2/p' "$1"; }
+# logged NAME CMD...: runs CMD with its output in $out/NAME.log, shown if it fails.
+logged() {
+  local name=$1
+  shift
+  "$@" >"$out/$name.log" 2>&1 || { echo "$name failed:" >&2; tail -20 "$out/$name.log" >&2; return 1; }
+}
 
-tress --spp "$ref_spp" --seed 7 -o "$out/reference.exr" >/dev/null 2>&1
-mitsuba "$out/mitsuba-reference.exr" --spp "$ref_spp" --seed 7 >/dev/null 2>&1
+logged reference tress --spp "$ref_spp" --seed 7 -o "$out/reference.exr"
+logged mitsuba-reference mitsuba "$out/mitsuba-reference.exr" --spp "$ref_spp" --seed 7
 names=()
 for n in "$spp" $((spp / 2)) $((spp / 4)); do
   [ "$n" -ge 1 ] || continue
-  tress --spp "$n" -o "$out/tress-$n.exr" >"$out/tress-$n.log" 2>&1
+  logged "tress-$n" tress --spp "$n" -o "$out/tress-$n.exr"
   names+=("tress-$n")
 done
 for sampler in independent multijitter; do
   for n in "${mitsuba_spp[@]}"; do
-    mitsuba "$out/mitsuba-$sampler-$n.exr" --spp "$n" --sampler "$sampler" >"$out/mitsuba-$sampler-$n.log" 2>&1
+    logged "mitsuba-$sampler-$n" mitsuba "$out/mitsuba-$sampler-$n.exr" --spp "$n" --sampler "$sampler"
     names+=("mitsuba-$sampler-$n")
   done
 done
