@@ -2,13 +2,13 @@
 //! issue 5 asks:
 //! - error: RMSE of linear RGB against a high-sample reference rendered without LOD, over
 //!   the whole image and over the far region (pixels whose reference depth exceeds `FAR`),
-//!   at 1, 4 and 16 spp, LOD on and off;
+//!   at 1, 4 and 16 spp, LOD off, on (as the scene sets it) and smooth;
 //! - look: coverage and mean colour of the far region relative to the reference;
-//! - cost: process CPU time (user + system) of the render alone, LOD on and off;
+//! - cost: process CPU time (user + system) of the render alone, for each;
 //! - flicker: a camera pull-back of `FRAMES` frames at a smaller resolution; the flicker is
 //!   the RMS difference between consecutive frames over the far region, averaged over the
-//!   sequence, at 4 spp with and without LOD, at 16 spp without, and at the reference spp
-//!   without LOD.
+//!   sequence, at 4 spp without LOD, with it and with it smooth (`smooth = true` on every
+//!   strand set), at 16 spp without, and at the reference spp without LOD.
 //!
 //! `cargo run --release --example lod_quality -- [SCENE.toml] [REFERENCE_SPP] [WIDTH HEIGHT] [FRAMES]`
 //! (defaults: the scene's size, 256 spp, 24 frames; 0 frames skips the pull-back).
@@ -22,11 +22,38 @@ const FAR: f32 = 15.0;
 /// How far the camera moves back per frame, along its viewing direction.
 const STEP: f32 = 0.05;
 
-/// Renders `desc` with `spp`, `seed` and LOD on or off; the film and the CPU seconds the
-/// render took (scene preparation excluded).
-fn render(desc: &Description, spp: u32, seed: u32, lod: bool) -> (Film, f64) {
+/// How a render sees the scene's level of detail.
+#[derive(Clone, Copy, PartialEq)]
+enum Lod {
+    /// Off: full detail.
+    Off,
+    /// As the scene file sets it.
+    On,
+    /// As the scene file sets it, with `smooth = true` on every strand set.
+    Smooth,
+}
+
+impl Lod {
+    fn name(self) -> &'static str {
+        match self {
+            Lod::Off => "off",
+            Lod::On => "on",
+            Lod::Smooth => "smooth",
+        }
+    }
+}
+
+/// Renders `desc` with `spp`, `seed` and level of detail `lod`; the film and the CPU
+/// seconds the render took (scene preparation excluded).
+fn render(desc: &Description, spp: u32, seed: u32, lod: Lod) -> (Film, f64) {
     let mut d = desc.clone();
-    (d.settings.spp, d.settings.seed, d.settings.lod) = (spp, seed, lod);
+    (d.settings.spp, d.settings.seed, d.settings.lod) = (spp, seed, lod != Lod::Off);
+    if lod == Lod::Smooth {
+        let sets = d.hair.iter_mut().map(|h| &mut h.lod);
+        let sets =
+            sets.chain(d.hair_systems.iter_mut().map(|h| &mut h.lod)).chain(d.fur.iter_mut().map(|f| &mut f.lod));
+        sets.flatten().for_each(|p| p.smooth = true);
+    }
     let (world, _) = prepare(&d).expect("scene");
     let start = process_cpu_time();
     let film = tress::render::render(&world, None).0;
@@ -64,8 +91,8 @@ fn far_mask(reference: &Film) -> Vec<bool> {
 }
 
 /// Mean frame-to-frame RMS difference over the far region of a pull-back rendered with
-/// `spp` and LOD on or off; `masks` are the far regions of the reference frames.
-fn flicker(desc: &Description, frames: u32, spp: u32, lod: bool, masks: &mut Vec<Vec<bool>>) -> f64 {
+/// `spp` and level of detail `lod`; `masks` are the far regions of the reference frames.
+fn flicker(desc: &Description, frames: u32, spp: u32, lod: Lod, masks: &mut Vec<Vec<bool>>) -> f64 {
     let back = (desc.camera.eye - desc.camera.target).normalize();
     let mut previous: Option<Film> = None;
     let mut sum = 0.0;
@@ -95,7 +122,7 @@ fn main() {
     if let (Some(w), Some(h)) = (args.get(3), args.get(4)) {
         (desc.settings.width, desc.settings.height) = (w.parse().expect("width"), h.parse().expect("height"));
     }
-    let (reference, t_ref) = render(&desc, ref_spp, 0, false);
+    let (reference, t_ref) = render(&desc, ref_spp, 0, Lod::Off);
     let all = vec![true; reference.pixels.len()];
     let far = far_mask(&reference);
     let (ref_cov, ref_col) = look(&reference, &far);
@@ -106,16 +133,16 @@ fn main() {
         far.iter().filter(|&&m| m).count()
     );
     println!("far region reference: coverage {ref_cov:.4}, mean colour {ref_col:.4}");
-    println!("spp lod  cpu_s  rmse_all  rmse_far  far_coverage(rel)    far_colour(rel)");
+    println!("spp lod     cpu_s  rmse_all  rmse_far  far_coverage(rel)    far_colour(rel)");
     // 16 spp also gives the cost where rendering dominates, and the error LOD at 4 spp
     // should be set against.
     for spp in [1, 4, 16] {
-        for lod in [false, true] {
+        for lod in [Lod::Off, Lod::On, Lod::Smooth] {
             let (a, t) = render(&desc, spp, 1, lod);
             let (cov, col) = look(&a, &far);
             println!(
-                "{spp:>3} {:>4} {t:6.2} {:9.5} {:9.5} {:9.4} ({:+5.1} %) {:9.4} ({:+5.1} %)",
-                if lod { "on" } else { "off" },
+                "{spp:>3} {:>6} {t:6.2} {:9.5} {:9.5} {:9.4} ({:+5.1} %) {:9.4} ({:+5.1} %)",
+                lod.name(),
                 rms(&a, &reference, &all),
                 rms(&a, &reference, &far),
                 cov,
@@ -133,15 +160,13 @@ fn main() {
     let mut small = desc.clone();
     (small.settings.width, small.settings.height) = (desc.settings.width / 2, desc.settings.height / 2);
     let mut masks = Vec::new();
-    let reference = flicker(&small, frames, ref_spp, false, &mut masks);
-    let off = flicker(&small, frames, 4, false, &mut masks);
-    let on = flicker(&small, frames, 4, true, &mut masks);
-    let off16 = flicker(&small, frames, 16, false, &mut masks);
+    let reference = flicker(&small, frames, ref_spp, Lod::Off, &mut masks);
     println!(
-        "flicker over {frames} frames ({}x{}, far region): {ref_spp} spp {reference:.5}, 4 spp off {off:.5}, on {on:.5} ({:.2}x the reference), 16 spp off {off16:.5} ({:.2}x)",
-        small.settings.width,
-        small.settings.height,
-        on / reference,
-        off16 / reference
+        "flicker over {frames} frames ({}x{}, far region), and its ratio to {ref_spp} spp without LOD ({reference:.5}):",
+        small.settings.width, small.settings.height
     );
+    for (spp, lod) in [(4, Lod::Off), (4, Lod::On), (4, Lod::Smooth), (16, Lod::Off)] {
+        let f = flicker(&small, frames, spp, lod, &mut masks);
+        println!("{spp:>3} spp {:>6}: {f:.5} ({:.2}x)", lod.name(), f / reference);
+    }
 }

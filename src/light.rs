@@ -86,6 +86,12 @@ pub struct LightSample {
 }
 
 impl Light {
+    /// True for lights that reach a point from one direction only (distant, point, spot):
+    /// their light needs no sampling, so a sample of it varies only with its shadow ray.
+    pub fn is_singular(&self) -> bool {
+        matches!(self, Light::Distant { .. } | Light::Point { .. } | Light::Spot { .. })
+    }
+
     /// Samples the light as seen from `p`. `normal` is the shading normal of a surface
     /// (the environment then samples the cosine-weighted hemisphere around it) or `None`
     /// for hair (the whole sphere). Returns `None` when no light arrives.

@@ -1,6 +1,7 @@
 //! Level of detail end to end, on a small version of `scenes/lod_field.toml`: images
 //! independent of the thread count, unchanged with LOD switched off, and levels that grow
-//! with distance and with thinner hair.
+//! with distance and with thinner hair; smooth LOD: independent of the thread count too,
+//! the same look, and less change between two nearby frames of a camera move.
 
 use std::path::Path;
 use tress::film::Film;
@@ -79,4 +80,52 @@ fn levels_grow_with_distance_and_thinner_hair() {
     for (near, far) in [(0.0, 4.0), (4.0, 8.0)] {
         assert!(mean_level(true, near, far) > mean_level(false, near, far) + 1.0, "{near}..{far}");
     }
+}
+
+/// [`small_field`] pruned from the benchmark's footprint of 4 widths, where its coarse
+/// strands are drawn semi-transparent (`spread = 4`), and with `smooth` as given.
+fn spread_field(smooth: bool) -> Description {
+    let mut desc = small_field();
+    let with = |p: tress::accel::lod::LodParams| tress::accel::lod::LodParams { start: 4.0, smooth, ..p };
+    desc.hair_systems.iter_mut().for_each(|h| h.lod = h.lod.map(with));
+    desc
+}
+
+/// RMS difference of linear RGB between `a` and `b` over the pixels farther than 15 units
+/// in both.
+fn far_difference(a: &Film, b: &Film) -> f64 {
+    let (mut sum, mut n) = (0.0, 0);
+    for (p, q) in a.pixels.iter().zip(&b.pixels) {
+        if p.depth > 15.0 && q.depth > 15.0 && p.depth.is_finite() && q.depth.is_finite() {
+            sum += (p.color - q.color).length_squared() as f64 / 3.0;
+            n += 1;
+        }
+    }
+    assert!(n > 1000, "too few far pixels: {n}");
+    (sum / n as f64).sqrt()
+}
+
+#[test]
+fn smooth_lod_is_the_same_with_one_and_two_threads() {
+    let desc = spread_field(true);
+    assert_eq!(bits(&render(&desc, 1)), bits(&render(&desc, 2)));
+}
+
+#[test]
+fn smooth_lod_keeps_the_look_and_changes_less_from_frame_to_frame() {
+    // Two frames of a pull-back, the camera one twentieth of a unit apart.
+    let frames = |desc: &Description| {
+        let mut next = desc.clone();
+        next.camera.eye += (desc.camera.eye - desc.camera.target).normalize() * 0.05;
+        (render(desc, 2), render(&next, 2))
+    };
+    let (a, b) = frames(&spread_field(false));
+    let (sa, sb) = frames(&spread_field(true));
+    let (hard, soft) = (far_difference(&a, &b), far_difference(&sa, &sb));
+    eprintln!("far difference between frames: LOD {hard:.5}, smooth LOD {soft:.5}");
+    assert!(soft < 0.75 * hard, "smooth {soft} vs {hard}");
+    // The same image on average: mean far colour within 2 %.
+    let mean = |f: &Film| f.pixels.iter().filter(|p| p.depth > 15.0).map(|p| p.color.element_sum() as f64).sum::<f64>();
+    let (m, sm) = (mean(&a), mean(&sa));
+    assert!((sm / m - 1.0).abs() < 0.02, "mean far colour {sm} vs {m}");
 }

@@ -33,6 +33,25 @@ pub struct LayerHit {
     pub opacity: f32,
 }
 
+/// [`EXACT_SHADOW_TRANSMITTANCE`] where strands have smooth level of detail
+/// ([`Accel::smooth_layers`]): a shadow ray's estimate then jumps by at most a fifth of the
+/// light where a hit behind turns from letting light through to blocking it as strands
+/// slide. With the camera's blend alike (`SMOOTH_BLEND_TRANSMITTANCE` of the renderer),
+/// the far fur of `scenes/lod_field.toml` flickers 1.08 times as much as 256 spp without
+/// LOD at 0.2, 1.24 times at 0.35 (docs/performance.md, session 8).
+pub const SMOOTH_EXACT_SHADOW_TRANSMITTANCE: f32 = 0.2;
+
+/// Opacity of `object`'s primitive `prim` at a hit seen at `level` by the ray from
+/// `origin` along `dir`: the strand's own opacity times its level of detail's.
+#[inline]
+fn hit_opacity(o: &Object, prim: u32, kind: HitKind, level: u32, ray: (Vec3, Vec3)) -> f32 {
+    let own = opacity(&o.shape, prim, kind);
+    match kind {
+        HitKind::Segment { s: along, .. } => own * o.lod_opacity_at(prim, along, level, ray),
+        _ => own,
+    }
+}
+
 /// Opacity of `shape` at a hit on primitive `prim`.
 #[inline]
 fn opacity(shape: &Shape, prim: u32, kind: HitKind) -> f32 {
@@ -192,6 +211,19 @@ impl Accel {
         self.objects.iter().any(is_partial)
     }
 
+    /// True when some strand set asks for smooth level of detail ([`LodParams::smooth`]):
+    /// then camera rays blend semi-transparent layers exactly down to a lower
+    /// transmittance, each blended layer traces its own shadow rays towards lights that
+    /// need no sampling, and shadow rays multiply opacities exactly down to
+    /// [`SMOOTH_EXACT_SHADOW_TRANSMITTANCE`]. Every stochastic decision a sample makes
+    /// (where a walk stops, which layer's shadow ray stands for the others) toggles as
+    /// strands slide under a fixed sample; these make its value change continuously.
+    ///
+    /// [`LodParams::smooth`]: super::lod::LodParams::smooth
+    pub fn smooth_layers(&self) -> bool {
+        self.smooth
+    }
+
     /// True when some strand set has per-point opacity of its own (transparency that does
     /// not come from level of detail alone).
     pub fn has_strand_opacity(&self) -> bool {
@@ -199,7 +231,8 @@ impl Accel {
     }
 
     /// Opacity at a hit of [`Accel::intersect`]: 1 on meshes and opaque strands, else the
-    /// strand's opacity there times that of its level of detail.
+    /// strand's opacity there times that of its level of detail (the peak of a tent
+    /// profile: below 1 exactly where the hit is semi-transparent).
     pub fn hit_opacity(&self, hit: &Hit) -> f32 {
         let o = &self.objects[hit.object as usize];
         opacity(&o.shape, hit.prim, hit.kind) * o.lod_opacity(hit.level)
@@ -247,7 +280,7 @@ impl Accel {
                         return false;
                     }
                     let hit = Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) };
-                    let layer = LayerHit { hit, opacity: opacity(&o.shape, prim, kind) * o.lod_opacity(level) };
+                    let layer = LayerHit { hit, opacity: hit_opacity(o, prim, kind, level, (ray.origin, ray.dir)) };
                     if let Some(t) = insert_layer(out, layer, k, tail) {
                         *cutoff = t;
                     }
@@ -302,12 +335,13 @@ impl Accel {
     ) -> f32 {
         let mut t = tmax;
         let mut transmitted = 1.0f32;
+        let exact = if self.smooth { SMOOTH_EXACT_SHADOW_TRANSMITTANCE } else { EXACT_SHADOW_TRANSMITTANCE };
         let blocked = self.walk(origin, dir, cone, 0.0, &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
             leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), (skip, false), widen, |prim, _, kind, level| {
-                let a = opacity(&o.shape, prim, kind) * o.lod_opacity(level);
+                let a = hit_opacity(o, prim, kind, level, (origin, dir));
                 match seed {
-                    Some(seed) if transmitted < EXACT_SHADOW_TRANSMITTANCE => stop_draw(seed, object, prim) < a,
+                    Some(seed) if transmitted < exact => stop_draw(seed, object, prim) < a,
                     _ => {
                         transmitted *= 1.0 - a;
                         transmitted < NEGLIGIBLE_TRANSMITTANCE

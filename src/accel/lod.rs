@@ -42,6 +42,10 @@ use rand::SeedableRng;
 /// Most pruning levels a strand set may have.
 pub const MAX_LEVELS: usize = 16;
 
+/// How many times wider than its box a smooth strand's tent profile is
+/// ([`LodParams::smooth`]): the box convolved with itself spans twice its width.
+const TENT_WIDTH: f32 = 2.0;
+
 /// Distinct jitter values segments draw theirs from: fine enough that level transitions
 /// dither smoothly, and a table of `d^jitter` spares an `exp` per segment test.
 const JITTER_STEPS: usize = 32;
@@ -78,6 +82,12 @@ pub struct LodParams {
     /// and departs from its curve by at most the skipped points' distance to those chords.
     /// 0 never simplifies.
     pub simplify: u32,
+    /// For animation: draw the semi-transparent strands of [`LodParams::spread`] with a
+    /// tent opacity profile twice as wide (the box convolved with itself: the same peak
+    /// opacity and expected coverage), and have the renderer blend and shadow their
+    /// layers deterministically ([`crate::accel::Accel::smooth_layers`]), so a sample's
+    /// value changes continuously as strands slide under it instead of toggling.
+    pub smooth: bool,
 }
 
 impl Default for LodParams {
@@ -90,6 +100,7 @@ impl Default for LodParams {
             start: 1.0,
             spread: 1.0,
             simplify: 0,
+            smooth: false,
         }
     }
 }
@@ -388,7 +399,8 @@ impl StrandLod {
                 thresholds[l] = params.start * width * params.decimation.powi(l as i32 + 1);
             }
             let spread = params.spread_at(l as u32);
-            scales[l] = params.radius_scale(l as u32) * spread;
+            let tent = if params.smooth && spread > 1.0 { TENT_WIDTH } else { 1.0 };
+            scales[l] = params.radius_scale(l as u32) * spread * tent;
             opacities[l] = 1.0 / spread;
         }
         let mut widest = scales;
@@ -568,6 +580,19 @@ impl StrandLod {
     /// width times opacity stays the compensated width (1 at level 0).
     pub fn opacity(&self, level: u32) -> f32 {
         self.opacities[(level as usize).min(MAX_LEVELS - 1)]
+    }
+
+    /// Opacity factor of a strand hit at `level` by a ray passing at `offset` from its
+    /// axis, in drawn radii (0 on the axis, 1 at the edge): [`StrandLod::opacity`], times
+    /// the tent profile `1 - offset` for the semi-transparent levels of a smooth set
+    /// ([`LodParams::smooth`]). The offset is asked for only then.
+    #[inline]
+    pub fn opacity_at(&self, level: u32, offset: impl FnOnce() -> f32) -> f32 {
+        let peak = self.opacity(level);
+        if peak >= 1.0 || !self.params.smooth {
+            return peak;
+        }
+        peak * (1.0 - offset()).clamp(0.0, 1.0)
     }
 
     /// True when some level draws strands semi-transparent.
@@ -779,10 +804,13 @@ mod tests {
         let s = curtain(8000, 0.000025, 4);
         let p = LodParams { compensation: 1.0, start: 16.0, ..Default::default() };
         let spread = LodParams { spread: 4.0, ..p };
+        let smooth = LodParams { smooth: true, ..spread };
         let opaque = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
-        let soft = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(spread))]);
+        let soft = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(spread))]);
+        let tent = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(smooth))]);
         let lod = soft.objects[0].lod().unwrap();
         assert!(soft.has_transparency() && !opaque.has_transparency());
+        assert!(tent.smooth_layers() && !soft.smooth_layers());
         let (full, _) = opacity_stats(&opaque, 0.0);
         for l in 1..5u32 {
             // Width times opacity is the compensated width.
@@ -798,6 +826,55 @@ mod tests {
             assert!((soft_mean - full).abs() < 0.03, "level {l}: {soft_mean} vs full {full}");
             // Fractional coverage varies less from ray to ray than hit-or-miss.
             assert!(soft_var < 0.6 * hard_var, "level {l}: variance {soft_var} vs {hard_var}");
+            // The tent is twice as wide at the same peak: half its width times its peak is
+            // the compensated width, so it covers as much, and more smoothly still.
+            let tent_lod = tent.objects[0].lod().unwrap();
+            let ratio = tent_lod.radius_scale(l) * tent_lod.opacity(l) / p.radius_scale(l);
+            assert!((ratio - 2.0).abs() < 1e-5, "level {l}: {ratio}");
+            let (tent_mean, tent_var) = opacity_stats(&tent, footprint);
+            assert!((tent_mean - hard_mean).abs() < 0.02, "level {l}: {tent_mean} vs {hard_mean}");
+            assert!(tent_var < soft_var, "level {l}: variance {tent_var} vs {soft_var}");
+        }
+    }
+
+    #[test]
+    fn a_smooth_strand_fades_from_its_axis_to_its_edge() {
+        // One vertical strand: every level keeps it.
+        let mut s = StrandSet::new();
+        let r = 0.001;
+        s.push_strand([(Vec3::new(0.0, 0.0, 0.0), r), (Vec3::new(0.0, 1.0, 0.0), r)]);
+        let p = LodParams { compensation: 1.0, start: 4.0, spread: 4.0, smooth: true, ..Default::default() };
+        let accel = Accel::build_with_lod(vec![(Shape::Strands(s), 0, Some(p))]);
+        let lod = accel.objects[0].lod().unwrap();
+        let mut layers = Vec::new();
+        for l in 1..4u32 {
+            // A footprint at the start of level l: whatever the jitter, level l.
+            let cone = RayCone { width: 4.0 * lod.width() * p.decimation.powi(l as i32) * 1.001, spread: 0.0 };
+            let (peak, radius) = (lod.opacity(l), r * lod.radius_scale(l));
+            assert!(peak < 1.0);
+            for f in [0.0f32, 0.2, 0.5, 0.8, 0.97, 1.05] {
+                // Along -z, and slanted: the offset is the distance between the lines.
+                for dir in [-Vec3::Z, Vec3::new(0.3, 0.4, -1.0).normalize()] {
+                    let across = Vec3::Y.cross(dir).normalize();
+                    let origin = Vec3::new(0.0, 0.5, 0.0) + across * (f * radius) - dir;
+                    let mut ray = Ray::new(origin, dir);
+                    ray.cone = cone;
+                    accel.intersect_k(&ray, 0.0, 4, &[], None, &mut layers);
+                    if f > 1.0 {
+                        assert!(layers.is_empty(), "level {l}, offset {f}: {layers:?}");
+                        continue;
+                    }
+                    assert_eq!(layers.len(), 1, "level {l}, offset {f}");
+                    assert_eq!(layers[0].hit.level, l);
+                    let want = peak * (1.0 - f);
+                    assert!(
+                        (layers[0].opacity - want).abs() < 1e-3 * peak,
+                        "level {l}, offset {f}: {layers:?} vs {want}"
+                    );
+                    let t = accel.transmittance_cone(origin, dir, 2.0, None, cone, None);
+                    assert!((t - (1.0 - want)).abs() < 1e-3 * peak, "level {l}, offset {f}: {t}");
+                }
+            }
         }
     }
 

@@ -150,9 +150,26 @@ impl Object {
     }
 
     /// Factor on the opacity of a strand hit at `level` (1 without level of detail):
-    /// coarse strands drawn wider are as much more transparent ([`StrandLod::opacity`]).
+    /// coarse strands drawn wider are as much more transparent ([`StrandLod::opacity`]);
+    /// with a tent profile ([`LodParams::smooth`]), this is its peak.
     pub fn lod_opacity(&self, level: u32) -> f32 {
         self.lod.as_ref().map_or(1.0, |l| l.opacity(level))
+    }
+
+    /// [`Object::lod_opacity`] where the line from `origin` along `dir` meets the segment
+    /// from point `prim` at parameter `along`: with a tent profile, it falls from the peak
+    /// on the axis to 0 at the drawn radius, with the distance between the ray's line and
+    /// the axis' (the ray then crosses the strand at that offset; a ray along the axis
+    /// sees the peak).
+    pub fn lod_opacity_at(&self, prim: u32, along: f32, level: u32, (origin, dir): (Vec3, Vec3)) -> f32 {
+        let (Some(lod), Shape::Strands(s)) = (&self.lod, &self.shape) else { return 1.0 };
+        lod.opacity_at(level, || {
+            let (a, b) = (s.points[prim as usize], s.points[prim as usize + 1]);
+            let (pa, pb) = (Vec3::new(a[0], a[1], a[2]), Vec3::new(b[0], b[1], b[2]));
+            let normal = (pb - pa).cross(dir).normalize_or_zero();
+            let radius = (a[3] + (b[3] - a[3]) * along) * lod.radius_scale(level);
+            (pa - origin).dot(normal).abs() / radius
+        })
     }
 
     /// The colour of a strand hit at `level`, its contrast reduced when the object's level
@@ -216,6 +233,8 @@ pub struct Accel {
     /// The objects, in scene order.
     pub objects: Vec<Object>,
     top: Bvh,
+    /// Some strand set asks for smooth level of detail ([`Accel::smooth_layers`]).
+    smooth: bool,
 }
 
 impl Accel {
@@ -257,7 +276,8 @@ impl Accel {
             .collect();
         let top =
             Bvh::build(objects.iter().enumerate().map(|(i, o)| BuildItem::new(o.bvh.bounds(), i as u32)).collect());
-        Accel { objects, top }
+        let smooth = objects.iter().any(|o| o.lod().is_some_and(|l| l.params().smooth && l.has_transparency()));
+        Accel { objects, top, smooth }
     }
 
     /// Bounds of the whole scene.

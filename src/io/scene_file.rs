@@ -458,6 +458,7 @@ struct LodToml {
     start: Option<f32>,
     spread: Option<f32>,
     simplify: Option<u32>,
+    smooth: Option<bool>,
 }
 
 impl LodToml {
@@ -471,6 +472,7 @@ impl LodToml {
             start: self.start.unwrap_or(d.start),
             spread: self.spread.unwrap_or(d.spread),
             simplify: self.simplify.unwrap_or(d.simplify),
+            smooth: self.smooth.unwrap_or(d.smooth),
         };
         p.validate()?;
         Ok(p)
@@ -1385,6 +1387,8 @@ seed = 7
         let d = parse(&format!("{minimal}lod = {{ levels = 4, start = 8 }}\n[render]\nlod = false\n")).unwrap();
         assert_eq!(d.hair_systems[0].lod, Some(LodParams { levels: 4, start: 8.0, ..Default::default() }));
         assert!(!d.settings.lod);
+        let d = parse(&format!("{minimal}lod = {{ spread = 4, smooth = true }}\n")).unwrap();
+        assert_eq!(d.hair_systems[0].lod, Some(LodParams { spread: 4.0, smooth: true, ..Default::default() }));
         assert!(parse(minimal).unwrap().settings.lod && parse(minimal).unwrap().hair_systems[0].lod.is_none());
         for (bad, key) in [
             ("decimation = 1.0", "decimation"),

@@ -22,6 +22,12 @@ use smallvec::SmallVec;
 /// --bench transparency`; docs/performance.md, "Transparency").
 pub const BLEND_TRANSMITTANCE: f32 = 0.5;
 
+/// [`BLEND_TRANSMITTANCE`] where strands have smooth level of detail
+/// ([`crate::accel::Accel::smooth_layers`]): a stochastic stop behind the blended layers
+/// then changes a sample by at most a fifth of its light. (With
+/// [`crate::accel::SMOOTH_EXACT_SHADOW_TRANSMITTANCE`]; measured there.)
+pub const SMOOTH_BLEND_TRANSMITTANCE: f32 = 0.2;
+
 /// Per-task tallies, summed when the render ends.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Counters {
@@ -182,7 +188,8 @@ impl Indirect for Whitted {
 /// opaque hit or a negligible `T`; only when every collected hit let enough light through
 /// does the ray continue past them with another traversal.
 ///
-/// Once less than [`BLEND_TRANSMITTANCE`] of the light is left, the layers behind (each
+/// Once less than [`BLEND_TRANSMITTANCE`] ([`SMOOTH_BLEND_TRANSMITTANCE`] for smooth level
+/// of detail) of the light is left, the layers behind (each
 /// to be found and shaded, deeper in the hair) are no longer all shaded: the tail
 /// is walked as in stochastic transparency (Enderton et al. 2010), stopping at layer `i`
 /// with probability `a_i` and shading it with the whole remaining `T` ([`StochasticTail`]:
@@ -236,7 +243,7 @@ fn trace_from(
     let tail = world
         .accel
         .has_transparency()
-        .then(|| StochasticTail { blend: BLEND_TRANSMITTANCE, seed: (sampler.next_1d() * 16_777_216.0) as u32 });
+        .then(|| StochasticTail { blend: blend_transmittance(world), seed: (sampler.next_1d() * 16_777_216.0) as u32 });
     // When only level of detail makes strands semi-transparent, one closest-hit traversal
     // comes first: most fur is drawn opaque, and an opaque nearest hit is all the blend
     // below would shade, so most rays pay no multi-hit query (16 spp on
@@ -281,7 +288,7 @@ fn trace_from(
     // BVH boxes the ray leaves before that are not entered (lod_field.toml: -1.6 % instructions).
     let tmin = hit.map_or(0.0, |h| h.t * (1.0 - 4.0 * f32::EPSILON));
     let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, tmin);
-    let mut shadows = SharedShadows::new(world.lights.len(), sampler);
+    let mut shadows = SharedShadows::new(world, sampler);
     let color = 'layers: loop {
         world.accel.intersect_k(ray, tmin, k, &seen, Some(tail), &mut layers);
         // Lights count up to where the collected hits may hide what lies behind them.
@@ -291,7 +298,7 @@ fn trace_from(
         };
         for layer in layers.iter().take_while(|l| light.is_none_or(|(t, _)| l.hit.t < t)) {
             let a = layer.opacity;
-            let blend = carried >= BLEND_TRANSMITTANCE;
+            let blend = carried >= tail.blend;
             let last = transmitted * (1.0 - a) < NEGLIGIBLE_TRANSMITTANCE;
             if blend || last || tail.draw(&layer.hit) < a {
                 // Blended by its opacity, or where the tail stops with all the light left.
@@ -322,6 +329,15 @@ fn trace_from(
         counters.rays += 1;
     };
     (color + shadows.trace(world, counters), first)
+}
+
+/// The transmittance below which a camera ray's layers are walked stochastically.
+fn blend_transmittance(world: &World) -> f32 {
+    if world.accel.smooth_layers() {
+        SMOOTH_BLEND_TRANSMITTANCE
+    } else {
+        BLEND_TRANSMITTANCE
+    }
 }
 
 /// A shadow ray towards a light.
@@ -440,9 +456,19 @@ impl PixelShadows {
 /// 9.2.4). One sample dimension decides the choice, rescaled from offer to offer, so it
 /// is stratified across a pixel's samples and does not depend on how many hits one
 /// traversal collects.
+///
+/// With smooth level of detail ([`crate::accel::Accel::smooth_layers`]), singular lights
+/// ([`crate::light::Light::is_singular`]) are not shared: every layer traces its own shadow
+/// ray to them. A pick toggles to another layer, whose shadow may differ entirely, as
+/// strands slide under a fixed sample; that made most of the far fur's flicker in a camera
+/// move (docs/performance.md, session 8).
 pub(super) struct SharedShadows {
     /// Per light; inline for the usual few lights, so a camera ray allocates nothing.
     picks: SmallVec<[Pick; 4]>,
+    /// Per light: whether each layer traces its own shadow ray to it.
+    own: SmallVec<[bool; 4]>,
+    /// The unshadowed light of such layers, and their shadow rays.
+    owned: SmallVec<[(Color, ShadowRay); 8]>,
 }
 
 /// The offers made for one light so far: their total weight, the one kept, and the
@@ -458,19 +484,25 @@ struct Pick {
 impl SharedShadows {
     /// One sample dimension decides every pick: light `l` starts from it shifted by `l`
     /// times the golden ratio (mod 1), which keeps each light's numbers stratified.
-    fn new(lights: usize, sampler: &mut PixelSampler) -> SharedShadows {
+    fn new(world: &World, sampler: &mut PixelSampler) -> SharedShadows {
         let u = sampler.next_1d();
-        let mut picks: SmallVec<[Pick; 4]> = smallvec::smallvec![Pick::default(); lights];
+        let mut picks: SmallVec<[Pick; 4]> = smallvec::smallvec![Pick::default(); world.lights.len()];
         for (l, pick) in picks.iter_mut().enumerate() {
             pick.u = (u + l as f32 * 0.618_034).fract();
         }
-        SharedShadows { picks }
+        let smooth = world.accel.smooth_layers();
+        let own = world.lights.iter().map(|l| smooth && l.is_singular()).collect();
+        SharedShadows { picks, own, owned: SmallVec::new() }
     }
 
     /// Offers the unshadowed light `value` that light number `light` sends along `shadow`.
     fn offer(&mut self, light: usize, value: Color, shadow: ShadowRay) {
         let weight = value.element_sum();
         if weight <= 0.0 || !weight.is_finite() {
+            return;
+        }
+        if self.own[light] {
+            self.owned.push((value, shadow));
             return;
         }
         let pick = &mut self.picks[light];
@@ -491,6 +523,9 @@ impl SharedShadows {
     /// Traces the kept shadow rays: the light reflected by every layer offered, estimated.
     fn trace(&self, world: &World, counters: &mut Counters) -> Color {
         let mut color = Color::ZERO;
+        for (value, shadow) in &self.owned {
+            color += *value * shadow.trace(world, counters);
+        }
         for pick in &self.picks {
             let Some((value, weight, shadow)) = pick.chosen else { continue };
             let transmitted = shadow.trace(world, counters);
