@@ -465,10 +465,8 @@ impl PixelShadows {
 pub(super) struct SharedShadows {
     /// Per light; inline for the usual few lights, so a camera ray allocates nothing.
     picks: SmallVec<[Pick; 4]>,
-    /// Per light: whether each layer traces its own shadow ray to it.
-    own: SmallVec<[bool; 4]>,
-    /// The unshadowed light of such layers, and their shadow rays.
-    owned: SmallVec<[(Color, ShadowRay); 8]>,
+    /// Per light: whether the layers share its shadow ray ([`SharedShadows::shares`]).
+    shared: SmallVec<[bool; 4]>,
 }
 
 /// The offers made for one light so far: their total weight, the one kept, and the
@@ -491,18 +489,20 @@ impl SharedShadows {
             pick.u = (u + l as f32 * 0.618_034).fract();
         }
         let smooth = world.accel.smooth_layers();
-        let own = world.lights.iter().map(|l| smooth && l.is_singular()).collect();
-        SharedShadows { picks, own, owned: SmallVec::new() }
+        let shared = world.lights.iter().map(|l| !(smooth && l.is_singular())).collect();
+        SharedShadows { picks, shared }
+    }
+
+    /// True when the layers share one shadow ray towards light number `light`; otherwise
+    /// each layer traces its own at once.
+    fn shares(&self, light: usize) -> bool {
+        self.shared[light]
     }
 
     /// Offers the unshadowed light `value` that light number `light` sends along `shadow`.
     fn offer(&mut self, light: usize, value: Color, shadow: ShadowRay) {
         let weight = value.element_sum();
         if weight <= 0.0 || !weight.is_finite() {
-            return;
-        }
-        if self.own[light] {
-            self.owned.push((value, shadow));
             return;
         }
         let pick = &mut self.picks[light];
@@ -523,9 +523,6 @@ impl SharedShadows {
     /// Traces the kept shadow rays: the light reflected by every layer offered, estimated.
     fn trace(&self, world: &World, counters: &mut Counters) -> Color {
         let mut color = Color::ZERO;
-        for (value, shadow) in &self.owned {
-            color += *value * shadow.trace(world, counters);
-        }
         for pick in &self.picks {
             let Some((value, weight, shadow)) = pick.chosen else { continue };
             let transmitted = shadow.trace(world, counters);
@@ -593,9 +590,11 @@ fn shade(
         let cone = ray.cone.propagate(hit.t, 0.0);
         let shadow = ShadowRay { origin: d.origin, dir: ls.dir, tmax, skip: d.skip, cone, seed: shadow_seed };
         match &mut shadows {
-            Shadows::Shared(shared, weight) => shared.offer(index, *weight * (f * ls.value), shadow),
+            Shadows::Shared(shared, weight) if shared.shares(index) => {
+                shared.offer(index, *weight * (f * ls.value), shadow)
+            }
             Shadows::Deferred(pixel) => pixel.push(index, f * ls.value, &shadow),
-            Shadows::Now => {
+            Shadows::Now | Shadows::Shared(..) => {
                 let transmitted = shadow.trace(world, counters);
                 if transmitted > 0.0 {
                     color += f * ls.value * transmitted;
