@@ -398,8 +398,8 @@ impl Accel {
     }
 
     /// [`Accel::walk`] for a packet of up to [`PACKET`] rays with their `tmax`: the top
-    /// level and the objects without level of detail are traversed by the packet, an object
-    /// with level of detail ray by ray (each ray sees it at its own level).
+    /// level and every object are traversed by the packet; a leaf of an object with level of
+    /// detail is tested ray by ray, each ray seeing it at its own level.
     /// `leaf(ray, object, o, prims, widen, leaf_ray, tmax)` tests a leaf for ray `ray`, and
     /// returns true when that ray is done; the result holds the rays a leaf stopped.
     #[inline(always)]
@@ -419,14 +419,20 @@ impl Accel {
                 let o = &self.objects[object as usize];
                 let mut done = 0;
                 match (&o.shape, &o.lod) {
-                    (_, Some(_)) => for_each_ray(live, |i| {
-                        let r = &rays[i];
-                        let (ray, lod_ray) = (LeafRay::new(r.origin, r.dir), LodRay::new(r.origin, r.dir, r.cone));
-                        if o.traverse(&tests[i], &lod_ray, &mut tmax[i], |prims, widen, t| {
-                            leaf(i, object, o, prims, widen, ray, t)
-                        }) {
-                            done |= 1 << i;
-                        }
+                    // The packet shares the node tests (the boxes bound every level a ray
+                    // may see); each ray tests a leaf at its own level.
+                    (_, Some(lod)) => o.bvh.traverse_packet::<true>(tests, live, tmax, |prims, tag, entering, tmax| {
+                        let mut done_here = 0;
+                        for_each_ray(entering, |i| {
+                            let r = &rays[i];
+                            let view = lod.view(&LodRay::new(r.origin, r.dir, r.cone));
+                            let ray = LeafRay::new(r.origin, r.dir);
+                            if leaf(i, object, o, prims, Some(&view.leaf(tag)), ray, &mut tmax[i]) {
+                                done_here |= 1 << i;
+                            }
+                        });
+                        done |= done_here;
+                        done_here
                     }),
                     (shape, None) => o.bvh.traverse_packet::<false>(tests, live, tmax, |prims, _, entering, tmax| {
                         // A strand leaf is loaded once and culled for all its rays.
