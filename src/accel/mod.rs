@@ -837,7 +837,7 @@ mod tests {
     fn packets_find_the_hits_of_single_rays() {
         let mut rng = GenRng::seed_from_u64(11);
         let plain = random_scene(&mut rng);
-        // The same objects, the strands with level of detail (traversed ray by ray).
+        // The same objects, the strands with level of detail (leaves tested ray by ray).
         let shapes = plain.objects.iter().map(|o| (o.shape.clone(), o.material, Some(LodParams::default())));
         let lod = Accel::build_with_lod(shapes.collect());
         let (mut hits, mut blocked) = (0, 0);
