@@ -44,7 +44,7 @@ pub const SMOOTH_EXACT_SHADOW_TRANSMITTANCE: f32 = 0.2;
 /// Opacity of `object`'s primitive `prim` at a hit seen at `level` by the ray from
 /// `origin` along `dir`: the strand's own opacity times its level of detail's.
 #[inline]
-fn hit_opacity(o: &Object, prim: u32, kind: HitKind, level: u32, ray: (Vec3, Vec3)) -> f32 {
+fn seen_opacity(o: &Object, prim: u32, kind: HitKind, level: u32, ray: (Vec3, Vec3)) -> f32 {
     let own = opacity(&o.shape, prim, kind);
     match kind {
         HitKind::Segment { s: along, .. } => own * o.lod_opacity_at(prim, along, level, ray),
@@ -280,7 +280,7 @@ impl Accel {
                         return false;
                     }
                     let hit = Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) };
-                    let layer = LayerHit { hit, opacity: hit_opacity(o, prim, kind, level, (ray.origin, ray.dir)) };
+                    let layer = LayerHit { hit, opacity: seen_opacity(o, prim, kind, level, (ray.origin, ray.dir)) };
                     if let Some(t) = insert_layer(out, layer, k, tail) {
                         *cutoff = t;
                     }
@@ -339,7 +339,7 @@ impl Accel {
         let blocked = self.walk(origin, dir, cone, 0.0, &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
             leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), (skip, false), widen, |prim, _, kind, level| {
-                let a = hit_opacity(o, prim, kind, level, (origin, dir));
+                let a = seen_opacity(o, prim, kind, level, (origin, dir));
                 match seed {
                     Some(seed) if transmitted < exact => stop_draw(seed, object, prim) < a,
                     _ => {

@@ -38,7 +38,9 @@ pub mod bvh;
 mod layers;
 pub mod lod;
 
-pub use layers::{LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBLE_TRANSMITTANCE};
+pub use layers::{
+    LayerHit, StochasticTail, EXACT_SHADOW_TRANSMITTANCE, NEGLIGIBLE_TRANSMITTANCE, SMOOTH_EXACT_SHADOW_TRANSMITTANCE,
+};
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
 use crate::math::{Aabb, Ray, RayCone, RayMask, PACKET};
