@@ -288,7 +288,7 @@ fn trace_from(
     // BVH boxes the ray leaves before that are not entered (lod_field.toml: -1.6 % instructions).
     let tmin = hit.map_or(0.0, |h| h.t * (1.0 - 4.0 * f32::EPSILON));
     let (mut color, mut transmitted, mut carried, mut first, mut tmin) = (Color::ZERO, 1.0f32, 1.0f32, None, tmin);
-    let mut shadows = SharedShadows::new(world, sampler);
+    let mut shadows = SharedShadows::new(world.lights.len(), sampler);
     let color = 'layers: loop {
         world.accel.intersect_k(ray, tmin, k, &seen, Some(tail), &mut layers);
         // Lights count up to where the collected hits may hide what lies behind them.
@@ -457,16 +457,14 @@ impl PixelShadows {
 /// is stratified across a pixel's samples and does not depend on how many hits one
 /// traversal collects.
 ///
-/// With smooth level of detail ([`crate::accel::Accel::smooth_layers`]), singular lights
-/// ([`crate::light::Light::is_singular`]) are not shared: every layer traces its own shadow
-/// ray to them. A pick toggles to another layer, whose shadow may differ entirely, as
+/// With smooth level of detail ([`crate::accel::Accel::smooth_layers`]), [`shade`] offers
+/// no singular light ([`crate::light::Light::is_singular`]): every layer traces its own
+/// shadow ray to it. A pick toggles to another layer, whose shadow may differ entirely, as
 /// strands slide under a fixed sample; that made most of the far fur's flicker in a camera
 /// move (docs/performance.md, session 8).
 pub(super) struct SharedShadows {
     /// Per light; inline for the usual few lights, so a camera ray allocates nothing.
     picks: SmallVec<[Pick; 4]>,
-    /// Per light: whether the layers share its shadow ray ([`SharedShadows::shares`]).
-    shared: SmallVec<[bool; 4]>,
 }
 
 /// The offers made for one light so far: their total weight, the one kept, and the
@@ -482,21 +480,13 @@ struct Pick {
 impl SharedShadows {
     /// One sample dimension decides every pick: light `l` starts from it shifted by `l`
     /// times the golden ratio (mod 1), which keeps each light's numbers stratified.
-    fn new(world: &World, sampler: &mut PixelSampler) -> SharedShadows {
+    fn new(lights: usize, sampler: &mut PixelSampler) -> SharedShadows {
         let u = sampler.next_1d();
-        let mut picks: SmallVec<[Pick; 4]> = smallvec::smallvec![Pick::default(); world.lights.len()];
+        let mut picks: SmallVec<[Pick; 4]> = smallvec::smallvec![Pick::default(); lights];
         for (l, pick) in picks.iter_mut().enumerate() {
             pick.u = (u + l as f32 * 0.618_034).fract();
         }
-        let smooth = world.accel.smooth_layers();
-        let shared = world.lights.iter().map(|l| !(smooth && l.is_singular())).collect();
-        SharedShadows { picks, shared }
-    }
-
-    /// True when the layers share one shadow ray towards light number `light`; otherwise
-    /// each layer traces its own at once.
-    fn shares(&self, light: usize) -> bool {
-        self.shared[light]
+        SharedShadows { picks }
     }
 
     /// Offers the unshadowed light `value` that light number `light` sends along `shadow`.
@@ -590,7 +580,8 @@ fn shade(
         let cone = ray.cone.propagate(hit.t, 0.0);
         let shadow = ShadowRay { origin: d.origin, dir: ls.dir, tmax, skip: d.skip, cone, seed: shadow_seed };
         match &mut shadows {
-            Shadows::Shared(shared, weight) if shared.shares(index) => {
+            // Smooth level of detail: each layer its own shadow ray to a singular light.
+            Shadows::Shared(shared, weight) if !(world.accel.smooth_layers() && light.is_singular()) => {
                 shared.offer(index, *weight * (f * ls.value), shadow)
             }
             Shadows::Deferred(pixel) => pixel.push(index, f * ls.value, &shadow),
