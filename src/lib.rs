@@ -14,7 +14,7 @@ pub mod demo;
 pub mod film;
 pub mod fur;
 pub mod geometry;
-pub mod hair;
+pub mod hair_system;
 pub mod io;
 pub mod light;
 pub mod math;

@@ -86,7 +86,7 @@ fn fur_export_writes_the_grown_fur_and_bad_fur_gives_clear_errors() {
     let (ok, stderr) = tress(&["fur", "export", "fur.toml", "-o", "fur.hair"], d);
     assert!(ok, "{stderr}");
     // Only the fur is written, not the scene's other strands; it reads back whole.
-    let strands = tress::io::hair::read_hair(&d.join("fur.hair")).unwrap();
+    let strands = tress::io::cem_hair::read_hair(&d.join("fur.hair")).unwrap();
     let desc = tress::io::scene_file::read_scene(&d.join("fur.toml")).unwrap();
     let geometry = tress::scene::load_geometry(&desc).unwrap();
     let grown = geometry.shapes.iter().find_map(|(s, m)| match (s, &geometry.materials[*m as usize]) {
@@ -101,7 +101,7 @@ fn fur_export_writes_the_grown_fur_and_bad_fur_gives_clear_errors() {
     // `tress export` writes every strand set: two more strands.
     let (ok, stderr) = tress(&["export", "fur.toml", "-o", "all.hair"], d);
     assert!(ok, "{stderr}");
-    assert_eq!(tress::io::hair::read_hair(&d.join("all.hair")).unwrap().strand_count(), grown.strand_count() + 2);
+    assert_eq!(tress::io::cem_hair::read_hair(&d.join("all.hair")).unwrap().strand_count(), grown.strand_count() + 2);
 
     std::fs::write(d.join("nomap.toml"), fur("length_map = \"missing.png\"\n")).unwrap();
     assert_clear_error(&["fur", "export", "nomap.toml", "-o", "x.hair"], d, &["missing.png"]);

@@ -204,7 +204,7 @@ fn frames_move_the_camera_and_read_per_frame_files() {
     let mut s = tress::geometry::StrandSet::new();
     for frame in 1..=2u32 {
         s.push_strand((0..8).map(|i| (glam::Vec3::new(frame as f32 * 0.2 - 0.3, i as f32 * 0.1 - 0.4, 0.0), 0.05)));
-        tress::io::hair::write_hair(&d.join(format!("strands.{frame:04}.hair")), &s).unwrap();
+        tress::io::cem_hair::write_hair(&d.join(format!("strands.{frame:04}.hair")), &s).unwrap();
     }
     let scene = "[camera]\n[[camera.key]]\nframe = 1\neye = [0, 0, 3]\ntarget = [0, 0, 0]\n\
         [[camera.key]]\nframe = 3\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n\

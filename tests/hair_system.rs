@@ -81,7 +81,7 @@ fn guides_from_a_hair_file_with_their_colours_and_a_transform() {
     guides.push_strand((0..5).map(|k| (Vec3::new(0.0, k as f32 * 0.25, 0.0), 0.01)));
     guides.push_strand((0..5).map(|k| (Vec3::new(1.0, k as f32 * 0.25, 0.0), 0.01)));
     guides.colors = Some((0..10).map(|k| if k < 5 { [1.0, 0.0, 0.0] } else { [0.0, 0.0, 1.0] }).collect());
-    tress::io::hair::write_hair(&dir.path().join("guides.hair"), &guides).unwrap();
+    tress::io::cem_hair::write_hair(&dir.path().join("guides.hair"), &guides).unwrap();
     let text = r#"
 [camera]
 eye = [0.0, 0.0, 5.0]

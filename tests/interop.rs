@@ -118,7 +118,7 @@ fn export_to_hair_and_usda_round_trips_points_and_widths() {
     let (desc, _) = read_imported(&src).unwrap().into_description();
     let want = strands_of(&desc);
     assert!(want.strand_count() > 1000);
-    let hair = tress::io::hair::read_hair(&d.join("out.hair")).unwrap();
+    let hair = tress::io::cem_hair::read_hair(&d.join("out.hair")).unwrap();
     assert_eq!((hair.offsets.clone(), hair.points.clone()), (want.offsets.clone(), want.points.clone()));
     let (back, _) = read_imported(&d.join("out.usda")).unwrap().into_description();
     let usd = strands_of(&back);

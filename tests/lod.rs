@@ -5,7 +5,7 @@
 
 use std::path::Path;
 use tress::film::Film;
-use tress::hair::Placement;
+use tress::hair_system::Placement;
 use tress::scene::{prepare, Description, GuideSource};
 
 /// The benchmark scene at 240x135, 2 samples, a tenth of the follicles, `start = 1`.

@@ -339,7 +339,7 @@ fn export(scene: Option<&Path>, o: &Overrides, output: &Path, keep: impl Fn(&Mat
             }
         }
     }
-    tress::io::hair::write_hair(output, &all)?;
+    tress::io::cem_hair::write_hair(output, &all)?;
     eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());
     Ok(())
 }

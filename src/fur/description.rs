@@ -13,7 +13,7 @@
 //! `x_noise_freq`; scalar ones also take `x_map_offset` and `x_map_mult` (section 2.1).
 
 use crate::math::Color;
-use crate::shading::fur::LightModel;
+use crate::shading::fur_tube::LightModel;
 use std::path::{Path, PathBuf};
 
 /// A scalar, mappable fur attribute.

@@ -40,7 +40,7 @@ use super::FurError;
 use crate::geometry::{StrandInfo, StrandSet, TriangleMesh};
 use crate::math::rng::{hash_combine, GenRng};
 use crate::math::{frame, sampling, Color};
-use crate::shading::fur::Fur;
+use crate::shading::fur_tube::Fur;
 use glam::{Quat, Vec3};
 use rand::Rng;
 use rayon::prelude::*;

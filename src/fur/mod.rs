@@ -10,7 +10,7 @@
 //! - [`generate`]: root placement and hair shape into a [`crate::geometry::StrandSet`].
 //! - [`guides`]: attraction toward guide curves.
 //!
-//! Shading is [`crate::shading::fur`] (thesis eq. 2.4 to 2.7).
+//! Shading is [`crate::shading::fur_tube`] (thesis eq. 2.4 to 2.7).
 
 pub mod description;
 pub mod generate;

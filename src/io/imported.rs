@@ -33,7 +33,7 @@ pub struct Imported {
     pub hair: Vec<HairEntry>,
     /// Hair systems (inline guides).
     pub hair_systems: Vec<HairSystemEntry>,
-    /// Fur; `mesh` indexes [`Imported::meshes`] (see [`maya_ascii::fur`]).
+    /// Fur; `mesh` indexes [`Imported::meshes`] (see [`maya_ascii::fur_nodes`]).
     pub fur: Vec<FurEntry>,
     /// What was read only in part or skipped, one line each, for the user.
     pub warnings: Vec<String>,

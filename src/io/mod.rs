@@ -2,7 +2,7 @@
 //! tools' scenes (Maya ASCII, pbrt-v4, USD text) through [`imported`].
 
 mod error;
-pub mod hair;
+pub mod cem_hair;
 pub mod imported;
 pub mod maya_ascii;
 pub mod obj;

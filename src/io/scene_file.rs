@@ -8,8 +8,8 @@ use crate::accel::lod::LodParams;
 use crate::film::PixelFilter;
 use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPlacement};
 use crate::geometry::TriangleMesh;
-use crate::hair::ramp::RampValue;
-use crate::hair::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
+use crate::hair_system::ramp::RampValue;
+use crate::hair_system::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
 use crate::scene::{
     Adaptive, CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, Integrator,

@@ -548,7 +548,7 @@ fn read_curves(c: &BasisCurves, transform: Affine3A, warnings: &mut Vec<String>)
     if !point_colors.is_empty() {
         set.colors = Some(point_colors);
     }
-    let d = constant_color.unwrap_or(crate::hair::HairSystem::default().hair_color);
+    let d = constant_color.unwrap_or(crate::hair_system::HairSystem::default().hair_color);
     let material = Material::Tube(Tube { ambient: d, diffuse: d, specular: Vec3::splat(0.3), specular_power: 40.0 });
     Ok(Some(HairEntry {
         source: HairSource::Inline(set),
@@ -677,7 +677,7 @@ fn read_light(prim: &Prim, kind: &str, transform: &Affine3A) -> Res<Light> {
 /// with vertex widths (diameters) and colours, meshes as triangle `Mesh`es with their
 /// normals, UVs and, for diffuse materials, `displayColor`. Strands with fewer than two
 /// points are left out (a linear curve needs two). Written atomically, like
-/// [`super::hair::write_hair`].
+/// [`super::cem_hair::write_hair`].
 pub fn write_usd(path: &Path, shapes: &[(Shape, u32)], materials: &[Material]) -> Result<(), LoadError> {
     let text =
         usda_text(shapes, materials).map_err(|e| LoadError::invalid(path, format!("cannot write USD: {e:#}")))?;

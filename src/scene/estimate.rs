@@ -61,7 +61,7 @@ pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> 
                 (s.strand_count() as u64, s.points.len() as u64, s.colors.is_some(), s.opacity.is_some())
             }
             HairSource::File(path) => {
-                let c = io::hair::read_hair_counts(path)?;
+                let c = io::cem_hair::read_hair_counts(path)?;
                 (u64::from(c.strands), u64::from(c.points), c.colors && h.file_colors, c.opacity)
             }
         };
@@ -144,7 +144,7 @@ mod tests {
         let desc = io::scene_file::read_scene(&root.join("scenes/lights_and_glass.toml")).unwrap();
         let e = estimate_memory(&desc).unwrap();
         // 3000 strands of the hair file dominate: 677 kB of file, more in memory with BVH.
-        let counts = io::hair::read_hair_counts(&root.join("scenes/hairy_torus.hair")).unwrap();
+        let counts = io::cem_hair::read_hair_counts(&root.join("scenes/hairy_torus.hair")).unwrap();
         assert_eq!(counts.strands, 3000);
         assert!(e.geometry > u64::from(counts.points) * 16 && e.bvh > 0, "{e:?}");
         assert_eq!(io::ply::read_ply_counts(&root.join("scenes/box.ply")).unwrap().0, 8);

@@ -10,7 +10,7 @@ use crate::accel::lod::LodParams;
 use crate::accel::{Accel, Shape};
 use crate::camera::{Camera, CameraError};
 use crate::geometry::{StrandSet, TriangleMesh};
-use crate::hair::{self, FollicleParams, Guides, HairColors, HairSystem};
+use crate::hair_system::{self, FollicleParams, Guides, HairColors, HairSystem};
 use crate::io::{self, LoadError};
 use crate::light::Light;
 use crate::math::Color;
@@ -460,7 +460,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
     }
     for (i, h) in desc.hair.iter().enumerate() {
         let mut strands = match &h.source {
-            HairSource::File(path) => io::hair::read_hair(path)?,
+            HairSource::File(path) => io::cem_hair::read_hair(path)?,
             HairSource::Inline(s) => taken.get_mut(i).and_then(Option::take).unwrap_or_else(|| s.clone()),
         };
         strands.transform(&h.transform);
@@ -499,7 +499,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         let what = |e: String| PrepareError::Invalid(format!("hair_system {}: {e}", i + 1));
         let guides = match &h.guides {
             GuideSource::File(path) => {
-                let mut curves = io::hair::read_hair(path)?;
+                let mut curves = io::cem_hair::read_hair(path)?;
                 curves.transform(&h.transform);
                 Guides::from_curves(curves)
             }
@@ -510,11 +510,11 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
             }
             GuideSource::Follicles { mesh, params } => match shapes.get(*mesh) {
                 // Meshes come first in `shapes`, in description order, already in world space.
-                Some((Shape::Mesh(m), _)) => hair::grow_guides(m, params, h.seed).map_err(what)?,
+                Some((Shape::Mesh(m), _)) => hair_system::grow_guides(m, params, h.seed).map_err(what)?,
                 _ => return Err(what(format!("follicles `mesh = {}` names no mesh", mesh + 1))),
             },
         };
-        let strands = hair::expand(&h.system, &guides, h.colors, h.seed).map_err(what)?;
+        let strands = hair_system::expand(&h.system, &guides, h.colors, h.seed).map_err(what)?;
         lods.push(h.lod);
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
@@ -526,7 +526,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
             return Err(what(format!("there is no mesh {}", f.mesh + 1)));
         };
         let guides = match &f.guides {
-            Some((HairSource::File(path), attractors)) => Some((io::hair::read_hair(path)?, attractors)),
+            Some((HairSource::File(path), attractors)) => Some((io::cem_hair::read_hair(path)?, attractors)),
             Some((HairSource::Inline(s), attractors)) => Some((s.clone(), attractors)),
             None => None,
         };

@@ -6,7 +6,7 @@
 //! hair). Mirror and glass answer through [`Material::specular`] instead, which the
 //! integrator follows recursively.
 
-pub mod fur;
+pub mod fur_tube;
 pub mod hair_bsdf;
 pub mod scatter;
 pub mod surface;
@@ -50,7 +50,7 @@ pub enum Material {
     /// The physically based hair BSDF of Chiang et al. 2016 ([`hair_bsdf`]).
     Physical(hair_bsdf::PhysicalHair),
     /// The thesis' fur shading (section 2.1.8, eq. 2.4 to 2.7), root-to-tip colours.
-    Fur(fur::Fur),
+    Fur(fur_tube::Fur),
 }
 
 /// Where and how a ray met a surface or a strand, as the materials need it.

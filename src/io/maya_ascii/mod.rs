@@ -32,7 +32,7 @@
 //!
 //! Every other node type is skipped, all of them together in one warning.
 
-pub mod fur;
+pub mod fur_nodes;
 pub mod parse;
 
 use self::parse::{Face, Graph, Value};
@@ -40,7 +40,7 @@ use super::imported::Imported;
 use super::LoadError;
 use crate::geometry::curve::Nurbs;
 use crate::geometry::{StrandSet, TriangleMesh};
-use crate::hair::{follicles::follicles_at_uvs, Guides, HairColors, HairSystem, Interp, NoiseMethod, Ramp, RampKey};
+use crate::hair_system::{follicles::follicles_at_uvs, Guides, HairColors, HairSystem, Interp, NoiseMethod, Ramp, RampKey};
 use crate::light::Light;
 use crate::scene::{CameraDesc, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource};
 use crate::shading::Material;
@@ -170,11 +170,11 @@ impl<'g> Reader<'g> {
         self.free_curves(&used_curves)?;
         let mut furs = Vec::new();
         for n in self.of_kind("FurDescription").collect::<Vec<_>>() {
-            let mut f = fur::read_fur(g, n)?;
+            let mut f = fur_nodes::read_fur(g, n)?;
             f.meshes = self.fur_meshes(n);
             furs.push(f);
         }
-        let (entries, warnings) = fur::fur_entries(&furs)?;
+        let (entries, warnings) = fur_nodes::fur_entries(&furs)?;
         self.out.fur = entries;
         self.out.warnings.extend(warnings);
         self.camera()?;
@@ -1151,7 +1151,7 @@ fn ramp_keys(g: &Graph, n: usize, short: &str, long: &str, k: usize) -> Res<Opti
     Ok((!keys.is_empty()).then_some(keys))
 }
 
-fn build_ramp<T: crate::hair::ramp::RampValue>(
+fn build_ramp<T: crate::hair_system::ramp::RampValue>(
     g: &Graph,
     n: usize,
     name: &str,

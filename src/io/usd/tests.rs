@@ -115,7 +115,7 @@ fn export_then_import_keeps_points_widths_and_colours() {
     let mesh = TriangleMesh::sphere(1.5, 4);
     let shapes = vec![(Shape::Strands(set.clone()), 0), (Shape::Mesh(mesh.clone()), 1)];
     let materials = vec![
-        Material::Tube(crate::hair::HairSystem::default().tube()),
+        Material::Tube(crate::hair_system::HairSystem::default().tube()),
         Material::Diffuse { color: Vec3::new(0.2, 0.3, 0.4) },
     ];
     let dir = tempfile::tempdir().unwrap();

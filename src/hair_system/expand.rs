@@ -352,7 +352,7 @@ fn hair_point(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hair::ramp::{Interp, Ramp, RampKey};
+    use crate::hair_system::ramp::{Interp, Ramp, RampKey};
     use crate::math::Color;
 
     /// `n` guides: straight up (even ones) or bending over in a quarter circle (odd ones),

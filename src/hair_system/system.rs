@@ -222,7 +222,7 @@ fn ramp_range(name: &str, ramp: &Ramp<f32>, lo: f32, hi: f32) -> Result<(), Stri
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hair::ramp::{Interp, RampKey};
+    use crate::hair_system::ramp::{Interp, RampKey};
 
     #[test]
     fn defaults_are_valid_and_bad_values_name_the_attribute() {

@@ -11,7 +11,7 @@ use crate::fur::description::{MAX_DENSITY, MAX_SEGMENTS};
 use crate::fur::{ColorAttr, FurDescription, Placement, Scalar};
 use crate::math::Color;
 use crate::scene::FurEntry;
-use crate::shading::fur::LightModel;
+use crate::shading::fur_tube::LightModel;
 use std::collections::BTreeMap;
 
 /// The value of a FurDescription attribute.
