@@ -9,8 +9,9 @@ use std::path::Path;
 use std::time::Duration;
 use tress::fur::Scalar;
 use tress::io::scene_file::read_scene;
-use tress::scene::{prepare, Integrator};
+use tress::prepare::prepare;
 use tress::stats::process_cpu_time;
+use tress::world::Integrator;
 
 fn main() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/furry_pillow.toml");

@@ -14,7 +14,8 @@
 //! (defaults: the scene's size, 256 spp, 24 frames; 0 frames skips the pull-back).
 
 use tress::film::Film;
-use tress::scene::{prepare, Description};
+use tress::prepare::prepare;
+use tress::scene::Description;
 use tress::stats::process_cpu_time;
 
 /// Depth beyond which a pixel counts as far.

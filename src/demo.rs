@@ -6,8 +6,9 @@ use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::Light;
 use crate::math::rng::GenRng;
 use crate::math::{sampling, Color};
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings};
+use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use crate::shading::{tube::Tube, Material};
+use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
 use rand::{Rng, SeedableRng};
 

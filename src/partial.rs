@@ -16,10 +16,10 @@
 //! tiles merged into one image are bit for bit the single uninterrupted render.
 
 use crate::accel::Shape;
+use crate::error::LoadError;
 use crate::film::{decode_exr, write_image_part, Film, OutputError, Region};
-use crate::io::LoadError;
 use crate::render::{tile_count_of, TileMask, TiledFilm, TILE};
-use crate::scene::World;
+use crate::world::World;
 use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -141,7 +141,7 @@ pub fn parse_farm_tile(text: &str) -> Result<(u32, u32), String> {
 pub fn fingerprint(world: &World) -> u64 {
     let mut h = std::collections::hash_map::DefaultHasher::new();
     env!("CARGO_PKG_VERSION").hash(&mut h);
-    let settings = crate::scene::RenderSettings { threads: 0, ..world.settings.clone() };
+    let settings = crate::world::RenderSettings { threads: 0, ..world.settings.clone() };
     format!("{:?}{settings:?}{:?}{:?}", world.camera, world.lights, world.materials).hash(&mut h);
     let floats = |h: &mut std::collections::hash_map::DefaultHasher, v: &mut dyn Iterator<Item = f32>| {
         v.for_each(|x| h.write_u32(x.to_bits()));

@@ -8,8 +8,10 @@ use tress::film::Film;
 use tress::geometry::{StrandSet, TriangleMesh};
 use tress::light::Light;
 use tress::math::Color;
-use tress::scene::{prepare, CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, RenderSettings};
+use tress::prepare::prepare;
+use tress::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use tress::shading::{tube::Tube, Material};
+use tress::world::RenderSettings;
 
 fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3A)>, eye: Vec3) -> Description {
     let tube = Material::Tube(Tube {

@@ -171,7 +171,7 @@ fn sigint_stops_the_render_and_writes_a_valid_partial_image() {
 fn stopped_saved_and_resumed_equals_uninterrupted() {
     let mut desc = tress::demo::description(1500, 2);
     (desc.settings.width, desc.settings.height, desc.settings.spp) = (70, 50, 2);
-    let (world, _) = tress::scene::prepare(&desc).unwrap();
+    let (world, _) = tress::prepare::prepare(&desc).unwrap();
     let pool = |n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
     let (whole, _) = pool(2).install(|| tress::render::render(&world, None));
 

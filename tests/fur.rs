@@ -23,8 +23,10 @@ fn desc(density: u32, segments: u32, set: &[(Scalar, f32)]) -> FurDescription {
     d
 }
 
+/// Grows `d` with seed 7, its image maps decoded as a scene's are.
 fn grow_on(mesh: &TriangleMesh, d: &FurDescription) -> GrownFur {
-    grow(mesh, d, GrowOptions { seed: 7, ..Default::default() }).unwrap()
+    let images = tress::prepare::read_map_images(d).unwrap();
+    grow(mesh, d, GrowOptions { seed: 7, images: &images, ..Default::default() }).unwrap()
 }
 
 fn strand(s: &StrandSet, i: usize) -> Vec<Vec3> {
@@ -64,7 +66,7 @@ fn root_count_is_density_spread_by_area() {
     // (1 - cos 18deg) / 2 = 2.4 % of the area but 10 % of the UV area.
     let n = 40_000;
     let share = |placement| {
-        let fur = grow(&mesh, &desc(n, 1, &[]), GrowOptions { placement, seed: 3, guides: None }).unwrap();
+        let fur = grow(&mesh, &desc(n, 1, &[]), GrowOptions { placement, seed: 3, ..Default::default() }).unwrap();
         let s = &fur.strands;
         (0..s.strand_count()).filter(|&i| uv(s, i)[1] < 0.1).count() as f64 / s.strand_count() as f64
     };
@@ -400,6 +402,8 @@ fn bad_input_is_an_error_not_a_panic() {
     let e = err(&bare, &d, Placement::Area);
     assert!(e.contains("no UVs") && e.contains("length_map"), "{e}");
     let e = err(&plane, &d, Placement::Area);
+    assert!(e.contains("no/such/map.png") && e.contains("not decoded"), "{e}");
+    let e = tress::prepare::read_map_images(&d).unwrap_err().to_string();
     assert!(e.contains("no/such/map.png"), "{e}");
     d[Scalar::Length].map = Some(MapSource::Vertex(vec![[0.5; 3]; 5]));
     let e = err(&plane, &d, Placement::Area);

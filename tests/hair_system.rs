@@ -5,7 +5,7 @@ use std::path::Path;
 use tress::film::Film;
 use tress::io::scene_file::parse_scene;
 use tress::math::rng::{hash_u32, unit_float};
-use tress::scene::prepare;
+use tress::prepare::prepare;
 
 const SCENE: &str = r#"
 [camera]
@@ -96,7 +96,7 @@ hair_width = 0.02
 diffuse_rand = 0.0
 "#;
     let desc = parse_scene(text, &dir.path().join("scene.toml")).unwrap();
-    let geometry = tress::scene::load_geometry(&desc).unwrap();
+    let geometry = tress::prepare::load_geometry(&desc).unwrap();
     let Shape::Strands(hair) = &geometry.shapes[0].0 else { panic!("not strands") };
     assert_eq!(hair.strand_count(), 14);
     // Transformed guides (scale 2, then up by 1); widths stay the system's, in world units.
@@ -111,6 +111,6 @@ diffuse_rand = 0.0
 
     // A missing guide file: an error naming it.
     let desc = parse_scene(&text.replace("guides.hair", "missing.hair"), &dir.path().join("scene.toml")).unwrap();
-    let e = tress::scene::load_geometry(&desc).err().unwrap().to_string();
+    let e = tress::prepare::load_geometry(&desc).err().unwrap().to_string();
     assert!(e.contains("missing.hair"), "{e}");
 }

@@ -8,7 +8,8 @@ use std::path::Path;
 use std::process::Command;
 use tress::geometry::StrandSet;
 use tress::io::imported::read_imported;
-use tress::scene::{prepare, Description, HairSource};
+use tress::prepare::prepare;
+use tress::scene::{Description, HairSource};
 
 fn render(desc: &Description) -> tress::film::Film {
     let (world, _) = prepare(desc).unwrap();
@@ -96,7 +97,7 @@ fn tress(args: &[&str], dir: &Path) -> (bool, String) {
 
 fn strands_of(desc: &Description) -> StrandSet {
     let mut all = StrandSet::new();
-    for (shape, _) in tress::scene::load_geometry(desc).unwrap().shapes {
+    for (shape, _) in tress::prepare::load_geometry(desc).unwrap().shapes {
         if let tress::accel::Shape::Strands(s) = shape {
             all.append(&s);
         }

@@ -10,12 +10,11 @@ use tress::film::Film;
 use tress::geometry::{StrandSet, TriangleMesh};
 use tress::light::Light;
 use tress::math::Color;
-use tress::scene::{
-    prepare, Adaptive, CameraDesc, Description, HairEntry, HairSource, Integrator, IrradianceCacheSettings, MeshEntry,
-    MeshSource, RenderSettings,
-};
+use tress::prepare::prepare;
+use tress::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use tress::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use tress::shading::Material;
+use tress::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
 
 fn render(desc: &Description, threads: usize) -> Film {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();

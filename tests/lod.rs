@@ -6,7 +6,8 @@
 use std::path::Path;
 use tress::film::Film;
 use tress::hair_system::Placement;
-use tress::scene::{prepare, Description, GuideSource};
+use tress::prepare::prepare;
+use tress::scene::{Description, GuideSource};
 
 /// The benchmark scene at 240x135, 2 samples, a tenth of the follicles, `start = 1`.
 fn small_field() -> Description {

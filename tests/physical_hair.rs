@@ -7,9 +7,11 @@ use glam::{Affine3A, Vec3};
 use tress::geometry::StrandSet;
 use tress::light::Light;
 use tress::math::Color;
-use tress::scene::{prepare, CameraDesc, Description, HairEntry, HairSource, RenderSettings};
+use tress::prepare::prepare;
+use tress::scene::{CameraDesc, Description, HairEntry, HairSource};
 use tress::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use tress::shading::Material;
+use tress::world::RenderSettings;
 
 /// A short straight strand across the view, seen from +z, under a constant environment.
 fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Description {

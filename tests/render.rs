@@ -3,7 +3,7 @@
 
 use std::path::Path;
 use tress::film::{srgb_encode, Film};
-use tress::scene::prepare;
+use tress::prepare::prepare;
 
 /// A small demo render: 160x120, 4 samples, 6000 strands (the full scene's look, quickly).
 fn small_demo(threads: usize) -> Film {
@@ -108,7 +108,7 @@ fn fur_matches_the_golden_image_whatever_the_thread_count() {
 /// z = 5 with a 10-degree field of view, rendered with `settings`.
 fn black_strands_on_white(
     strands: tress::geometry::StrandSet,
-    settings: tress::scene::RenderSettings,
+    settings: tress::world::RenderSettings,
 ) -> tress::scene::Description {
     use glam::{Affine3A, Vec3};
     use tress::light::Light;
@@ -140,7 +140,7 @@ fn semi_transparent_strands_let_the_background_through() {
     use tress::geometry::StrandSet;
     use tress::math::{rng::PixelSampler, Ray};
     use tress::render::{trace, Counters};
-    use tress::scene::RenderSettings;
+    use tress::world::RenderSettings;
     let seen = |opacities: &[f32]| {
         let mut strands = StrandSet::new();
         for (i, _) in opacities.iter().enumerate() {
@@ -173,7 +173,7 @@ fn a_gaussian_filter_widens_edges_and_keeps_coverage() {
     use glam::Vec3;
     use tress::film::PixelFilter;
     use tress::geometry::StrandSet;
-    use tress::scene::RenderSettings;
+    use tress::world::RenderSettings;
     // A thick horizontal strand, about 5.5 pixels tall, across a 16x16 image.
     let render = |filter: PixelFilter| {
         let mut strands = StrandSet::new();

@@ -6,9 +6,11 @@ use tress::geometry::StrandSet;
 use tress::light::Light;
 use tress::math::rng::PixelSampler;
 use tress::math::{Color, Ray};
+use tress::prepare::prepare;
 use tress::render::{trace, Counters};
-use tress::scene::{prepare, CameraDesc, Description, HairEntry, HairSource, RenderSettings, World};
+use tress::scene::{CameraDesc, Description, HairEntry, HairSource};
 use tress::shading::{tube::Tube, Material};
+use tress::world::{RenderSettings, World};
 
 fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> World {
     let desc = Description {

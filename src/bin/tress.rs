@@ -11,10 +11,12 @@ use tress::accel::Shape;
 use tress::bench::{light_direction, read_reference_scene, trace_primary, trace_shadow, Memory, Tracing};
 use tress::film::Region;
 use tress::partial::{fingerprint, Checkpointer, Partial};
+use tress::prepare::{prepare, prepare_owned};
 use tress::render::{render_tiles, Control, TiledFilm};
-use tress::scene::{prepare, prepare_owned, Description, World};
+use tress::scene::Description;
 use tress::shading::Material;
 use tress::stats::{human_bytes, peak_memory_bytes};
+use tress::world::World;
 
 #[derive(Parser)]
 #[command(name = "tress", version, about = "A ray tracer for hair and fur")]
@@ -135,7 +137,7 @@ struct Overrides {
     seed: Option<u32>,
     /// Light transport: direct, final-gather or path.
     #[arg(long, value_parser = parse_integrator)]
-    integrator: Option<tress::scene::Integrator>,
+    integrator: Option<tress::world::Integrator>,
     /// Partial hits collected per traversal through semi-transparent hair (1 re-traces
     /// after every hit, the slow way).
     #[arg(long)]
@@ -179,7 +181,7 @@ struct Job {
     checkpoint_every: f64,
     /// Refuse, before loading anything, a scene whose estimated memory exceeds this
     /// (bytes, or with a K, M, G or T suffix: powers of 1024).
-    #[arg(long, value_name = "SIZE", value_parser = tress::scene::parse_memory_size)]
+    #[arg(long, value_name = "SIZE", value_parser = tress::prepare::parse_memory_size)]
     memory_limit: Option<u64>,
 }
 
@@ -197,8 +199,8 @@ fn parse_on_off(s: &str) -> Result<bool, String> {
     }
 }
 
-fn parse_integrator(s: &str) -> Result<tress::scene::Integrator, String> {
-    tress::scene::Integrator::from_name(s).ok_or_else(|| format!("`{s}` is not direct, final-gather or path"))
+fn parse_integrator(s: &str) -> Result<tress::world::Integrator, String> {
+    tress::world::Integrator::from_name(s).ok_or_else(|| format!("`{s}` is not direct, final-gather or path"))
 }
 
 fn parse_filter(s: &str) -> Result<tress::film::PixelFilter, String> {
@@ -263,7 +265,7 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     }
     if let Some(a) = o.cache_accuracy {
         s.irradiance_cache =
-            Some(tress::scene::IrradianceCacheSettings { accuracy: a, ..s.irradiance_cache.unwrap_or_default() });
+            Some(tress::world::IrradianceCacheSettings { accuracy: a, ..s.irradiance_cache.unwrap_or_default() });
     }
     desc.validate()?;
     Ok(desc)
@@ -323,7 +325,7 @@ fn export(scene: Option<&Path>, o: &Overrides, output: &Path, keep: impl Fn(&Mat
         anyhow::bail!("{}: unsupported export format: use a .hair or .usda file name", output.display());
     }
     let desc = load(scene, o)?;
-    let geometry = tress::scene::load_geometry(&desc)?;
+    let geometry = tress::prepare::load_geometry(&desc)?;
     if is("usda") {
         let materials = &geometry.materials;
         let shapes: Vec<_> = geometry.shapes.into_iter().filter(|(_, m)| keep(&materials[*m as usize])).collect();
@@ -362,7 +364,7 @@ fn render(scene: Option<&Path>, o: &Overrides, output: &Path, quiet: bool, job: 
     }
     let desc = load(scene, o)?;
     if let Some(limit) = job.memory_limit {
-        let e = tress::scene::estimate_memory(&desc)?;
+        let e = tress::prepare::estimate_memory(&desc)?;
         if e.total() > limit {
             anyhow::bail!(
                 "the scene needs an estimated {} (geometry {}, BVH {}, image {}), more than the memory limit of {}",

@@ -14,7 +14,7 @@ use exr::meta::attribute::{AttributeValue, SampleType};
 use exr::prelude::{FlatSamples, ReadChannels, ReadLayers};
 
 use super::{Film, CHANNELS};
-use crate::io::LoadError;
+use crate::error::LoadError;
 
 /// An image read from an EXR file: the pixels of its data window and where that window
 /// lies in the whole image (the display window).

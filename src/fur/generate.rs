@@ -35,7 +35,7 @@
 
 use super::description::{ColorAttr, FurDescription, Scalar, MAX_DENSITY};
 use super::guides::{Attractors, GuideField};
-use super::maps::{perlin, Attributes, Perlin, SurfacePoint};
+use super::maps::{perlin, Attributes, MapImage, Perlin, SurfacePoint};
 use super::FurError;
 use crate::geometry::{StrandInfo, StrandSet, TriangleMesh};
 use crate::math::rng::{hash_combine, GenRng};
@@ -67,6 +67,8 @@ pub struct GrowOptions<'a> {
     pub seed: u32,
     /// Guide curves and how they attract the fur.
     pub guides: Option<(&'a StrandSet, &'a Attractors)>,
+    /// The description's image maps, decoded (every file [`super::image_map_paths`] lists).
+    pub images: &'a [MapImage],
 }
 
 /// Grown fur: strands and the shading parameters that go with them.
@@ -376,7 +378,7 @@ struct StrandExtra {
 
 /// Grows the fur `desc` describes on `mesh` (in the space the fur should be in).
 ///
-/// Errors: an invalid description, unreadable or mismatched maps, UV placement or maps on
+/// Errors: an invalid description, maps missing from the decoded images or mismatched, UV placement or maps on
 /// a mesh without UVs (or with no UV area), unusable guides, or more than [`MAX_POINTS`]
 /// points.
 pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) -> Result<GrownFur, FurError> {
@@ -395,7 +397,7 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
         )));
     }
     let seed = options.seed;
-    let attrs = Attributes::resolve(desc, mesh, seed)?;
+    let attrs = Attributes::resolve(desc, mesh, options.images, seed)?;
     let guides = match options.guides {
         Some((strands, attractors)) => {
             Some(GuideField::new(strands, attractors).map_err(|e| FurError::Invalid(format!("guides: {e}")))?)

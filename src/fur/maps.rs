@@ -12,18 +12,47 @@
 //! it; the global value itself is checked when read). Scalar image maps use the mean of R,
 //! G and B; colour maps are decoded from sRGB to linear. Image maps wrap (repeat) in UV,
 //! with v = 0 at the bottom row of the image, and are sampled bilinearly.
+//!
+//! Image files are decoded by [`crate::prepare`], which hands their texels over as
+//! [`MapImage`]s; nothing here reads a file.
 
 use super::description::{ColorAttr, FurDescription, MapSource, Scalar};
 use super::FurError;
 use crate::geometry::TriangleMesh;
-use crate::io::LoadError;
 use crate::math::rng::hash_combine;
 use crate::math::Color;
 use glam::Vec3;
-use std::path::Path;
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
 
-/// Largest accepted map image side, in pixels.
-pub const MAX_MAP_SIDE: u32 = 8192;
+/// An image map, decoded: its texels as the file stores them (colour maps still
+/// sRGB-encoded), row 0 at the top (v = 1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapImage {
+    /// The file it was decoded from, as the description names it.
+    pub path: PathBuf,
+    /// Width in texels.
+    pub width: u32,
+    /// Height in texels.
+    pub height: u32,
+    /// RGB texels, row by row from the top; `width * height` of them.
+    pub texels: Vec<[f32; 3]>,
+}
+
+/// The image files a description's maps name, each once, in attribute order.
+pub fn image_map_paths(desc: &FurDescription) -> Vec<&Path> {
+    let scalars = Scalar::ALL.into_iter().map(|s| desc[s].map.as_ref());
+    let colors = ColorAttr::ALL.into_iter().map(|c| desc[c].map.as_ref());
+    let mut paths: Vec<&Path> = Vec::new();
+    for map in scalars.chain(colors).flatten() {
+        if let MapSource::Image(path) = map {
+            if !paths.contains(&path.as_path()) {
+                paths.push(path);
+            }
+        }
+    }
+    paths
+}
 
 /// A point on the mesh where attributes are evaluated.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,16 +67,16 @@ pub struct SurfacePoint {
     pub uv: [f32; 2],
 }
 
-/// A map's values, loaded.
+/// A map's values, ready to sample.
 #[derive(Clone, Debug)]
-enum Map {
+enum Map<'a> {
     /// Linear RGB texels, row 0 at the top (v = 1).
-    Image { width: u32, height: u32, texels: Vec<[f32; 3]> },
+    Image { width: u32, height: u32, texels: Cow<'a, [[f32; 3]]> },
     /// One value per vertex.
     Vertex(Vec<[f32; 3]>),
 }
 
-impl Map {
+impl Map<'_> {
     fn sample(&self, mesh: &TriangleMesh, at: &SurfacePoint) -> Vec3 {
         match self {
             Map::Vertex(values) => {
@@ -82,15 +111,15 @@ struct Noise {
 }
 
 /// One attribute, ready to evaluate.
-struct Field {
+struct Field<'a> {
     value: Vec3,
-    map: Option<(Map, f32, f32)>,
+    map: Option<(Map<'a>, f32, f32)>,
     noise: Option<Noise>,
     min: f32,
     max: f32,
 }
 
-impl Field {
+impl Field<'_> {
     fn eval(&self, mesh: &TriangleMesh, at: &SurfacePoint, scalar: bool) -> Vec3 {
         if self.is_uniform() {
             return self.value.clamp(Vec3::splat(self.min), Vec3::splat(self.max));
@@ -119,8 +148,8 @@ impl Field {
 /// fields seeded. Evaluation is read-only and can run on many threads.
 pub struct Attributes<'a> {
     mesh: &'a TriangleMesh,
-    scalars: Vec<Field>,
-    colors: Vec<Field>,
+    scalars: Vec<Field<'a>>,
+    colors: Vec<Field<'a>>,
 }
 
 /// sRGB transfer function to linear (IEC 61966-2-1).
@@ -132,43 +161,26 @@ fn srgb_to_linear(c: f32) -> f32 {
     }
 }
 
-fn load_image(path: &Path, color: bool) -> Result<Map, LoadError> {
-    let mut reader = image::ImageReader::open(path)
-        .map_err(|e| LoadError::io(path, "read the map", e))?
-        .with_guessed_format()
-        .map_err(|e| LoadError::io(path, "read the map", e))?;
-    let mut limits = image::Limits::default();
-    limits.max_image_width = Some(MAX_MAP_SIDE);
-    limits.max_image_height = Some(MAX_MAP_SIDE);
-    reader.limits(limits);
-    let img = reader.decode().map_err(|e| match e {
-        image::ImageError::Limits(_) => {
-            LoadError::invalid(path, format!("map is larger than {MAX_MAP_SIDE} pixels a side"))
-        }
-        e => LoadError::format(path, format!("cannot decode the map image: {e}")),
-    })?;
-    let (width, height) = (img.width(), img.height());
-    if width == 0 || height == 0 {
-        return Err(LoadError::invalid(path, "map image is empty"));
-    }
-    let rgb = img.to_rgb32f();
-    let texels = rgb
-        .pixels()
-        .map(|p| match color {
-            true => p.0.map(srgb_to_linear),
-            false => p.0,
-        })
-        .collect();
-    Ok(Map::Image { width, height, texels })
-}
-
-fn load_map(source: &MapSource, key: &str, mesh: &TriangleMesh, color: bool) -> Result<Map, FurError> {
+fn load_map<'a>(
+    source: &MapSource,
+    key: &str,
+    mesh: &TriangleMesh,
+    images: &'a [MapImage],
+    color: bool,
+) -> Result<Map<'a>, FurError> {
     match source {
         MapSource::Image(path) => {
             if mesh.uvs.is_none() {
                 return Err(FurError::Invalid(format!("the mesh has no UVs, which the image map `{key}` needs")));
             }
-            Ok(load_image(path, color)?)
+            let Some(image) = images.iter().find(|i| i.path == *path) else {
+                return Err(FurError::Invalid(format!("the image map `{key}` ({}) was not decoded", path.display())));
+            };
+            let texels = match color {
+                true => Cow::Owned(image.texels.iter().map(|t| t.map(srgb_to_linear)).collect()),
+                false => Cow::Borrowed(image.texels.as_slice()),
+            };
+            Ok(Map::Image { width: image.width, height: image.height, texels })
         }
         MapSource::Vertex(values) => {
             if values.len() != mesh.positions.len() {
@@ -218,17 +230,22 @@ fn noise_field(
 }
 
 impl<'a> Attributes<'a> {
-    /// Loads the maps of `desc` for `mesh` and seeds the noise fields from `seed`.
+    /// Resolves the maps of `desc` for `mesh` (image maps from `images`, decoded from the
+    /// files [`image_map_paths`] lists) and seeds the noise fields from `seed`.
     ///
-    /// Errors: a map file that cannot be read or decoded (naming the file), a per-vertex
-    /// map whose length is not the mesh's vertex count, an image map or noise on a mesh
-    /// without UVs.
-    pub fn resolve(desc: &FurDescription, mesh: &'a TriangleMesh, seed: u32) -> Result<Attributes<'a>, FurError> {
+    /// Errors: an image map missing from `images`, a per-vertex map whose length is not
+    /// the mesh's vertex count, an image map or noise on a mesh without UVs.
+    pub fn resolve(
+        desc: &FurDescription,
+        mesh: &'a TriangleMesh,
+        images: &'a [MapImage],
+        seed: u32,
+    ) -> Result<Attributes<'a>, FurError> {
         let mut scalars = Vec::with_capacity(Scalar::COUNT);
         for (i, s) in Scalar::ALL.into_iter().enumerate() {
             let (spec, a) = (s.spec(), &desc[s]);
             let key = format!("{}_map", spec.name);
-            let map = a.map.as_ref().map(|m| load_map(m, &key, mesh, false)).transpose()?;
+            let map = a.map.as_ref().map(|m| load_map(m, &key, mesh, images, false)).transpose()?;
             scalars.push(Field {
                 value: Vec3::splat(a.value),
                 map: map.map(|m| (m, a.map_mult, a.map_offset)),
@@ -241,7 +258,7 @@ impl<'a> Attributes<'a> {
         for (i, c) in ColorAttr::ALL.into_iter().enumerate() {
             let (name, a) = (c.spec().name, &desc[c]);
             let key = format!("{name}_map");
-            let map = a.map.as_ref().map(|m| load_map(m, &key, mesh, true)).transpose()?;
+            let map = a.map.as_ref().map(|m| load_map(m, &key, mesh, images, true)).transpose()?;
             colors.push(Field {
                 value: a.value,
                 map: map.map(|m| (m, 1.0, 0.0)),
@@ -299,7 +316,7 @@ mod tests {
         d[Scalar::Length].map_mult = 4.0;
         d[Scalar::Length].map_offset = 1.0;
         d[Scalar::Baldness].map = Some(MapSource::Vertex(vec![[3.0; 3]; 4]));
-        let a = Attributes::resolve(&d, &mesh, 0).unwrap();
+        let a = Attributes::resolve(&d, &mesh, &[], 0).unwrap();
         // Triangle 0 is vertices (0, 2, 1): values 0, 0.5, 1.
         assert_eq!(a.scalar(Scalar::Length, &at(0, 0.0, 0.0, [0.0; 2])), 1.0);
         assert_eq!(a.scalar(Scalar::Length, &at(0, 1.0, 0.0, [0.0; 2])), 3.0);
@@ -316,8 +333,8 @@ mod tests {
         d[Scalar::Inclination].value = 0.5;
         d[Scalar::Inclination].noise = 0.3;
         d[Scalar::Inclination].noise_freq = 5.0;
-        let a = Attributes::resolve(&d, &mesh, 1).unwrap();
-        let b = Attributes::resolve(&d, &mesh, 2).unwrap();
+        let a = Attributes::resolve(&d, &mesh, &[], 1).unwrap();
+        let b = Attributes::resolve(&d, &mesh, &[], 2).unwrap();
         let (mut lo, mut hi, mut differs, mut max_step) = (1.0f32, 0.0f32, false, 0.0f32);
         let mut prev: Option<f32> = None;
         for i in 0..1000 {
@@ -339,21 +356,27 @@ mod tests {
 
     #[test]
     fn images_are_sampled_at_uv_with_v_up_and_colour_maps_linearised() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("map.png");
         // 2x1 image: left black, right white; a 1x2 image: top white, bottom black.
-        image::save_buffer(&path, &[0, 0, 0, 255, 255, 255], 2, 1, image::ColorType::Rgb8).unwrap();
-        let tall = dir.path().join("tall.png");
-        image::save_buffer(&tall, &[255, 255, 255, 0, 0, 0], 1, 2, image::ColorType::Rgb8).unwrap();
-        let grey = dir.path().join("grey.png");
-        image::save_buffer(&grey, &[128, 128, 128], 1, 1, image::ColorType::Rgb8).unwrap();
+        let image = |path: &str, width, height, texels: Vec<[f32; 3]>| MapImage {
+            path: PathBuf::from(path),
+            width,
+            height,
+            texels,
+        };
+        let grey = 128.0 / 255.0;
+        let images = [
+            image("map.png", 2, 1, vec![[0.0; 3], [1.0; 3]]),
+            image("tall.png", 1, 2, vec![[1.0; 3], [0.0; 3]]),
+            image("grey.png", 1, 1, vec![[grey; 3]]),
+        ];
         let mesh = TriangleMesh::plane(1.0);
         let mut d = FurDescription::default();
-        d[Scalar::Length].map = Some(MapSource::Image(path));
-        d[Scalar::Inclination].map = Some(MapSource::Image(tall));
-        d[ColorAttr::BaseColor].map = Some(MapSource::Image(grey.clone()));
-        d[Scalar::Roll].map = Some(MapSource::Image(grey));
-        let a = Attributes::resolve(&d, &mesh, 0).unwrap();
+        d[Scalar::Length].map = Some(MapSource::Image("map.png".into()));
+        d[Scalar::Inclination].map = Some(MapSource::Image("tall.png".into()));
+        d[ColorAttr::BaseColor].map = Some(MapSource::Image("grey.png".into()));
+        d[Scalar::Roll].map = Some(MapSource::Image("grey.png".into()));
+        assert_eq!(image_map_paths(&d), [Path::new("map.png"), Path::new("tall.png"), Path::new("grey.png")]);
+        let a = Attributes::resolve(&d, &mesh, &images, 0).unwrap();
         let l = |u: f32| a.scalar(Scalar::Length, &at(0, 0.0, 0.0, [u, 0.5]));
         assert_eq!((l(0.25), l(0.75)), (0.0, 1.0));
         assert!((l(0.5) - 0.5).abs() < 1e-6, "bilinear between texel centres");
@@ -362,29 +385,25 @@ mod tests {
         let c = a.color(ColorAttr::BaseColor, &at(0, 0.0, 0.0, [0.5, 0.5]));
         assert!((c.x - 0.2158).abs() < 1e-3, "sRGB 128 decodes to 0.216, got {c}");
         let r = a.scalar(Scalar::Roll, &at(0, 0.0, 0.0, [0.5, 0.5]));
-        assert!((r - 128.0 / 255.0).abs() < 1e-6, "scalar maps are read as data");
+        assert!((r - grey).abs() < 1e-6, "scalar maps are read as data");
     }
 
     #[test]
     fn bad_maps_are_errors_naming_the_problem() {
-        let dir = tempfile::tempdir().unwrap();
         let mesh = TriangleMesh::plane(1.0);
-        let err = |d: &FurDescription, mesh: &TriangleMesh| Attributes::resolve(d, mesh, 0).err().unwrap().to_string();
+        let err =
+            |d: &FurDescription, mesh: &TriangleMesh| Attributes::resolve(d, mesh, &[], 0).err().unwrap().to_string();
         let mut d = FurDescription::default();
-        d[Scalar::Length].map = Some(MapSource::Image(dir.path().join("absent.png")));
+        d[Scalar::Length].map = Some(MapSource::Image("absent.png".into()));
         let e = err(&d, &mesh);
-        assert!(e.contains("absent.png"), "{e}");
-        std::fs::write(dir.path().join("junk.png"), b"not an image").unwrap();
-        d[Scalar::Length].map = Some(MapSource::Image(dir.path().join("junk.png")));
-        let e = err(&d, &mesh);
-        assert!(e.contains("junk.png") && e.contains("decode"), "{e}");
+        assert!(e.contains("absent.png") && e.contains("length_map"), "{e}");
         d[Scalar::Length].map = Some(MapSource::Vertex(vec![[1.0; 3]; 3]));
         let e = err(&d, &mesh);
         assert!(e.contains("length_map") && e.contains("3 values") && e.contains("4 vertices"), "{e}");
         let mut bare = mesh.clone();
         bare.uvs = None;
         let mut d = FurDescription::default();
-        d[Scalar::Polar].map = Some(MapSource::Image(dir.path().join("junk.png")));
+        d[Scalar::Polar].map = Some(MapSource::Image("junk.png".into()));
         let e = err(&d, &bare);
         assert!(e.contains("no UVs") && e.contains("polar_map"), "{e}");
         let mut d = FurDescription::default();
@@ -394,6 +413,6 @@ mod tests {
         // Per-vertex maps need no UVs.
         let mut d = FurDescription::default();
         d[Scalar::Length].map = Some(MapSource::Vertex(vec![[1.0; 3]; 4]));
-        assert!(Attributes::resolve(&d, &bare, 0).is_ok());
+        assert!(Attributes::resolve(&d, &bare, &[], 0).is_ok());
     }
 }

@@ -21,15 +21,11 @@ pub mod presets;
 pub use description::{ColorAttr, FurDescription, MapSource, Scalar};
 pub use generate::{grow, GrowOptions, GrownFur, Placement};
 pub use guides::{AttractorModel, Attractors};
-
-use crate::io::LoadError;
+pub use maps::{image_map_paths, MapImage};
 
 /// Why fur cannot be grown.
 #[derive(Debug, thiserror::Error)]
 pub enum FurError {
-    /// A map file could not be read.
-    #[error(transparent)]
-    Load(#[from] LoadError),
     /// The description, the mesh or the guides cannot be used as given.
     #[error("{0}")]
     Invalid(String),

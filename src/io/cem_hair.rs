@@ -43,7 +43,7 @@
 
 use std::path::Path;
 
-use super::error::LoadError;
+use crate::error::LoadError;
 use crate::geometry::StrandSet;
 
 /// Size of the fixed header.

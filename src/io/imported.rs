@@ -3,14 +3,15 @@
 //! every geometry already in memory, ready to become a [`Description`] of its own
 //! (`tress render scene.ma`) or to join a TOML scene (`[[import]]`).
 
-use super::{maya_ascii, pbrt, usd, LoadError};
+use super::{maya_ascii, pbrt, usd};
+use crate::error::LoadError;
 use crate::geometry::StrandSet;
 use crate::light::Light;
 use crate::math::Aabb;
 use crate::scene::{
     CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
-    RenderSettings,
 };
+use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3, Vec3A};
 use std::path::Path;
 

@@ -1,7 +1,6 @@
 //! File formats: scene TOML, OBJ and PLY meshes, Cem Yuksel `.hair` strands, and other
 //! tools' scenes (Maya ASCII, pbrt-v4, USD text) through [`imported`].
 
-mod error;
 pub mod cem_hair;
 pub mod imported;
 pub mod maya_ascii;
@@ -11,8 +10,7 @@ pub mod ply;
 pub mod scene_file;
 pub mod usd;
 
-pub use error::LoadError;
-
+use crate::error::LoadError;
 use crate::geometry::TriangleMesh;
 use std::path::Path;
 

@@ -14,7 +14,7 @@ use std::path::Path;
 
 use glam::Vec3;
 
-use super::error::LoadError;
+use crate::error::LoadError;
 use crate::geometry::TriangleMesh;
 
 /// Reads an OBJ file into a single validated triangle mesh.

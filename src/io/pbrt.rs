@@ -35,7 +35,7 @@
 //! the same scale.
 
 use super::imported::Imported;
-use super::LoadError;
+use crate::error::LoadError;
 use crate::geometry::curve::{cubic_point, CubicBasis};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::Light;

@@ -25,8 +25,8 @@ use ply_rs_bw::ply::{
     BeginList, ElementDef, Encoding, Header, PropertyAccess, PropertyAccessResult, PropertyType, ScalarType,
 };
 
-use super::error::LoadError;
 use super::obj::check_mesh;
+use crate::error::LoadError;
 use crate::geometry::TriangleMesh;
 
 /// Pairs of names under which the two texture coordinates appear in the wild.

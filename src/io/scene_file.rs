@@ -12,11 +12,11 @@ use crate::hair_system::ramp::RampValue;
 use crate::hair_system::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
 use crate::scene::{
-    Adaptive, CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, Integrator,
-    IrradianceCacheSettings, MeshEntry, MeshSource, RenderSettings,
+    CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
 };
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use crate::shading::{tube::Tube, Material};
+use crate::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
 use glam::{Affine3A, Quat, Vec3};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};

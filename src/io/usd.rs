@@ -26,8 +26,8 @@
 //! triangle `Mesh`es, which this module reads back unchanged.
 
 use super::imported::Imported;
-use super::LoadError;
 use crate::accel::Shape;
+use crate::error::LoadError;
 use crate::geometry::curve::{Blend, CubicBasis};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::Light;

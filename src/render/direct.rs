@@ -8,8 +8,8 @@ use crate::geometry::StrandPoint;
 use crate::light::{Light, LightSample};
 use crate::math::rng::PixelSampler;
 use crate::math::{offset_origin, Color, Ray, RayCone, RayMask, PACKET};
-use crate::scene::World;
 use crate::shading::{Material, ShadingPoint};
+use crate::world::World;
 use glam::Vec3;
 use smallvec::SmallVec;
 
@@ -686,17 +686,13 @@ pub(super) fn departure(surface: &Surface, hit: &Hit, dir: Vec3, tube: bool) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::prepare;
 
     /// The prediction only chooses the queries: a ray that meets semi-transparent coarse fur
     /// first renders bit for bit the same when it skips the closest-hit query, and one that
     /// meets opaque geometry first keeps its first hit.
     #[test]
     fn skipping_the_closest_hit_changes_no_semi_transparent_ray() {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lod_field.toml");
-        let mut desc = crate::io::scene_file::read_scene(&path).unwrap();
-        (desc.settings.width, desc.settings.height) = (96, 54);
-        let (world, _) = prepare(&desc).unwrap();
+        let world = crate::test_worlds::scene_file("lod_field.toml", (96, 54));
         let whitted = Whitted { see_emitters: true };
         let (mut semi, mut opaque) = (0, 0);
         for (x, y) in (0..54).flat_map(|y| (0..96).map(move |x| (x, y))) {

@@ -14,8 +14,8 @@ use super::direct::{departure, trace_hinted, trace_with, At, CameraHint, Counter
 use super::irradiance_cache::{cached_albedo, IrradianceCache};
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
-use crate::scene::World;
 use crate::shading::Material;
+use crate::world::World;
 
 /// The final-gather integrator's indirect term, with the irradiance cache when there is one.
 struct FinalGather<'a> {

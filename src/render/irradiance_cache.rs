@@ -26,8 +26,8 @@
 use super::direct::{departure, trace_with, At, Counters, Indirect, Whitted};
 use crate::math::rng::{hash_combine, PixelSampler};
 use crate::math::{frame, Color, Ray};
-use crate::scene::{IrradianceCacheSettings, World};
 use crate::shading::Material;
+use crate::world::{IrradianceCacheSettings, World};
 use glam::Vec3;
 use rayon::prelude::*;
 use rstar::primitives::{GeomWithData, Rectangle};

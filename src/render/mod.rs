@@ -18,7 +18,7 @@ use crate::accel::Hit;
 use crate::film::{Film, Pixel};
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray, PACKET};
-use crate::scene::{Integrator, World};
+use crate::world::{Integrator, World};
 use glam::Vec3;
 use std::time::Duration;
 
@@ -194,7 +194,6 @@ fn render_pixel(
 mod tests {
     use super::*;
     use crate::accel::lod::LodParams;
-    use crate::scene::prepare;
 
     /// A pixel traced with packets (its camera rays, then its shadow rays light by light)
     /// gets the colour, bit for bit, of its samples traced one by one with every shadow ray
@@ -203,10 +202,7 @@ mod tests {
     #[test]
     fn packets_render_pixels_as_single_rays_do() {
         for lod in [None, Some(LodParams::default())] {
-            let mut desc = crate::demo::description(3000, 1);
-            (desc.settings.width, desc.settings.height, desc.settings.spp) = (48, 36, 8);
-            desc.hair[0].lod = lod;
-            let (world, _) = prepare(&desc).unwrap();
+            let world = crate::test_worlds::demo(3000, 1, (48, 36, 8), lod);
             assert!(!world.accel.has_transparency());
             let (mut hair, mut shadowed) = (0, 0);
             for (x, y) in (0..36).flat_map(|y| (0..48).map(move |x| (x, y))) {

@@ -18,7 +18,7 @@ use crate::accel::{Hit, LayerHit, NEGLIGIBLE_TRANSMITTANCE};
 use crate::light::Light;
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
-use crate::scene::World;
+use crate::world::World;
 
 /// Veach's power heuristic (beta = 2) for one sample of each of two strategies.
 fn power_heuristic(pdf: f32, other: f32) -> f32 {

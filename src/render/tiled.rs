@@ -4,7 +4,7 @@
 
 use super::{render_pixel, Counters, IrradianceCache, PixelShadows, Progress, RenderStats, TILE};
 use crate::film::{Film, Region};
-use crate::scene::{Integrator, World};
+use crate::world::{Integrator, World};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;

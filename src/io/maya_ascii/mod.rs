@@ -22,7 +22,7 @@
 //!   mesh, local X along the surface normal and Y along the U tangent.
 //! - **FurDescription**: its attributes (node defaults for those the file omits) become a
 //!   fur description grown on each mesh it is attached to (through a `FurFeedback`), see
-//!   [`fur`].
+//!   [`fur_nodes`].
 //! - **camera**: the first renderable perspective camera other than the default `persp`
 //!   (else `persp`), field of view from focal length (`.fl`), film aperture (`.cap`) and
 //!   film fit (`.ff`); image size from `defaultResolution`.
@@ -37,10 +37,12 @@ pub mod parse;
 
 use self::parse::{Face, Graph, Value};
 use super::imported::Imported;
-use super::LoadError;
+use crate::error::LoadError;
 use crate::geometry::curve::Nurbs;
 use crate::geometry::{StrandSet, TriangleMesh};
-use crate::hair_system::{follicles::follicles_at_uvs, Guides, HairColors, HairSystem, Interp, NoiseMethod, Ramp, RampKey};
+use crate::hair_system::{
+    follicles::follicles_at_uvs, Guides, HairColors, HairSystem, Interp, NoiseMethod, Ramp, RampKey,
+};
 use crate::light::Light;
 use crate::scene::{CameraDesc, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource};
 use crate::shading::Material;

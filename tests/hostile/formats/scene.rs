@@ -22,7 +22,7 @@ pub fn check(bytes: &[u8]) -> bool {
         // Either a camera or a clear error; never a panic.
         let _ = tress::camera::Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height);
         // Reads only headers of the files the scene names (which mostly do not exist here).
-        let _ = tress::scene::estimate_memory(&desc);
+        let _ = tress::prepare::estimate_memory(&desc);
         accepted = true;
     }
     accepted

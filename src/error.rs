@@ -1,10 +1,13 @@
-//! The error type shared by every file loader and writer in [`crate::io`].
+//! The errors of reading files and preparing scenes: [`LoadError`], shared by every file
+//! loader and writer in [`crate::io`], and [`PrepareError`], why a description cannot
+//! become a world.
 //!
 //! Each error carries the path of the file involved, so a message printed on its own (for
 //! example at the top of a failed render) still tells the user which of the scene's many
 //! files to look at. Messages are lowercase fragments in the usual Rust style, e.g.
 //! `hair/curly.hair: header says 1000 points but the file holds only 812`.
 
+use crate::camera::CameraError;
 use std::path::{Path, PathBuf};
 
 /// Why a geometry file could not be read (or written).
@@ -64,6 +67,20 @@ impl LoadError {
             LoadError::Io { path, .. } | LoadError::Format { path, .. } | LoadError::Invalid { path, .. } => path,
         }
     }
+}
+
+/// Why a description cannot be prepared.
+#[derive(Debug, thiserror::Error)]
+pub enum PrepareError {
+    /// A geometry file could not be loaded.
+    #[error(transparent)]
+    Load(#[from] LoadError),
+    /// The camera is ill-defined.
+    #[error("camera: {0}")]
+    Camera(#[from] CameraError),
+    /// A setting is out of range.
+    #[error("{0}")]
+    Invalid(String),
 }
 
 #[cfg(test)]

@@ -3,9 +3,10 @@
 //! slot's limit) is refused at once rather than after minutes of loading, or by the
 //! kernel's out-of-memory killer.
 
-use super::{Description, HairSource, MeshSource};
+use crate::error::LoadError;
 use crate::film::Pixel;
-use crate::io::{self, LoadError};
+use crate::io;
+use crate::scene::{Description, HairSource, MeshSource};
 use std::path::Path;
 
 /// Bytes of BVH per primitive: 64-byte nodes of four children whose leaves hold up to four
