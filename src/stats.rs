@@ -1,6 +1,8 @@
 //! Process statistics for render summaries.
 
-/// Peak resident memory of this process in bytes (Linux `VmHWM`), if known.
+/// Peak resident memory of this process in bytes (Linux `VmHWM`), if known. No well-kept
+/// crate reports the peak (rather than the current) resident size portably; elsewhere this
+/// is `None` and summaries leave the figure out.
 pub fn peak_memory_bytes() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
@@ -24,14 +26,8 @@ pub fn human_bytes(bytes: u64) -> String {
     }
 }
 
-/// CPU time consumed by this process so far (all threads).
+/// CPU time consumed by this process so far (all threads); zero where the platform
+/// cannot tell.
 pub fn process_cpu_time() -> std::time::Duration {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes a timespec through a valid pointer and has no other effect.
-    let ok = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) } == 0;
-    if ok {
-        std::time::Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
-    } else {
-        std::time::Duration::ZERO
-    }
+    cpu_time::ProcessTime::try_now().map(|t| t.as_duration()).unwrap_or_default()
 }

@@ -35,9 +35,10 @@
 
 use super::description::{ColorAttr, FurDescription, Scalar, MAX_DENSITY};
 use super::guides::{Attractors, GuideField};
-use super::maps::{perlin, Attributes, MapImage, Perlin, SurfacePoint};
+use super::maps::{Attributes, MapImage, SurfacePoint};
 use super::FurError;
 use crate::geometry::{StrandInfo, StrandSet, TriangleMesh};
+use crate::math::noise::{perlin, Perlin};
 use crate::math::rng::{hash_combine, GenRng};
 use crate::math::{frame, sampling, Color};
 use crate::shading::fur_tube::Fur;

@@ -19,6 +19,7 @@
 use super::description::{ColorAttr, FurDescription, MapSource, Scalar};
 use super::FurError;
 use crate::geometry::TriangleMesh;
+use crate::math::noise::{perlin, Perlin};
 use crate::math::rng::hash_combine;
 use crate::math::Color;
 use glam::Vec3;
@@ -193,17 +194,6 @@ fn load_map<'a>(
             Ok(Map::Vertex(values.clone()))
         }
     }
-}
-
-/// FastNoise Lite's Perlin noise at unit frequency: signed, about [-1, 1].
-pub type Perlin = fastnoise_lite::FastNoiseLite;
-
-/// A Perlin noise field seeded by `seed`, one lattice cell per unit.
-pub fn perlin(seed: u32) -> Perlin {
-    let mut n = Perlin::with_seed(seed as i32);
-    n.set_noise_type(Some(fastnoise_lite::NoiseType::Perlin));
-    n.set_frequency(Some(1.0));
-    n
 }
 
 /// Salt of the noise fields' seeds.

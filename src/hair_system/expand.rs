@@ -32,10 +32,10 @@
 use super::color::Jitter;
 use super::{Guides, HairSystem, NoiseMethod};
 use crate::geometry::{StrandInfo, StrandSet};
+use crate::math::noise::{perlin, Perlin};
 use crate::math::rng::{hash_combine, GenRng};
 use crate::math::{frame, sampling};
 use glam::{Quat, Vec3};
-use noise::{NoiseFn, Perlin};
 use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
 use std::f32::consts::TAU;
@@ -95,7 +95,7 @@ pub fn expand(system: &HairSystem, guides: &Guides, colors: HairColors, seed: u3
             system.hairs_per_clump
         ));
     }
-    let noise = Perlin::new(hash_combine(&[seed, 0x6e6f_6973]));
+    let noise = perlin(hash_combine(&[seed, 0x6e6f_6973]));
     let clumps: Vec<StrandSet> =
         (0..count as u32).into_par_iter().map(|g| expand_guide(system, guides, g, colors, seed, &noise)).collect();
     let mut out = StrandSet::new();
@@ -337,11 +337,11 @@ fn hair_point(
         p += sys.curl * displacement * (cos * u + sin * v);
     }
     if sys.noise > 0.0 {
-        let w = (s * sys.noise_frequency * sys.noise_frequency_w * NOISE_FEATURES) as f64;
-        let (nx, ny) = (noise_base[0] as f64, noise_base[1] as f64);
-        let n1 = noise.get([nx, ny, w]) as f32;
+        let w = s * sys.noise_frequency * sys.noise_frequency_w * NOISE_FEATURES;
+        let [nx, ny] = noise_base;
+        let n1 = noise.get_noise_3d(nx, ny, w);
         // A second lattice region, far from the first, for the other direction.
-        let n2 = noise.get([nx + 101.5, ny + 57.25, w + 33.75]) as f32;
+        let n2 = noise.get_noise_3d(nx + 101.5, ny + 57.25, w + 33.75);
         p += sys.noise * displacement * (n1 * u + n2 * v);
     }
     let width = 0.5 * sys.hair_width * sys.hair_width_scale.eval(s);

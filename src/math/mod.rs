@@ -1,5 +1,6 @@
-//! Vectors, rays, ray cones, frames, random numbers and sampling warps.
+//! Vectors, rays, ray cones, frames, random numbers, sampling warps and gradient noise.
 
+pub mod noise;
 mod ray;
 pub mod rng;
 pub mod sampling;
