@@ -8,14 +8,14 @@
 use std::path::Path;
 use std::time::Duration;
 use tress::fur::Scalar;
-use tress::io::scene_file::read_scene;
+use tress::io::scene_file::read;
 use tress::prepare::prepare;
 use tress::stats::process_cpu_time;
 use tress::world::Integrator;
 
 fn main() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/furry_pillow.toml");
-    let mut desc = read_scene(&path).expect("the shipped scene reads");
+    let mut desc = read(&path, None).expect("the shipped scene reads").0;
     desc.settings.width = 320;
     desc.settings.height = 240;
     desc.settings.spp = 4;

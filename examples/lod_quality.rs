@@ -119,7 +119,7 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let path = args.get(1).map_or("scenes/lod_field.toml", String::as_str);
     let ref_spp: u32 = args.get(2).map_or(256, |s| s.parse().expect("reference spp"));
-    let mut desc = tress::io::scene_file::read_scene(std::path::Path::new(path)).expect("scene file");
+    let mut desc = tress::io::scene_file::read(std::path::Path::new(path), None).expect("scene file").0;
     if let (Some(w), Some(h)) = (args.get(3), args.get(4)) {
         (desc.settings.width, desc.settings.height) = (w.parse().expect("width"), h.parse().expect("height"));
     }

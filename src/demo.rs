@@ -6,7 +6,7 @@ use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::Light;
 use crate::math::rng::GenRng;
 use crate::math::{sampling, Color};
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
+use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, DEFAULT_SKY_RADIANCE};
 use crate::shading::{tube::Tube, Material};
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
@@ -30,7 +30,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
         settings: RenderSettings::default(),
         lights: vec![
             Light::Distant { direction: Vec3::new(0.45, 0.8, 0.4).normalize(), irradiance: Color::splat(3.0) },
-            Light::Environment { radiance: Color::splat(0.15) },
+            Light::Environment { radiance: Color::splat(DEFAULT_SKY_RADIANCE) },
         ],
         meshes: vec![
             MeshEntry {
@@ -46,12 +46,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
         ],
         hair: vec![HairEntry {
             source: HairSource::Inline(hair),
-            material: Material::Tube(Tube {
-                ambient: diffuse,
-                diffuse,
-                specular: Color::splat(0.3),
-                specular_power: 40.0,
-            }),
+            material: Material::Tube(Tube { ambient: diffuse, diffuse, ..Tube::default() }),
             transform: Affine3A::IDENTITY,
             radius_scale: 1.0,
             file_colors: true,

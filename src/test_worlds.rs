@@ -18,7 +18,7 @@ pub(crate) fn demo(strands: u32, seed: u64, (width, height, spp): (u32, u32, u32
 /// The scene file `name` of the repository's `scenes/` directory at `width` x `height`.
 pub(crate) fn scene_file(name: &str, (width, height): (u32, u32)) -> World {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
-    let mut desc = crate::io::scene_file::read_scene(&path).unwrap();
+    let mut desc = crate::io::scene_file::read(&path, None).unwrap().0;
     (desc.settings.width, desc.settings.height) = (width, height);
     crate::prepare::prepare(&desc).unwrap().0
 }

@@ -92,14 +92,17 @@ pub enum Integrator {
     Path,
 }
 
-impl Integrator {
-    /// The integrator named `name` (`direct`, `final-gather` or `path`).
-    pub fn from_name(name: &str) -> Option<Integrator> {
+impl std::str::FromStr for Integrator {
+    type Err = String;
+
+    /// `direct`, `final-gather` (or `final_gather`) or `path`, as the command line and
+    /// scene files name integrators.
+    fn from_str(name: &str) -> Result<Integrator, String> {
         match name {
-            "direct" => Some(Integrator::Direct),
-            "final-gather" | "final_gather" => Some(Integrator::FinalGather),
-            "path" => Some(Integrator::Path),
-            _ => None,
+            "direct" => Ok(Integrator::Direct),
+            "final-gather" | "final_gather" => Ok(Integrator::FinalGather),
+            "path" => Ok(Integrator::Path),
+            _ => Err(format!("unknown integrator `{name}` (direct, final-gather or path)")),
         }
     }
 }

@@ -87,7 +87,7 @@ fn fur_export_writes_the_grown_fur_and_bad_fur_gives_clear_errors() {
     assert!(ok, "{stderr}");
     // Only the fur is written, not the scene's other strands; it reads back whole.
     let strands = tress::io::cem_hair::read_hair(&d.join("fur.hair")).unwrap();
-    let desc = tress::io::scene_file::read_scene(&d.join("fur.toml")).unwrap();
+    let desc = tress::io::scene_file::read(&d.join("fur.toml"), None).unwrap().0;
     let geometry = tress::prepare::load_geometry(&desc).unwrap();
     let grown = geometry.shapes.iter().find_map(|(s, m)| match (s, &geometry.materials[*m as usize]) {
         (tress::accel::Shape::Strands(s), tress::shading::Material::Fur(_)) => Some(s),

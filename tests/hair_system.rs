@@ -3,7 +3,7 @@
 
 use std::path::Path;
 use tress::film::Film;
-use tress::io::scene_file::parse_scene;
+use tress::io::scene_file::parse;
 use tress::math::rng::{hash_u32, unit_float};
 use tress::prepare::prepare;
 
@@ -32,7 +32,7 @@ noise = 2.0
 "#;
 
 fn render(threads: usize) -> Film {
-    let desc = parse_scene(SCENE, Path::new("inline.toml")).unwrap();
+    let desc = parse(SCENE, Path::new("inline.toml"), None).unwrap().0;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
     pool.install(|| {
         let (world, _) = prepare(&desc).unwrap();
@@ -95,7 +95,7 @@ clump_width = 0.0
 hair_width = 0.02
 diffuse_rand = 0.0
 "#;
-    let desc = parse_scene(text, &dir.path().join("scene.toml")).unwrap();
+    let desc = parse(text, &dir.path().join("scene.toml"), None).unwrap().0;
     let geometry = tress::prepare::load_geometry(&desc).unwrap();
     let Shape::Strands(hair) = &geometry.shapes[0].0 else { panic!("not strands") };
     assert_eq!(hair.strand_count(), 14);
@@ -110,7 +110,7 @@ diffuse_rand = 0.0
     assert_eq!(hair.strand_info.as_ref().unwrap().root_uv[0], [-1.0, -1.0]);
 
     // A missing guide file: an error naming it.
-    let desc = parse_scene(&text.replace("guides.hair", "missing.hair"), &dir.path().join("scene.toml")).unwrap();
+    let desc = parse(&text.replace("guides.hair", "missing.hair"), &dir.path().join("scene.toml"), None).unwrap().0;
     let e = tress::prepare::load_geometry(&desc).err().unwrap().to_string();
     assert!(e.contains("missing.hair"), "{e}");
 }

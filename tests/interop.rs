@@ -141,18 +141,18 @@ fn toml_scenes_import_other_formats() {
                 [[mesh]]\nshape = { type = \"sphere\" }\nmaterial = { type = \"diffuse\", color = [0.5, 0.5, 0.5] }\n\
                 [[import]]\nfile = \"grass.usda\"\ntransform = { translate = [0, 10, 0] }\n";
     std::fs::write(d.join("scene.toml"), toml).unwrap();
-    let (desc, _) = tress::io::scene_file::read_scene_with_warnings(&d.join("scene.toml")).unwrap();
+    let (desc, _) = tress::io::scene_file::read(&d.join("scene.toml"), None).unwrap();
     // The scene's own mesh stays first; the import adds a mesh and two strand sets, moved.
     assert_eq!((desc.meshes.len(), desc.hair.len(), desc.lights.len()), (2, 2, 1));
     assert_eq!(desc.meshes[1].transform.transform_point3(Vec3::ZERO), Vec3::new(0.0, 10.0, 0.0));
     let with_lights = toml.replace("translate = [0, 10, 0] }", "translate = [0, 10, 0] }\nlights = true");
     std::fs::write(d.join("lit.toml"), with_lights).unwrap();
-    let (desc, _) = tress::io::scene_file::read_scene_with_warnings(&d.join("lit.toml")).unwrap();
+    let (desc, _) = tress::io::scene_file::read(&d.join("lit.toml"), None).unwrap();
     assert_eq!(desc.lights.len(), 3);
     // A broken import names the scene entry and the imported file's line.
     std::fs::write(d.join("bad.ma"), "createNode mesh;\nsetAttr \".vt[0:1]\" 1 2;\n").unwrap();
     std::fs::write(d.join("bad.toml"), toml.replace("grass.usda", "bad.ma")).unwrap();
-    let e = tress::io::scene_file::read_scene(&d.join("bad.toml")).unwrap_err().to_string();
+    let e = tress::io::scene_file::read(&d.join("bad.toml"), None).unwrap_err().to_string();
     assert!(e.contains("import 1") && e.contains("bad.ma") && e.contains("line 2"), "{e}");
 }
 

@@ -12,7 +12,7 @@ use tress::scene::{Description, GuideSource};
 /// The benchmark scene at 240x135, 2 samples, a tenth of the follicles, `start = 1`.
 fn small_field() -> Description {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lod_field.toml");
-    let mut desc = tress::io::scene_file::read_scene(&path).unwrap();
+    let mut desc = tress::io::scene_file::read(&path, None).unwrap().0;
     (desc.settings.width, desc.settings.height, desc.settings.spp) = (240, 135, 2);
     for h in &mut desc.hair_systems {
         if let GuideSource::Follicles { params, .. } = &mut h.guides {

@@ -87,7 +87,7 @@ fn colours_from_strands_need_strands_with_colours() {
 #[test]
 fn example_scene_uses_the_physical_material_and_renders_the_same_on_any_thread_count() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/hairy_torus_closeup.toml");
-    let mut desc = tress::io::scene_file::read_scene(&path).unwrap();
+    let mut desc = tress::io::scene_file::read(&path, None).unwrap().0;
     assert!(matches!(desc.hair[0].material, Material::Physical(_)));
     desc.settings.width = 48;
     desc.settings.height = 36;

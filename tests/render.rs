@@ -89,7 +89,7 @@ seed = 3
 
 #[test]
 fn fur_matches_the_golden_image_whatever_the_thread_count() {
-    let desc = tress::io::scene_file::parse_scene(FUR_SCENE, Path::new("fur.toml")).unwrap();
+    let desc = tress::io::scene_file::parse(FUR_SCENE, Path::new("fur.toml"), None).unwrap().0;
     let render = |threads| {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
         pool.install(|| tress::render::render(&prepare(&desc).unwrap().0, None).0)

@@ -200,20 +200,11 @@ fn parse_on_off(s: &str) -> Result<bool, String> {
 }
 
 fn parse_integrator(s: &str) -> Result<tress::world::Integrator, String> {
-    tress::world::Integrator::from_name(s).ok_or_else(|| format!("`{s}` is not direct, final-gather or path"))
+    s.parse()
 }
 
 fn parse_filter(s: &str) -> Result<tress::film::PixelFilter, String> {
-    let f = match s.split_once(':') {
-        None if s == "box" => tress::film::PixelFilter::Box,
-        None if s == "gaussian" => tress::film::PixelFilter::gaussian(1.5),
-        Some(("gaussian", r)) => {
-            tress::film::PixelFilter::gaussian(r.parse().map_err(|_| format!("`{r}` is not a radius in pixels"))?)
-        }
-        _ => return Err(format!("`{s}` is not box, gaussian or gaussian:RADIUS")),
-    };
-    f.validate()?;
-    Ok(f)
+    s.parse()
 }
 
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
@@ -224,7 +215,7 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
             let (desc, warnings) = if tress::io::imported::is_imported(path) {
                 tress::io::imported::read_imported(path)?.into_description()
             } else {
-                tress::io::scene_file::read_scene_frame_with_warnings(path, o.frame)?
+                tress::io::scene_file::read(path, o.frame)?
             };
             for w in warnings {
                 eprintln!("warning: {}: {w}", path.display());

@@ -26,8 +26,11 @@ pub enum PixelFilter {
 }
 
 impl PixelFilter {
+    /// The Gaussian's radius when none is given, in pixels (pbrt-v4's default).
+    pub const GAUSSIAN_RADIUS: f32 = 1.5;
+
     /// The Gaussian of `radius` pixels with the usual `sigma = radius / 3` (pbrt-v4's
-    /// default: radius 1.5, sigma 0.5).
+    /// default: radius [`PixelFilter::GAUSSIAN_RADIUS`], sigma 0.5).
     pub fn gaussian(radius: f32) -> PixelFilter {
         PixelFilter::Gaussian { radius, sigma: radius / 3.0 }
     }
@@ -71,9 +74,38 @@ fn truncated_gaussian(u: f32, radius: f32, sigma: f32) -> f32 {
     (x as f32).clamp(-radius, radius)
 }
 
+impl std::str::FromStr for PixelFilter {
+    type Err = String;
+
+    /// `box`, `gaussian` (radius [`PixelFilter::GAUSSIAN_RADIUS`]) or `gaussian:RADIUS`,
+    /// as the command line and scene files name filters; the values are checked.
+    fn from_str(s: &str) -> Result<PixelFilter, String> {
+        let f = match s.split_once(':') {
+            None if s == "box" => PixelFilter::Box,
+            None if s == "gaussian" => PixelFilter::gaussian(PixelFilter::GAUSSIAN_RADIUS),
+            Some(("gaussian", r)) => {
+                PixelFilter::gaussian(r.parse().map_err(|_| format!("`{r}` is not a radius in pixels"))?)
+            }
+            _ => return Err(format!("unknown filter `{s}` (box, gaussian or gaussian:RADIUS)")),
+        };
+        f.validate()?;
+        Ok(f)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn filters_are_named_as_the_command_line_and_scene_files_name_them() {
+        assert_eq!("box".parse(), Ok(PixelFilter::Box));
+        assert_eq!("gaussian".parse(), Ok(PixelFilter::Gaussian { radius: 1.5, sigma: 0.5 }));
+        assert_eq!("gaussian:3".parse(), Ok(PixelFilter::Gaussian { radius: 3.0, sigma: 1.0 }));
+        for bad in ["gauss", "gaussian:x", "gaussian:100", "box:2"] {
+            assert!(bad.parse::<PixelFilter>().is_err(), "{bad}");
+        }
+    }
     use statrs::distribution::{Continuous, ContinuousCDF, Normal};
 
     #[test]

@@ -10,6 +10,7 @@ use crate::light::Light;
 use crate::math::Aabb;
 use crate::scene::{
     CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
+    DEFAULT_SKY_RADIANCE,
 };
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3, Vec3A};
@@ -138,7 +139,7 @@ impl Imported {
             let direction = (camera.eye - camera.target + camera.up * 0.5 * (camera.eye - camera.target).length())
                 .normalize_or(Vec3::Y);
             self.lights.push(Light::Distant { direction, irradiance: Vec3::splat(std::f32::consts::PI) });
-            self.lights.push(Light::Environment { radiance: Vec3::splat(0.15) });
+            self.lights.push(Light::Environment { radiance: Vec3::splat(DEFAULT_SKY_RADIANCE) });
         }
         let desc = Description {
             camera,

@@ -549,7 +549,7 @@ fn read_curves(c: &BasisCurves, transform: Affine3A, warnings: &mut Vec<String>)
         set.colors = Some(point_colors);
     }
     let d = constant_color.unwrap_or(crate::hair_system::HairSystem::default().hair_color);
-    let material = Material::Tube(Tube { ambient: d, diffuse: d, specular: Vec3::splat(0.3), specular_power: 40.0 });
+    let material = Material::Tube(Tube { ambient: d, diffuse: d, ..Tube::default() });
     Ok(Some(HairEntry {
         source: HairSource::Inline(set),
         material,

@@ -142,7 +142,7 @@ mod tests {
     #[test]
     fn files_are_estimated_from_their_headers() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-        let desc = io::scene_file::read_scene(&root.join("scenes/lights_and_glass.toml")).unwrap();
+        let desc = io::scene_file::read(&root.join("scenes/lights_and_glass.toml"), None).unwrap().0;
         let e = estimate_memory(&desc).unwrap();
         // 3000 strands of the hair file dominate: 677 kB of file, more in memory with BVH.
         let counts = io::cem_hair::read_hair_counts(&root.join("scenes/hairy_torus.hair")).unwrap();

@@ -67,13 +67,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         mesh.transform(&m.transform);
         lods.push(None);
         let dropped = mesh.remove_unusable_triangles();
-        if dropped > 0 {
-            warnings.push(format!(
-                "mesh {}: skipped {dropped} triangles with corners not finite or beyond ±{:e}",
-                i + 1,
-                crate::geometry::MAX_COORDINATE
-            ));
-        }
+        warnings.extend(skipped(("mesh", i), dropped, "triangles with corners"));
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
         materials.push(m.material.clone());
     }
@@ -104,13 +98,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         }
         lods.push(h.lod);
         let dropped = strands.remove_unusable_strands();
-        if dropped > 0 {
-            warnings.push(format!(
-                "hair {}: skipped {dropped} strands with coordinates or radii negative, not finite or beyond ±{:e}",
-                i + 1,
-                crate::geometry::MAX_COORDINATE
-            ));
-        }
+        warnings.extend(skipped(("hair", i), dropped, "strands with coordinates or radii negative,"));
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
@@ -172,6 +160,19 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         }
     }
     Ok(LoadedGeometry { shapes, materials, lods, warnings })
+}
+
+/// The warning for `dropped` primitives of entry `index` (0-based) of kind `entry` whose
+/// `what` (a plural noun and what was checked) were not finite or beyond
+/// [`crate::geometry::MAX_COORDINATE`]; `None` when nothing was dropped.
+fn skipped((entry, index): (&str, usize), dropped: usize, what: &str) -> Option<String> {
+    (dropped > 0).then(|| {
+        format!(
+            "{entry} {}: skipped {dropped} {what} not finite or beyond ±{:e}",
+            index + 1,
+            crate::geometry::MAX_COORDINATE
+        )
+    })
 }
 
 /// Loads geometry, applies transforms and builds the BVHs.
@@ -310,7 +311,7 @@ seed = 3
 
     #[test]
     fn strands_in_spatial_order_give_the_hits_strand_ids_and_image_of_file_order() {
-        let desc = crate::io::scene_file::parse_scene(STRAND_SCENE, std::path::Path::new("order.toml")).unwrap();
+        let desc = crate::io::scene_file::parse(STRAND_SCENE, std::path::Path::new("order.toml"), None).unwrap().0;
         let (world, _) = prepare(&desc).unwrap();
         // The same scene with its strands in the file's order.
         let geometry = load_geometry(&desc).unwrap();

@@ -12,6 +12,10 @@ use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
 use std::path::PathBuf;
 
+/// Radiance of the uniform sky lighting a scene that brings no environment of its own
+/// (the demo, an imported scene without lights), so shadowed sides are not black.
+pub const DEFAULT_SKY_RADIANCE: f32 = 0.15;
+
 /// Camera placement.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CameraDesc {

@@ -84,6 +84,15 @@ pub struct SpecularRay {
 }
 
 impl Material {
+    /// The default colour of diffuse and Phong surfaces: mid grey.
+    pub const DEFAULT_COLOR: Color = Color::splat(0.5);
+    /// The default specular colour of a Phong surface.
+    pub const DEFAULT_PHONG_SPECULAR: Color = Color::splat(0.2);
+    /// The default Phong exponent.
+    pub const DEFAULT_PHONG_EXPONENT: f32 = 20.0;
+    /// The default index of refraction of glass (crown glass, about 1.5).
+    pub const DEFAULT_IOR: f32 = 1.5;
+
     /// Radiance towards `wo` per unit of light from `wi` (both unit, pointing away from
     /// the point). Zero for purely specular materials.
     pub fn response(&self, sp: &ShadingPoint, wo: Vec3, wi: Vec3) -> Color {

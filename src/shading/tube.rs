@@ -19,6 +19,18 @@ pub struct Tube {
     pub specular_power: f32,
 }
 
+impl Default for Tube {
+    /// A mid-grey strand (ambient as diffuse) with a soft white highlight.
+    fn default() -> Self {
+        Tube {
+            ambient: Color::splat(0.5),
+            diffuse: Color::splat(0.5),
+            specular: Color::splat(0.3),
+            specular_power: 40.0,
+        }
+    }
+}
+
 impl Tube {
     /// Response to unit light from `wi` seen from `wo`, on a strand with unit tangent `t`.
     ///

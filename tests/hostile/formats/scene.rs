@@ -13,7 +13,7 @@ pub fn check(bytes: &[u8]) -> bool {
     let mut accepted = false;
     let path = Path::new("scenes/fuzz.toml");
     for frame in [None, Some(7)] {
-        let Ok((desc, _)) = tress::io::scene_file::parse_scene_frame(text, path, frame) else { continue };
+        let Ok((desc, _)) = tress::io::scene_file::parse(text, path, frame) else { continue };
         if let Err(e) = desc.validate() {
             panic!("accepted a scene that does not validate: {e}");
         }

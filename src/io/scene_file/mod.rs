@@ -1,0 +1,205 @@
+//! Scene files in TOML (documented in `docs/scene-format.md`), read into a
+//! [`Description`] by [`read`] (or [`parse`] for text in memory). Unknown keys and wrong
+//! types are errors naming the file, line and key.
+//!
+//! - [`schema`]: what each table may hold (serde), defaults from the domain types.
+//! - [`convert`]: tables into lights, materials, transforms, hair systems, fur.
+//! - [`animation`]: camera keys and `#` frame patterns at one frame.
+//!
+//! `[[import]]` entries bring in other tools' scenes through [`crate::io::read_imported`].
+
+mod animation;
+mod convert;
+mod schema;
+
+use crate::scene::{CameraDesc, Description, FurEntry, HairEntry, HairSource, MeshEntry, MeshSource};
+use crate::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
+use animation::{at_frame, camera_at, has_pattern};
+use convert::{fur, hair_system, light, material, procedural, transform};
+use schema::{IrradianceCacheToml, LodToml, SceneToml};
+use std::path::{Path, PathBuf};
+
+/// Why a scene file cannot be read.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneFileError {
+    /// The file cannot be read.
+    #[error("{path}: {source}")]
+    Io {
+        /// The scene file.
+        path: PathBuf,
+        /// What failed.
+        source: std::io::Error,
+    },
+    /// The TOML is malformed or does not match the scene format.
+    #[error("{path}: {message}")]
+    Syntax {
+        /// The scene file.
+        path: PathBuf,
+        /// The parser's message, with line and column.
+        message: String,
+    },
+    /// A value is out of range.
+    #[error("{path}: {message}")]
+    Invalid {
+        /// The scene file.
+        path: PathBuf,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+/// Reads the scene file `path` at animation frame `frame` (see [`parse`]). Relative paths
+/// inside it are relative to its directory. Returns the warnings of its `[[import]]`s
+/// (what the imported files hold that tress skipped) with it.
+pub fn read(path: &Path, frame: Option<u32>) -> Result<(Description, Vec<String>), SceneFileError> {
+    let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
+    parse(&text, path, frame)
+}
+
+/// Parses scene text at animation frame `frame`; `path` names the file in messages and
+/// anchors relative paths. At a frame the camera keys are interpolated at it
+/// and every run of `#` in a file name becomes the frame number, zero-padded to the run's
+/// length (`hair.####.hair` at frame 7 is `hair.0007.hair`). A scene with keys or
+/// patterns needs a frame; a frame given to a scene with neither changes nothing.
+/// Returns the warnings of the scene's `[[import]]`s with it.
+pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description, Vec<String>), SceneFileError> {
+    let syntax = |e: toml::de::Error| SceneFileError::Syntax { path: path.to_owned(), message: e.to_string() };
+    let invalid = |message: String| SceneFileError::Invalid { path: path.to_owned(), message };
+    let scene: SceneToml = toml::from_str(text).map_err(syntax)?;
+    let base = path.parent().unwrap_or(Path::new(""));
+    let finite = |name: &str, v: &[f32]| -> Result<(), SceneFileError> {
+        match v.iter().all(|x| x.is_finite()) {
+            true => Ok(()),
+            false => Err(invalid(format!("{name} has a value that is not a finite number"))),
+        }
+    };
+    let c = &scene.camera;
+    let animated = !c.key.is_empty()
+        || scene
+            .mesh
+            .iter()
+            .filter_map(|m| m.file.as_ref())
+            .chain(scene.hair.iter().map(|h| &h.file))
+            .any(|f| has_pattern(f));
+    let frame = match (frame, animated) {
+        (None, true) => {
+            return Err(invalid(
+                "the scene is animated (camera keys or `#` frame patterns in file names): give a frame (--frame F)"
+                    .into(),
+            ))
+        }
+        (frame, _) => frame.unwrap_or(0),
+    };
+    let (eye, target, vfov) = camera_at(c, frame).map_err(|m| invalid(format!("camera: {m}")))?;
+    finite("camera", &[eye, target, c.up, [vfov, 0.0, 0.0]].concat())?;
+    let r = &scene.render;
+    let defaults = RenderSettings::default();
+    let integrator = match r.integrator.as_deref() {
+        None => defaults.integrator,
+        Some(name) => name.parse::<Integrator>().map_err(|m| invalid(format!("render: {m}")))?,
+    };
+    let filter = match &r.filter {
+        None => defaults.filter,
+        Some(f) => f.filter().map_err(|m| invalid(format!("render: {m}")))?,
+    };
+    let settings = RenderSettings {
+        filter,
+        width: r.resolution[0],
+        height: r.resolution[1],
+        spp: r.spp,
+        seed: r.seed,
+        max_depth: r.max_depth,
+        threads: r.threads,
+        lod: r.lod,
+        integrator,
+        transparency_layers: r.transparency_layers,
+        gather_rays: r.gather_rays,
+        adaptive: r.adaptive.as_ref().map(|a| Adaptive {
+            min_spp: a.min_spp,
+            max_spp: a.max_spp,
+            threshold: a.threshold,
+        }),
+        irradiance_cache: match &r.irradiance_cache {
+            None | Some(IrradianceCacheToml::On(false)) => None,
+            Some(IrradianceCacheToml::On(true)) => Some(IrradianceCacheSettings::default()),
+            Some(IrradianceCacheToml::With(t)) => {
+                let d = IrradianceCacheSettings::default();
+                Some(IrradianceCacheSettings {
+                    accuracy: t.accuracy.unwrap_or(d.accuracy),
+                    spacing: t.spacing.unwrap_or(d.spacing),
+                    rays: t.rays.unwrap_or(d.rays),
+                })
+            }
+        },
+    };
+    let mut lights = Vec::new();
+    for (i, l) in scene.light.iter().enumerate() {
+        lights.push(light(l).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
+    }
+    let mut meshes = Vec::new();
+    for (i, m) in scene.mesh.iter().enumerate() {
+        let what = |m: String| invalid(format!("mesh {}: {m}", i + 1));
+        let source = match (&m.file, &m.shape) {
+            (Some(file), None) => MeshSource::File(base.join(at_frame(file, frame))),
+            (None, Some(shape)) => MeshSource::Inline(procedural(shape).map_err(what)?),
+            _ => return Err(what("give exactly one of `file` and `shape`".into())),
+        };
+        meshes.push(MeshEntry {
+            source,
+            material: material(&m.material).map_err(what)?,
+            transform: transform(&m.transform).map_err(what)?,
+        });
+    }
+    let mut hair = Vec::new();
+    for (i, h) in scene.hair.iter().enumerate() {
+        let what = |m: String| invalid(format!("hair {}: {m}", i + 1));
+        hair.push(HairEntry {
+            source: HairSource::File(base.join(at_frame(&h.file, frame))),
+            material: material(&h.material).map_err(what)?,
+            transform: transform(&h.transform).map_err(what)?,
+            radius_scale: h.radius_scale,
+            file_colors: h.file_colors,
+            lod: h.lod.as_ref().map(LodToml::params).transpose().map_err(what)?,
+        });
+    }
+    let mut hair_systems = Vec::new();
+    for (i, h) in scene.hair_system.iter().enumerate() {
+        let entry = hair_system(h, base, meshes.len()).map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
+        hair_systems.push(entry);
+    }
+    let mut furs = Vec::new();
+    for (i, f) in scene.fur.iter().enumerate() {
+        furs.push(fur(f, meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?);
+    }
+    // Imported entries come after the file's own, so `[[mesh]]` numbers stay as written.
+    let mut warnings = Vec::new();
+    for (i, imp) in scene.import.iter().enumerate() {
+        let what = |m: String| invalid(format!("import {}: {m}", i + 1));
+        let file = base.join(&imp.file);
+        let mut imported = crate::io::imported::read_imported(&file).map_err(|e| what(e.to_string()))?;
+        imported.transform(&transform(&imp.transform).map_err(what)?);
+        warnings.extend(imported.warnings.iter().map(|w| format!("{}: {w}", file.display())));
+        if imp.lights {
+            lights.append(&mut imported.lights);
+        }
+        // Imported fur grows on imported meshes: their numbers move by the meshes before.
+        furs.extend(imported.fur.drain(..).map(|f| FurEntry { mesh: f.mesh + meshes.len(), ..f }));
+        meshes.append(&mut imported.meshes);
+        hair.append(&mut imported.hair);
+        hair_systems.append(&mut imported.hair_systems);
+    }
+    let desc = Description {
+        camera: CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov },
+        settings,
+        lights,
+        meshes,
+        hair,
+        hair_systems,
+        fur: furs,
+    };
+    desc.validate().map_err(|e| invalid(e.to_string()))?;
+    Ok((desc, warnings))
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,547 @@
+//! The scene file's schema: what each TOML table may hold, as serde reads it. Defaults
+//! come from the domain types' own (`Default` on settings, materials, lights' parameters),
+//! never restated here.
+
+use crate::scene::CameraDesc;
+use crate::shading::hair_bsdf::HairParams;
+use crate::shading::{tube::Tube, Material};
+use crate::world::RenderSettings;
+use serde::Deserialize;
+use std::path::PathBuf;
+
+/// Three floats: a point, a direction or a colour.
+pub(super) type V3 = [f32; 3];
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SceneToml {
+    pub(super) camera: CameraToml,
+    #[serde(default)]
+    pub(super) render: RenderToml,
+    #[serde(default)]
+    pub(super) light: Vec<LightToml>,
+    #[serde(default)]
+    pub(super) mesh: Vec<MeshToml>,
+    #[serde(default)]
+    pub(super) hair: Vec<HairToml>,
+    #[serde(default)]
+    pub(super) hair_system: Vec<HairSystemToml>,
+    #[serde(default)]
+    pub(super) fur: Vec<FurToml>,
+    #[serde(default)]
+    pub(super) import: Vec<ImportToml>,
+}
+
+/// An `[[import]]` entry: the meshes, hair and hair systems of a Maya ASCII, pbrt-v4 or
+/// USD text file, optionally moved, optionally with its lights.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ImportToml {
+    pub(super) file: PathBuf,
+    #[serde(default)]
+    pub(super) transform: TransformToml,
+    #[serde(default)]
+    pub(super) lights: bool,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CameraToml {
+    /// Required unless there are keys.
+    pub(super) eye: Option<V3>,
+    /// Required unless there are keys.
+    pub(super) target: Option<V3>,
+    #[serde(default = "default_up")]
+    pub(super) up: V3,
+    #[serde(default = "default_vfov")]
+    pub(super) vfov: f32,
+    /// A camera path: keys at frames, interpolated linearly between them.
+    #[serde(default)]
+    pub(super) key: Vec<CameraKeyToml>,
+}
+fn default_up() -> V3 {
+    CameraDesc::default().up.into()
+}
+fn default_vfov() -> f32 {
+    CameraDesc::default().vfov
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CameraKeyToml {
+    pub(super) frame: u32,
+    pub(super) eye: V3,
+    pub(super) target: V3,
+    /// Defaults to the camera's `vfov`.
+    pub(super) vfov: Option<f32>,
+}
+
+/// `[render]`: every key optional, defaults from [`RenderSettings::default`].
+#[derive(Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub(super) struct RenderToml {
+    pub(super) resolution: [u32; 2],
+    pub(super) spp: u32,
+    pub(super) seed: u32,
+    pub(super) max_depth: u32,
+    pub(super) threads: usize,
+    pub(super) lod: bool,
+    /// `direct`, `final-gather` or `path`.
+    pub(super) integrator: Option<String>,
+    pub(super) transparency_layers: u32,
+    pub(super) gather_rays: u32,
+    pub(super) adaptive: Option<AdaptiveToml>,
+    pub(super) irradiance_cache: Option<IrradianceCacheToml>,
+    pub(super) filter: Option<FilterToml>,
+}
+
+impl Default for RenderToml {
+    fn default() -> Self {
+        let d = RenderSettings::default();
+        RenderToml {
+            resolution: [d.width, d.height],
+            spp: d.spp,
+            seed: d.seed,
+            max_depth: d.max_depth,
+            threads: d.threads,
+            lod: d.lod,
+            integrator: None,
+            transparency_layers: d.transparency_layers,
+            gather_rays: d.gather_rays,
+            adaptive: None,
+            irradiance_cache: None,
+            filter: None,
+        }
+    }
+}
+
+/// `filter = "box"`, `filter = "gaussian"` or `filter = { type = "gaussian", radius = 1.5,
+/// sigma = 0.5 }` (radius and sigma optional).
+#[derive(Deserialize)]
+#[serde(untagged)]
+pub(super) enum FilterToml {
+    Name(String),
+    With(FilterTable),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FilterTable {
+    #[serde(rename = "type")]
+    pub(super) kind: String,
+    pub(super) radius: Option<f32>,
+    pub(super) sigma: Option<f32>,
+}
+
+/// `irradiance_cache = true`, or `irradiance_cache = { accuracy = 0.3, spacing = 4, rays = 256 }`
+/// (each key optional).
+#[derive(Deserialize)]
+#[serde(untagged)]
+pub(super) enum IrradianceCacheToml {
+    On(bool),
+    With(IrradianceCacheTable),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct IrradianceCacheTable {
+    pub(super) accuracy: Option<f32>,
+    pub(super) spacing: Option<u32>,
+    pub(super) rays: Option<u32>,
+}
+
+/// `adaptive = { min_spp = 4, max_spp = 64, threshold = 0.05 }`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct AdaptiveToml {
+    pub(super) min_spp: u32,
+    pub(super) max_spp: u32,
+    #[serde(default = "default_threshold")]
+    pub(super) threshold: f32,
+}
+
+fn default_threshold() -> f32 {
+    0.05
+}
+
+#[derive(Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+pub(super) enum LightToml {
+    Distant {
+        direction: V3,
+        irradiance: V3,
+        /// Degrees; 0 is a sharp light.
+        #[serde(default)]
+        angular_diameter: f32,
+    },
+    Point {
+        position: V3,
+        intensity: V3,
+    },
+    Spot {
+        position: V3,
+        target: V3,
+        intensity: V3,
+        #[serde(default = "default_inner")]
+        inner_angle: f32,
+        #[serde(default = "default_outer")]
+        outer_angle: f32,
+    },
+    Quad {
+        corner: V3,
+        edge_u: V3,
+        edge_v: V3,
+        radiance: V3,
+    },
+    Sphere {
+        center: V3,
+        radius: f32,
+        radiance: V3,
+    },
+    Environment {
+        radiance: V3,
+    },
+}
+
+fn default_inner() -> f32 {
+    20.0
+}
+
+fn default_outer() -> f32 {
+    30.0
+}
+
+/// A material: every key optional, defaults from the shading models' own
+/// ([`Material::DEFAULT_COLOR`], [`Tube::default`], [`HairParams::default`], ...).
+#[derive(Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+pub(super) enum MaterialToml {
+    Diffuse {
+        #[serde(default = "default_color")]
+        color: V3,
+    },
+    Phong {
+        #[serde(default = "default_color")]
+        diffuse: V3,
+        #[serde(default = "default_phong_specular")]
+        specular: V3,
+        #[serde(default = "default_phong_exponent")]
+        exponent: f32,
+    },
+    Mirror {
+        #[serde(default = "one3")]
+        color: V3,
+    },
+    Glass {
+        #[serde(default = "default_ior")]
+        ior: f32,
+        #[serde(default = "one3")]
+        color: V3,
+    },
+    Tube {
+        /// Defaults to the diffuse colour.
+        ambient: Option<V3>,
+        #[serde(default = "default_tube_diffuse")]
+        diffuse: V3,
+        #[serde(default = "default_tube_specular")]
+        specular: V3,
+        #[serde(default = "default_specular_power")]
+        specular_power: f32,
+    },
+    /// The physical hair BSDF; at most one of melanin, `color` and `from_file` (none:
+    /// the default melanin).
+    Physical {
+        eumelanin: Option<f32>,
+        pheomelanin: Option<f32>,
+        color: Option<V3>,
+        #[serde(default)]
+        from_file: bool,
+        #[serde(default = "default_beta_m")]
+        beta_m: f32,
+        #[serde(default = "default_beta_n")]
+        beta_n: f32,
+        /// Degrees.
+        #[serde(default = "default_alpha")]
+        alpha: f32,
+        #[serde(default = "default_hair_eta")]
+        eta: f32,
+    },
+}
+fn default_color() -> V3 {
+    Material::DEFAULT_COLOR.into()
+}
+fn default_phong_specular() -> V3 {
+    Material::DEFAULT_PHONG_SPECULAR.into()
+}
+fn default_phong_exponent() -> f32 {
+    Material::DEFAULT_PHONG_EXPONENT
+}
+fn one3() -> V3 {
+    [1.0; 3]
+}
+fn default_ior() -> f32 {
+    Material::DEFAULT_IOR
+}
+fn default_tube_diffuse() -> V3 {
+    Tube::default().diffuse.into()
+}
+fn default_tube_specular() -> V3 {
+    Tube::default().specular.into()
+}
+fn default_specular_power() -> f32 {
+    Tube::default().specular_power
+}
+fn default_beta_m() -> f32 {
+    HairParams::default().beta_m
+}
+fn default_beta_n() -> f32 {
+    HairParams::default().beta_n
+}
+fn default_alpha() -> f32 {
+    HairParams::default().alpha_degrees
+}
+fn default_hair_eta() -> f32 {
+    HairParams::default().eta
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub(super) struct TransformToml {
+    #[serde(default)]
+    pub(super) translate: Option<V3>,
+    /// Axis (x, y, z) and angle in degrees.
+    #[serde(default)]
+    pub(super) rotate: Option<[f32; 4]>,
+    #[serde(default)]
+    pub(super) scale: Option<ScaleToml>,
+}
+
+#[derive(Deserialize)]
+#[serde(untagged)]
+pub(super) enum ScaleToml {
+    Uniform(f32),
+    Axes(V3),
+}
+
+#[derive(Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+pub(super) enum ShapeToml {
+    Torus {
+        #[serde(default = "default_major")]
+        major: f32,
+        #[serde(default = "default_minor")]
+        minor: f32,
+    },
+    Sphere {
+        #[serde(default = "default_radius")]
+        radius: f32,
+    },
+    Plane {
+        #[serde(default = "default_size")]
+        size: f32,
+    },
+    Pillow {
+        #[serde(default = "default_size")]
+        size: f32,
+        #[serde(default = "default_thickness")]
+        thickness: f32,
+    },
+}
+
+fn default_thickness() -> f32 {
+    0.3
+}
+
+fn default_major() -> f32 {
+    1.0
+}
+
+fn default_minor() -> f32 {
+    0.35
+}
+
+fn default_radius() -> f32 {
+    1.0
+}
+
+fn default_size() -> f32 {
+    1.0
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct MeshToml {
+    pub(super) file: Option<PathBuf>,
+    pub(super) shape: Option<ShapeToml>,
+    pub(super) material: MaterialToml,
+    #[serde(default)]
+    pub(super) transform: TransformToml,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct HairToml {
+    pub(super) file: PathBuf,
+    pub(super) material: MaterialToml,
+    #[serde(default)]
+    pub(super) transform: TransformToml,
+    #[serde(default = "default_radius_scale")]
+    pub(super) radius_scale: f32,
+    #[serde(default = "default_true")]
+    pub(super) file_colors: bool,
+    pub(super) lod: Option<LodToml>,
+}
+
+/// `lod = { decimation = 1.5, levels = 8, compensation = 0.8, contrast = false }`, every
+/// key optional ([`LodParams::default`]).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LodToml {
+    pub(super) decimation: Option<f32>,
+    pub(super) levels: Option<u32>,
+    pub(super) compensation: Option<f32>,
+    pub(super) contrast: Option<bool>,
+    pub(super) start: Option<f32>,
+    pub(super) spread: Option<f32>,
+    pub(super) simplify: Option<u32>,
+    pub(super) smooth: Option<bool>,
+}
+
+fn default_radius_scale() -> f32 {
+    1.0
+}
+
+fn default_true() -> bool {
+    true
+}
+
+/// A `[[hair_system]]` entry: guides, material, seed and Maya's hair-system attributes
+/// (every attribute optional, defaulting to [`HairSystem::default`]).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct HairSystemToml {
+    pub(super) file: Option<PathBuf>,
+    pub(super) follicles: Option<FolliclesToml>,
+    pub(super) material: Option<MaterialToml>,
+    pub(super) colors: Option<String>,
+    #[serde(default)]
+    pub(super) seed: u32,
+    pub(super) transform: Option<TransformToml>,
+    pub(super) lod: Option<LodToml>,
+    pub(super) hairs_per_clump: Option<u32>,
+    pub(super) sub_segments: Option<u32>,
+    pub(super) thinning: Option<f32>,
+    pub(super) clump_width: Option<f32>,
+    pub(super) clump_width_scale: Option<RampToml<f32>>,
+    pub(super) clump_twist: Option<f32>,
+    pub(super) clump_curl: Option<RampToml<f32>>,
+    pub(super) clump_flatness: Option<RampToml<f32>>,
+    pub(super) bend_follow: Option<f32>,
+    pub(super) hair_width: Option<f32>,
+    pub(super) hair_width_scale: Option<RampToml<f32>>,
+    pub(super) displacement_scale: Option<RampToml<f32>>,
+    pub(super) curl: Option<f32>,
+    pub(super) curl_frequency: Option<f32>,
+    pub(super) noise_method: Option<String>,
+    pub(super) noise: Option<f32>,
+    pub(super) noise_frequency: Option<f32>,
+    pub(super) noise_frequency_u: Option<f32>,
+    pub(super) noise_frequency_v: Option<f32>,
+    pub(super) noise_frequency_w: Option<f32>,
+    pub(super) hair_color: Option<V3>,
+    pub(super) hair_color_scale: Option<RampToml<V3>>,
+    pub(super) opacity: Option<f32>,
+    pub(super) translucence: Option<f32>,
+    pub(super) specular_color: Option<V3>,
+    pub(super) specular_power: Option<f32>,
+    pub(super) diffuse_rand: Option<f32>,
+    pub(super) specular_rand: Option<f32>,
+    pub(super) hue_rand: Option<f32>,
+    pub(super) sat_rand: Option<f32>,
+    pub(super) val_rand: Option<f32>,
+}
+
+/// `follicles = { mesh = 1, placement = "grid", u = 10, v = 10, ... }`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FolliclesToml {
+    /// 1-based index of a `[[mesh]]` entry.
+    pub(super) mesh: usize,
+    #[serde(default = "default_placement")]
+    pub(super) placement: String,
+    pub(super) u: Option<u32>,
+    pub(super) v: Option<u32>,
+    pub(super) count: Option<u32>,
+    pub(super) randomization: Option<f32>,
+    pub(super) uv_range: Option<[[f32; 2]; 2]>,
+    pub(super) points_per_hair: Option<u32>,
+    pub(super) length: Option<f32>,
+    pub(super) droop: Option<f32>,
+    pub(super) gravity: Option<V3>,
+}
+
+fn default_placement() -> String {
+    "grid".into()
+}
+
+/// A ramp: one value everywhere, or keys.
+#[derive(Deserialize)]
+#[serde(untagged)]
+pub(super) enum RampToml<T> {
+    Constant(T),
+    Keys(Vec<RampKeyToml<T>>),
+}
+
+/// A ramp key: `[position, value]` (linear), `[position, value, "interp"]` or
+/// `{ position, value, interp }`.
+#[derive(Deserialize)]
+#[serde(untagged)]
+pub(super) enum RampKeyToml<T> {
+    Pair(f32, T),
+    Triple(f32, T, String),
+    Table { position: f32, value: T, interp: Option<String> },
+}
+
+/// A `[[fur]]` entry: its own keys, and every other key a fur attribute.
+#[derive(Deserialize)]
+pub(super) struct FurToml {
+    /// 1-based, as messages count meshes.
+    pub(super) mesh: i64,
+    pub(super) preset: Option<String>,
+    #[serde(default)]
+    pub(super) seed: u32,
+    #[serde(default)]
+    pub(super) placement: PlacementToml,
+    pub(super) guides: Option<PathBuf>,
+    pub(super) attractors: Option<AttractorsToml>,
+    pub(super) lod: Option<LodToml>,
+    #[serde(flatten)]
+    pub(super) attributes: toml::Table,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub(super) enum PlacementToml {
+    #[default]
+    Area,
+    Uv,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct AttractorsToml {
+    pub(super) model: Option<AttractorModelToml>,
+    pub(super) curves_per_fur: Option<u32>,
+    pub(super) global_scale: Option<f32>,
+    pub(super) radius: Option<f32>,
+    pub(super) power: Option<f32>,
+    pub(super) influence: Option<f32>,
+    pub(super) threshold_length: Option<f32>,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub(super) enum AttractorModelToml {
+    Local,
+    Global,
+}
