@@ -7,7 +7,7 @@ use glam::Vec3;
 use std::path::Path;
 use std::process::Command;
 use tress::geometry::StrandSet;
-use tress::io::imported::read_imported;
+use tress::io::read_imported;
 use tress::prepare::prepare;
 use tress::scene::{Description, HairSource};
 

@@ -212,8 +212,8 @@ fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
         // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
         Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
         Some(path) => {
-            let (desc, warnings) = if tress::io::imported::is_imported(path) {
-                tress::io::imported::read_imported(path)?.into_description()
+            let (desc, warnings) = if tress::io::is_imported(path) {
+                tress::io::read_imported(path)?.into_description()
             } else {
                 tress::io::scene_file::read(path, o.frame)?
             };

@@ -1,10 +1,9 @@
-//! Scenes read from other tools' files (Maya ASCII, pbrt-v4, USD text), in tress's terms:
+//! Scenes read from other tools' files (Maya ASCII, pbrt-v4, USD text; read by
+//! [`super::read_imported`]), in tress's terms:
 //! an [`Imported`] holds the camera, settings, lights and entries a file describes, with
 //! every geometry already in memory, ready to become a [`Description`] of its own
 //! (`tress render scene.ma`) or to join a TOML scene (`[[import]]`).
 
-use super::{maya_ascii, pbrt, usd};
-use crate::error::LoadError;
 use crate::geometry::StrandSet;
 use crate::light::Light;
 use crate::math::Aabb;
@@ -14,7 +13,6 @@ use crate::scene::{
 };
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3, Vec3A};
-use std::path::Path;
 
 /// What a foreign scene file describes.
 #[derive(Clone, Debug, Default)]
@@ -35,33 +33,10 @@ pub struct Imported {
     pub hair: Vec<HairEntry>,
     /// Hair systems (inline guides).
     pub hair_systems: Vec<HairSystemEntry>,
-    /// Fur; `mesh` indexes [`Imported::meshes`] (see [`maya_ascii::fur_nodes`]).
+    /// Fur; `mesh` indexes [`Imported::meshes`] (see [`super::maya_ascii::fur_nodes`]).
     pub fur: Vec<FurEntry>,
     /// What was read only in part or skipped, one line each, for the user.
     pub warnings: Vec<String>,
-}
-
-/// The scene formats [`read_imported`] reads, by extension.
-pub const IMPORTED_EXTENSIONS: [&str; 3] = ["ma", "pbrt", "usda"];
-
-/// True when `path` names a file [`read_imported`] reads (by its extension).
-pub fn is_imported(path: &Path) -> bool {
-    extension(path).is_some_and(|e| IMPORTED_EXTENSIONS.contains(&e.as_str()))
-}
-
-fn extension(path: &Path) -> Option<String> {
-    path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase)
-}
-
-/// Reads a Maya ASCII (`.ma`), pbrt-v4 (`.pbrt`) or USD text (`.usda`) scene, choosing the
-/// reader by the file's extension.
-pub fn read_imported(path: &Path) -> Result<Imported, LoadError> {
-    match extension(path).as_deref() {
-        Some("ma") => maya_ascii::read_maya(path),
-        Some("pbrt") => pbrt::read_pbrt(path),
-        Some("usda") => usd::read_usd(path),
-        _ => Err(LoadError::format(path, "unknown scene format: expected a .ma, .pbrt or .usda file")),
-    }
 }
 
 impl Imported {

@@ -1,5 +1,8 @@
-//! File formats: scene TOML, OBJ and PLY meshes, Cem Yuksel `.hair` strands, and other
-//! tools' scenes (Maya ASCII, pbrt-v4, USD text) through [`imported`].
+//! File formats: scene TOML ([`scene_file`]), OBJ and PLY meshes, Cem Yuksel `.hair`
+//! strands ([`cem_hair`]), and other tools' scenes (Maya ASCII, pbrt-v4, USD text) as an
+//! [`imported::Imported`]. The readers produce [`crate::scene`] descriptions and entries;
+//! the dispatch by extension ([`read_mesh`], [`read_imported`]) is here, so no reader
+//! imports another.
 
 pub mod cem_hair;
 pub mod imported;
@@ -16,10 +19,34 @@ use std::path::Path;
 
 /// Reads a mesh, choosing the format by the file extension (`.obj` or `.ply`).
 pub fn read_mesh(path: &Path) -> Result<TriangleMesh, LoadError> {
-    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+    match extension(path).as_deref() {
         Some("obj") => obj::read_obj(path),
         Some("ply") => ply::read_ply(path),
         _ => Err(LoadError::format(path, "unknown mesh format: expected a .obj or .ply file")),
+    }
+}
+
+/// The scene formats [`read_imported`] reads, by extension.
+pub const IMPORTED_EXTENSIONS: [&str; 3] = ["ma", "pbrt", "usda"];
+
+/// True when `path` names a file [`read_imported`] reads (by its extension).
+pub fn is_imported(path: &Path) -> bool {
+    extension(path).is_some_and(|e| IMPORTED_EXTENSIONS.contains(&e.as_str()))
+}
+
+/// The file's extension, lowercase.
+fn extension(path: &Path) -> Option<String> {
+    path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase)
+}
+
+/// Reads a Maya ASCII (`.ma`), pbrt-v4 (`.pbrt`) or USD text (`.usda`) scene, choosing the
+/// reader by the file's extension.
+pub fn read_imported(path: &Path) -> Result<imported::Imported, LoadError> {
+    match extension(path).as_deref() {
+        Some("ma") => maya_ascii::read_maya(path),
+        Some("pbrt") => pbrt::read_pbrt(path),
+        Some("usda") => usd::read_usd(path),
+        _ => Err(LoadError::format(path, "unknown scene format: expected a .ma, .pbrt or .usda file")),
     }
 }
 

@@ -176,7 +176,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
     for (i, imp) in scene.import.iter().enumerate() {
         let what = |m: String| invalid(format!("import {}: {m}", i + 1));
         let file = base.join(&imp.file);
-        let mut imported = crate::io::imported::read_imported(&file).map_err(|e| what(e.to_string()))?;
+        let mut imported = crate::io::read_imported(&file).map_err(|e| what(e.to_string()))?;
         imported.transform(&transform(&imp.transform).map_err(what)?);
         warnings.extend(imported.warnings.iter().map(|w| format!("{}: {w}", file.display())));
         if imp.lights {
