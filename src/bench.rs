@@ -12,14 +12,10 @@ use crate::accel::{Accel, Hit, HitKind, Shape};
 use crate::light::Light;
 use crate::math::rng::hash_u32;
 use crate::math::{Ray, PACKET};
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
-use crate::shading::Material;
 use crate::stats::process_cpu_time;
-use crate::world::{RenderSettings, World};
-use glam::{Affine3A, Vec3};
+use crate::world::World;
+use glam::Vec3;
 use rayon::prelude::*;
-use serde::Deserialize;
-use std::path::Path;
 use std::time::{Duration, Instant};
 
 /// Shadow-ray origin offset of the Embree baseline (`kEps` in bench.cpp).
@@ -203,99 +199,4 @@ pub fn light_direction(world: &World) -> Vec3 {
             _ => None,
         })
         .unwrap_or(Vec3::Y)
-}
-
-#[derive(Deserialize)]
-struct RefScene {
-    film: RefFilm,
-    camera: RefCamera,
-    lights: Vec<RefLight>,
-    meshes: Vec<RefMesh>,
-    hair: Vec<RefHair>,
-}
-#[derive(Deserialize)]
-struct RefFilm {
-    width: u32,
-    height: u32,
-    spp: u32,
-}
-#[derive(Deserialize)]
-struct RefCamera {
-    eye: [f32; 3],
-    target: [f32; 3],
-    up: [f32; 3],
-    vfov_deg: f32,
-}
-#[derive(Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case")]
-enum RefLight {
-    Distant { direction_to_light: [f32; 3], radiance: [f32; 3] },
-    ConstantEnvironment { radiance: [f32; 3] },
-}
-#[derive(Deserialize)]
-struct RefMesh {
-    obj: String,
-    diffuse: [f32; 3],
-}
-#[derive(Deserialize)]
-struct RefHair {
-    file: String,
-    diffuse: [f32; 3],
-}
-
-/// Reads a reference scene directory written by `shared/scenes/gen_scenes.py`
-/// (`scene.json`, the OBJ and the `.hair` it names) as a scene description.
-pub fn read_reference_scene(dir: &Path) -> anyhow::Result<Description> {
-    use anyhow::Context;
-    let path = dir.join("scene.json");
-    let text = std::fs::read_to_string(&path).with_context(|| format!("{}: cannot read", path.display()))?;
-    let s: RefScene =
-        serde_json::from_str(&text).with_context(|| format!("{}: not a reference scene", path.display()))?;
-    let lights = s
-        .lights
-        .iter()
-        .map(|l| match *l {
-            RefLight::Distant { direction_to_light, radiance } => Light::Distant {
-                direction: Vec3::from(direction_to_light).normalize_or(Vec3::Y),
-                irradiance: radiance.into(),
-            },
-            RefLight::ConstantEnvironment { radiance } => Light::Environment { radiance: radiance.into() },
-        })
-        .collect();
-    let meshes = s
-        .meshes
-        .iter()
-        .map(|m| MeshEntry {
-            source: MeshSource::File(dir.join(&m.obj)),
-            material: Material::Diffuse { color: m.diffuse.into() },
-            transform: Affine3A::IDENTITY,
-        })
-        .collect();
-    let hair = s
-        .hair
-        .iter()
-        .map(|h| HairEntry {
-            source: HairSource::File(dir.join(&h.file)),
-            // Peers shade the curves as diffuse surfaces; so does tress here, for a
-            // pixel-for-pixel comparison.
-            material: Material::Diffuse { color: h.diffuse.into() },
-            transform: Affine3A::IDENTITY,
-            radius_scale: 1.0,
-            file_colors: false,
-            lod: None,
-        })
-        .collect();
-    Ok(Description {
-        camera: CameraDesc {
-            eye: s.camera.eye.into(),
-            target: s.camera.target.into(),
-            up: s.camera.up.into(),
-            vfov: s.camera.vfov_deg,
-        },
-        settings: RenderSettings { width: s.film.width, height: s.film.height, spp: s.film.spp, ..Default::default() },
-        lights,
-        meshes,
-        hair,
-        ..Default::default()
-    })
 }

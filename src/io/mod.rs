@@ -10,6 +10,7 @@ pub mod maya_ascii;
 pub mod obj;
 pub mod pbrt;
 pub mod ply;
+pub mod reference_scene;
 pub mod scene_file;
 pub mod usd;
 
