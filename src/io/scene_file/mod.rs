@@ -2,9 +2,9 @@
 //! [`Description`] by [`read`] (or [`parse`] for text in memory). Unknown keys and wrong
 //! types are errors naming the file, line and key.
 //!
-//! - [`schema`]: what each table may hold (serde), defaults from the domain types.
-//! - [`convert`]: tables into lights, materials, transforms, hair systems, fur.
-//! - [`animation`]: camera keys and `#` frame patterns at one frame.
+//! - `schema`: what each table may hold (serde), defaults from the domain types.
+//! - `convert`: tables into lights, materials, transforms, hair systems, fur.
+//! - `animation`: camera keys and `#` frame patterns at one frame.
 //!
 //! `[[import]]` entries bring in other tools' scenes through [`crate::io::read_imported`].
 
