@@ -10,7 +10,6 @@ use std::time::Duration;
 use tress::accel::Shape;
 use tress::bench::{light_direction, trace_primary, trace_shadow, Memory, Tracing};
 use tress::film::Region;
-use tress::io::reference_scene::read_reference_scene;
 use tress::partial::{fingerprint, Checkpointer, Partial};
 use tress::prepare::{prepare, prepare_owned};
 use tress::render::{render_tiles, Control, TiledFilm};
@@ -210,16 +209,10 @@ fn parse_filter(s: &str) -> Result<tress::film::PixelFilter, String> {
 
 fn load(scene: Option<&Path>, o: &Overrides) -> Result<Description> {
     let mut desc = match scene {
-        // A directory is a reference scene of shared/scenes/gen_scenes.py (scene.json).
-        Some(dir) if dir.is_dir() => read_reference_scene(dir)?,
         Some(path) => {
-            let (desc, warnings) = if tress::io::is_imported(path) {
-                tress::io::read_imported(path)?.into_description()
-            } else {
-                tress::io::scene_file::read(path, o.frame)?
-            };
+            let (desc, warnings) = tress::io::read_scene(path, o.frame)?;
             for w in warnings {
-                eprintln!("warning: {}: {w}", path.display());
+                eprintln!("warning: {w}");
             }
             desc
         }

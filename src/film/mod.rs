@@ -95,10 +95,11 @@ impl Film {
 }
 
 /// An EXR channel: its name, how it is taken from a pixel and how it is put back.
-pub(crate) type Channel = (&'static str, fn(&Pixel) -> f32, fn(&mut Pixel, f32));
+pub type Channel = (&'static str, fn(&Pixel) -> f32, fn(&mut Pixel, f32));
 
-/// The EXR channels. `A` and `coverage` hold the same value; a reader takes `A`.
-pub(crate) const CHANNELS: [Channel; 18] = [
+/// The EXR channels, which are also the AOVs by name. `A` and `coverage` hold the same
+/// value; a reader takes `A`.
+pub const CHANNELS: [Channel; 18] = [
     ("R", |p| p.color.x, |p, v| p.color.x = v),
     ("G", |p| p.color.y, |p, v| p.color.y = v),
     ("B", |p| p.color.z, |p, v| p.color.z = v),

@@ -51,6 +51,29 @@ pub fn read_imported(path: &Path) -> Result<imported::Imported, LoadError> {
     }
 }
 
+/// Why [`read_scene`] cannot read a scene.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadSceneError {
+    /// A scene TOML that cannot be read or does not match the scene format.
+    #[error(transparent)]
+    SceneFile(#[from] scene_file::SceneFileError),
+    /// Another tool's scene or a reference scene directory that cannot be read.
+    #[error(transparent)]
+    Load(#[from] LoadError),
+}
+
+/// Reads any scene `tress render` takes: a reference scene directory (`scene.json`), a
+/// Maya ASCII, pbrt-v4 or USD text file (by extension), or a scene TOML at `frame`.
+/// Returns the description and the reader's warnings, each prefixed with the file's name.
+pub fn read_scene(path: &Path, frame: Option<u32>) -> Result<(crate::scene::Description, Vec<String>), ReadSceneError> {
+    if path.is_dir() {
+        return Ok((reference_scene::read_reference_scene(path)?, Vec::new()));
+    }
+    let (desc, warnings) =
+        if is_imported(path) { read_imported(path)?.into_description() } else { scene_file::read(path, frame)? };
+    Ok((desc, warnings.into_iter().map(|w| format!("{}: {w}", path.display())).collect()))
+}
+
 /// Writes `bytes` to `path` atomically: to a temporary file in the same directory (so the
 /// rename stays on one file system), synced, then renamed over `path`, so a crash or a
 /// full disk never leaves a half-written file under the final name.

@@ -1,0 +1,1 @@
+../../python/tress/scene_folder.py
