@@ -2,6 +2,7 @@
 on a sphere, a camera and a sun, rendered through the tress engine and exported."""
 
 import math
+import os
 
 import pytest
 
@@ -168,3 +169,21 @@ def test_particle_hair_exports_the_children_blender_evaluates(addon):
     assert np.allclose(np.linalg.norm(points[:, -1] - points[:, 0], axis=1), 0.5, rtol=0.25)
     # Radius from the particle settings' root radius (a diameter) to the tip radius.
     assert strands.radius[0] == pytest.approx(0.01) and strands.radius[steps - 1] == 0.0
+
+
+def test_without_the_module_the_engine_runs_the_command_line(addon, tmp_path, tress_cli, monkeypatch):
+    monkeypatch.setenv("PATH", os.path.dirname(tress_cli) + os.pathsep + os.environ.get("PATH", ""))
+    images = []
+    for use_module in (True, False):
+        scene, _, _, _ = make_scene()
+        scene.tress.use_module = use_module
+        scene.render.image_settings.file_format = "OPEN_EXR"
+        scene.render.image_settings.color_depth = "32"
+        scene.render.filepath = str(tmp_path / f"module_{use_module}.exr")
+        bpy.ops.render.render(write_still=True)
+        image = bpy.data.images.load(scene.render.filepath)
+        pixels = np.empty(len(image.pixels), np.float32)
+        image.pixels.foreach_get(pixels)
+        images.append(pixels)
+    assert images[0].max() > 0
+    assert np.array_equal(images[0], images[1])

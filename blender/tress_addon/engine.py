@@ -16,7 +16,7 @@ import time
 
 import bpy
 
-from . import export
+from . import exr, export
 
 try:
     import numpy as np
@@ -166,9 +166,12 @@ class TressRenderEngine(bpy.types.RenderEngine):
             if process.returncode != 0:
                 self.report({"ERROR"}, f"tress: {err.strip()}")
                 return
-            result = self.begin_result(0, 0, width, height)
-            result.layers[0].load_from_file(out)
-            self.end_result(result)
+            try:
+                rgba = exr.read_rgba(out)
+            except (OSError, ValueError) as e:
+                self.report({"ERROR"}, f"tress: {e}")
+                return
+            self._put(rgba, width, height)
 
 
 def compatible_panels():
