@@ -1,5 +1,10 @@
 //! Lights: distant (sharp, or a disk of finite angular size for soft shadows), point,
-//! spot, quad and sphere area lights, and a constant environment.
+//! spot, quad and sphere area lights, a constant environment and an environment map
+//! ([`EnvironmentMap`]).
+
+mod environment;
+
+pub use environment::{luminance, EnvironmentMap, MAX_PIXELS as MAX_ENVIRONMENT_PIXELS};
 
 use crate::math::{frame, sampling, Color};
 use glam::Vec3;
@@ -70,6 +75,9 @@ pub enum Light {
         /// Radiance.
         radiance: Color,
     },
+    /// Radiance from every direction not blocked by geometry, read from an image
+    /// (image-based lighting) and importance-sampled by its luminance.
+    EnvironmentMap(EnvironmentMap),
 }
 
 /// Light arriving at a point from one sampled direction.
@@ -161,6 +169,11 @@ impl Light {
                     value: radiance * (4.0 * PI),
                 },
             },
+            // The whole sphere by the map's distribution, whatever the normal.
+            Light::EnvironmentMap(ref map) => {
+                let (dir, pdf, radiance) = map.sample((u, v))?;
+                LightSample { dir, dist: f32::INFINITY, value: radiance / pdf }
+            }
         };
         (s.value.max_element() > 0.0 && s.value.is_finite()).then_some(s)
     }
@@ -211,10 +224,11 @@ impl Light {
 
     /// Solid-angle density with which [`Light::sample`] picks `dir` from `p`, for
     /// multiple importance sampling against a material's own sampling; 0 for lights no
-    /// ray can hit (delta lights) and for the environment, which a path tracer reaches by
-    /// material sampling alone.
+    /// ray can hit (delta lights) and for the constant environment, which a path tracer
+    /// reaches by material sampling alone.
     pub fn pdf(&self, p: Vec3, dir: Vec3) -> f32 {
         match *self {
+            Light::EnvironmentMap(ref map) => map.pdf(dir),
             Light::Quad { edge_u, edge_v, .. } => match self.emitted(p, dir, f32::INFINITY) {
                 Some((t, _)) => {
                     let n = edge_u.cross(edge_v);
@@ -255,10 +269,21 @@ impl Light {
         Light::Sun { direction, radiance: irradiance / (PI * sin * sin), cos_max: radius.min(0.5 * PI).cos() }
     }
 
-    /// Radiance of the environment seen along any unblocked ray (zero for other lights).
+    /// Radiance of the constant environment seen along any unblocked ray (zero for other
+    /// lights, the environment map included: see [`Light::sky`]).
     pub fn background(&self) -> Color {
         match *self {
             Light::Environment { radiance } => radiance,
+            _ => Color::ZERO,
+        }
+    }
+
+    /// Radiance an unblocked ray along `dir` sees of this light when it is an environment
+    /// (constant or mapped); zero for other lights.
+    pub fn sky(&self, dir: Vec3) -> Color {
+        match *self {
+            Light::Environment { radiance } => radiance,
+            Light::EnvironmentMap(ref map) => map.radiance(dir),
             _ => Color::ZERO,
         }
     }

@@ -44,6 +44,22 @@ impl TriangleMesh {
         }
     }
 
+    /// Texture coordinates at barycentrics (`b1`, `b2`) of triangle `i`, and how many UV
+    /// units one unit of length on the triangle spans (the square root of its UV area over
+    /// its area: the ray-cone texture LOD's texel density, Akenine-Moller et al. 2019);
+    /// `None` without UVs.
+    pub fn uv_at(&self, i: u32, b1: f32, b2: f32) -> Option<([f32; 2], f32)> {
+        let uvs = self.uvs.as_ref()?;
+        let [ia, ib, ic] = self.indices[i as usize];
+        let (ta, tb, tc) = (uvs[ia as usize], uvs[ib as usize], uvs[ic as usize]);
+        let b0 = 1.0 - b1 - b2;
+        let uv = [ta[0] * b0 + tb[0] * b1 + tc[0] * b2, ta[1] * b0 + tb[1] * b1 + tc[1] * b2];
+        let uv_area = ((tb[0] - ta[0]) * (tc[1] - ta[1]) - (tc[0] - ta[0]) * (tb[1] - ta[1])).abs();
+        let area = 2.0 * self.area(i);
+        let density = if area > 0.0 { (uv_area / area).sqrt() } else { 0.0 };
+        Some((uv, if density.is_finite() { density } else { 0.0 }))
+    }
+
     /// Bytes held by the arrays of this mesh.
     pub fn memory_bytes(&self) -> usize {
         self.positions.len() * 12

@@ -165,5 +165,9 @@ fn transform_light(l: &Light, m: &Affine3A) -> Light {
             Light::Sphere { center: m.transform_point3(center), radius, radiance }
         }
         Light::Environment { radiance } => Light::Environment { radiance },
+        // Infinitely far: only the transform's rotation turns it.
+        Light::EnvironmentMap(ref map) => {
+            Light::EnvironmentMap(map.rotated(glam::Mat3::from_quat(m.to_scale_rotation_translation().1)))
+        }
     }
 }

@@ -1,5 +1,7 @@
-//! Vectors, rays, ray cones, frames, random numbers, sampling warps and gradient noise.
+//! Vectors, rays, ray cones, frames, random numbers, sampling warps, distributions and
+//! gradient noise.
 
+pub mod distribution;
 pub mod noise;
 mod ray;
 pub mod rng;

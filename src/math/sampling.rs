@@ -45,3 +45,17 @@ pub fn triangle_fold(u: f32, v: f32) -> (f32, f32) {
         (u, v)
     }
 }
+
+/// Veach's power heuristic (beta = 2) for one sample of each of two strategies: the weight
+/// of a sample drawn with density `pdf` when the other strategy has density `other` there
+/// (Veach and Guibas 1995; PBR 4th ed. section 2.2.3). A delta (infinite) `pdf` weighs 1.
+pub fn power_heuristic(pdf: f32, other: f32) -> f32 {
+    let (a, b) = (pdf * pdf, other * other);
+    if a + b > 0.0 && (a + b).is_finite() {
+        a / (a + b)
+    } else if pdf.is_infinite() {
+        1.0
+    } else {
+        0.0
+    }
+}

@@ -1,6 +1,7 @@
 //! The direct-lighting (Whitted) integrator: lights with hard or soft shadows (partial
-//! through semi-transparent hair), the environment as an ambient term, mirror reflection
-//! and refraction up to the maximum depth, and semi-transparent hair blended in layers.
+//! through semi-transparent hair), the constant environment as an ambient term and
+//! environment maps sampled with MIS (`super::environment`), mirror reflection and
+//! refraction up to the maximum depth, and semi-transparent hair blended in layers.
 //! The final gather reuses it with an indirect term ([`Indirect`]).
 
 use crate::accel::{Hit, HitKind, Object, Shape, Skip, StochasticTail, NEGLIGIBLE_TRANSMITTANCE};
@@ -8,7 +9,7 @@ use crate::geometry::StrandPoint;
 use crate::light::{Light, LightSample};
 use crate::math::rng::PixelSampler;
 use crate::math::{offset_origin, Color, Ray, RayCone, RayMask, PACKET};
-use crate::shading::{Material, ShadingPoint};
+use crate::shading::{Material, ShadingPoint, TexCoord};
 use crate::world::World;
 use glam::Vec3;
 use smallvec::SmallVec;
@@ -274,7 +275,7 @@ fn trace_from(
                 return (emitted(radiance), None);
             }
             let Some(hit) = hit else {
-                return (emitted(world.background), None);
+                return (emitted(super::environment::sky(world, ray.dir, |_| 1.0)), None);
             };
             let (color, first) = shade(world, ray, &hit, depth, sampler, counters, indirect, shadows);
             return (color, Some(first));
@@ -321,7 +322,7 @@ fn trace_from(
             break 'layers color + carried * emitted(radiance);
         }
         if layers.len() < k {
-            break 'layers color + carried * emitted(world.background);
+            break 'layers color + carried * emitted(super::environment::sky(world, ray.dir, |_| 1.0));
         }
         // Every hit collected let light through: continue behind the farthest.
         tmin = layers[k - 1].hit.t;
@@ -557,38 +558,43 @@ fn shade(
             continue; // the tube model's ambient term already stands for the environment
         }
         let normal = if tube_hair { None } else { Some(sp.normal) };
-        let ls = match *light {
+        let samples = match *light {
             // A constant environment is best sampled by a material that can sample its own
             // response (the hair BSDF, whose lobes the sphere's uniform samples would miss).
-            Light::Environment { radiance } => match material.sample_direction(sp, wo, sampler) {
-                Some((dir, pdf)) => Some(LightSample { dir, dist: f32::INFINITY, value: radiance / pdf }),
-                None => light.sample(sp.p, normal, sampler.next_2d()),
-            },
-            _ => light.sample(sp.p, normal, sampler.next_2d()),
+            Light::Environment { radiance } => [
+                match material.sample_direction(sp, wo, sampler) {
+                    Some((dir, pdf)) => Some(LightSample { dir, dist: f32::INFINITY, value: radiance / pdf }),
+                    None => light.sample(sp.p, normal, sampler.next_2d()),
+                },
+                None,
+            ],
+            Light::EnvironmentMap(ref map) => super::environment::map_samples(map, material, sp, wo, sampler),
+            _ => [light.sample(sp.p, normal, sampler.next_2d()), None],
         };
-        let Some(ls) = ls else { continue };
-        let f = material.response(sp, wo, ls.dir);
-        if f.max_element() <= 0.0 {
-            continue;
-        }
-        let d = departure(&surface, hit, ls.dir, material.shades_whole_circle());
-        // Stop short of the light by a relative margin so its own surface does not block.
-        let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
-        // Hair lets light through by its opacity; meshes and opaque strands block it. The
-        // estimate stops at the first hits like an opaque shadow ray, most of the time.
-        // The shadow ray starts with the camera ray's footprint at the hit (level of detail).
-        let cone = ray.cone.propagate(hit.t, 0.0);
-        let shadow = ShadowRay { origin: d.origin, dir: ls.dir, tmax, skip: d.skip, cone, seed: shadow_seed };
-        match &mut shadows {
-            // Smooth level of detail: each layer its own shadow ray to a singular light.
-            Shadows::Shared(shared, weight) if !(world.accel.smooth_layers() && light.is_singular()) => {
-                shared.offer(index, *weight * (f * ls.value), shadow)
+        for ls in samples.into_iter().flatten() {
+            let f = material.response(sp, wo, ls.dir);
+            if f.max_element() <= 0.0 {
+                continue;
             }
-            Shadows::Deferred(pixel) => pixel.push(index, f * ls.value, &shadow),
-            Shadows::Now | Shadows::Shared(..) => {
-                let transmitted = shadow.trace(world, counters);
-                if transmitted > 0.0 {
-                    color += f * ls.value * transmitted;
+            let d = departure(&surface, hit, ls.dir, material.shades_whole_circle());
+            // Stop short of the light by a relative margin so its own surface does not block.
+            let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
+            // Hair lets light through by its opacity; meshes and opaque strands block it. The
+            // estimate stops at the first hits like an opaque shadow ray, most of the time.
+            // The shadow ray starts with the camera ray's footprint at the hit (level of detail).
+            let cone = ray.cone.propagate(hit.t, 0.0);
+            let shadow = ShadowRay { origin: d.origin, dir: ls.dir, tmax, skip: d.skip, cone, seed: shadow_seed };
+            match &mut shadows {
+                // Smooth level of detail: each layer its own shadow ray to a singular light.
+                Shadows::Shared(shared, weight) if !(world.accel.smooth_layers() && light.is_singular()) => {
+                    shared.offer(index, *weight * (f * ls.value), shadow)
+                }
+                Shadows::Deferred(pixel) => pixel.push(index, f * ls.value, &shadow),
+                Shadows::Now | Shadows::Shared(..) => {
+                    let transmitted = shadow.trace(world, counters);
+                    if transmitted > 0.0 {
+                        color += f * ls.value * transmitted;
+                    }
                 }
             }
         }
@@ -628,7 +634,12 @@ pub(super) fn surface_at(object: &Object, hit: &Hit, ray: &Ray) -> Surface {
                 // An interpolated normal may face away at grazing angles; keep it usable.
                 normal = geometric;
             }
-            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface, strand: None };
+            // The footprint on the surface: the cone's width, stretched at grazing angles.
+            let uv = mesh.uv_at(hit.prim, b1, b2).map(|(uv, density)| {
+                let stretch = 1.0 / geometric.dot(ray.dir).abs().max(0.05);
+                TexCoord { uv, width: ray.cone.width_at(hit.t) * stretch * density }
+            });
+            let sp = ShadingPoint { p, normal, tangent: None, color: None, backface, strand: None, uv };
             Surface { sp, hair: None, geometric, strand_point: None }
         }
         (Shape::Strands(strands), HitKind::Segment { s, normal }) => {
@@ -651,6 +662,7 @@ pub(super) fn surface_at(object: &Object, hit: &Hit, ray: &Ray) -> Surface {
                 color: object.lod_color(hit.level, strands.color(hit.prim, s)),
                 backface: false,
                 strand: Some((at.strand, at.along)),
+                uv: None,
             };
             Surface { sp, hair: Some((axis_point, radius, axis)), geometric: normal, strand_point: Some(at) }
         }

@@ -69,6 +69,7 @@ pub struct IrradianceCache {
 pub(super) fn cached_albedo(at: &At) -> Option<Color> {
     match at.material {
         Material::Diffuse { color } if at.surface.hair.is_none() => Some(at.surface.sp.color.unwrap_or(*color)),
+        Material::Textured(t) if at.surface.hair.is_none() && t.roughness.is_none() => Some(t.albedo(&at.surface.sp)),
         _ => None,
     }
 }

@@ -5,6 +5,7 @@
 
 mod adaptive;
 mod direct;
+mod environment;
 mod final_gather;
 mod irradiance_cache;
 mod path;

@@ -4,8 +4,9 @@
 //! a ray can hit (quad, sphere, sun), the physical hair BSDF's own sampling on hair, and
 //! Russian roulette once a path's throughput falls below 1.
 //!
-//! The environment is reached by material sampling only (it is constant, so cosine- or
-//! BSDF-weighted directions already sample it well). Semi-transparent hair is crossed
+//! The constant environment is reached by material sampling only (cosine- or
+//! BSDF-weighted directions already sample it well); an environment map is sampled at
+//! every vertex too, and MIS weighs the two. Semi-transparent hair is crossed
 //! stochastically: a ray stops at a partial hit with probability equal to its opacity
 //! (unbiased; shadow rays use the exact transmittance). The tube model has no physical
 //! meaning for paths: its ambient term is dropped and its response sampled uniformly.
@@ -17,24 +18,20 @@ use super::direct::{departure, surface_at, CameraHint, Counters, FirstHit};
 use crate::accel::{Hit, LayerHit, NEGLIGIBLE_TRANSMITTANCE};
 use crate::light::Light;
 use crate::math::rng::PixelSampler;
+use crate::math::sampling::power_heuristic;
 use crate::math::{Color, Ray};
 use crate::world::World;
 
-/// Veach's power heuristic (beta = 2) for one sample of each of two strategies.
-fn power_heuristic(pdf: f32, other: f32) -> f32 {
-    let (a, b) = (pdf * pdf, other * other);
-    if a + b > 0.0 && (a + b).is_finite() {
-        a / (a + b)
-    } else if pdf.is_infinite() {
-        1.0
-    } else {
-        0.0
-    }
-}
-
 /// True for lights a material-sampled ray can hit, which MIS weighs.
 fn hittable(light: &Light) -> bool {
-    matches!(light, Light::Quad { .. } | Light::Sphere { .. } | Light::Sun { .. })
+    matches!(light, Light::Quad { .. } | Light::Sphere { .. } | Light::Sun { .. } | Light::EnvironmentMap(_))
+}
+
+/// What a ray that meets nothing brings back: the constant environment, and the maps
+/// weighted against the light sampling that found them already when a material drew
+/// the ray (density `scatter_pdf`).
+fn sky(world: &World, dir: glam::Vec3, scatter_pdf: Option<f32>) -> Color {
+    super::environment::sky(world, dir, |map_pdf| scatter_pdf.map_or(1.0, |pdf| power_heuristic(pdf, map_pdf)))
 }
 
 /// The hit a path stops at: the nearest opaque hit, or a partial one chosen with
@@ -106,12 +103,12 @@ pub fn trace(
             radiance += beta * le * w;
             if hit.is_none() {
                 // The sun is a disk in the sky: the environment shines there too.
-                radiance += beta * world.background;
+                radiance += beta * sky(world, ray.dir, scatter_pdf);
             }
             break;
         }
         let Some(hit) = hit else {
-            radiance += beta * world.background;
+            radiance += beta * sky(world, ray.dir, scatter_pdf);
             break;
         };
         if vertex > world.settings.max_depth {
@@ -127,7 +124,7 @@ pub fn trace(
             first = Some(surface.first_hit(&hit));
         }
 
-        // Next-event estimation: one sample of every light but the environment.
+        // Next-event estimation: one sample of every light but the constant environment.
         for light in world.lights.iter().filter(|l| l.background() == Color::ZERO) {
             let Some(ls) = light.sample(sp.p, Some(sp.normal), sampler.next_2d()) else { continue };
             let f = material.response(sp, wo, ls.dir);

@@ -10,6 +10,7 @@ pub mod fur_tube;
 pub mod hair_bsdf;
 pub mod scatter;
 pub mod surface;
+pub mod texture;
 pub mod tube;
 
 use crate::math::rng::PixelSampler;
@@ -51,6 +52,69 @@ pub enum Material {
     Physical(hair_bsdf::PhysicalHair),
     /// The thesis' fur shading (section 2.1.8, eq. 2.4 to 2.7), root-to-tip colours.
     Fur(fur_tube::Fur),
+    /// A surface whose diffuse colour, and optionally its glossiness, comes from image
+    /// textures by UV ([`Textured`]).
+    Textured(Textured),
+}
+
+/// A textured surface: Lambert with the colour `tint` times the `color` texture, plus,
+/// with a roughness, a normalised Phong lobe of reflectance `specular` whose exponent
+/// the roughness gives (`2 / r^2 - 2`, the Phong exponent equivalent to a Beckmann
+/// roughness r; Walter et al. 2007, "Microfacet Models for Refraction", section 5.2).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Textured {
+    /// Diffuse colour by UV.
+    pub color: texture::Texture,
+    /// Factor on the texture's colour.
+    pub tint: Color,
+    /// Roughness in (0, 1]: a constant or a texture's red channel; `None` is matte.
+    pub roughness: Option<Roughness>,
+    /// Reflectance of the glossy lobe (with a roughness).
+    pub specular: Color,
+}
+
+/// A roughness: one value, or a texture's red channel by UV.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Roughness {
+    /// The same everywhere.
+    Constant(f32),
+    /// By UV (the red channel).
+    Map(texture::Texture),
+}
+
+impl Textured {
+    /// The diffuse albedo at a shading point: the texture at its UV filtered by the ray's
+    /// footprint (the texture's mean where the mesh has no UVs).
+    pub fn albedo(&self, sp: &ShadingPoint) -> Color {
+        self.tint
+            * match sp.uv {
+                Some(t) => self.color.lookup(t.uv, t.width),
+                None => self.color.average(),
+            }
+    }
+
+    fn response(&self, sp: &ShadingPoint, wo: Vec3, wi: Vec3) -> Color {
+        let kd = self.albedo(sp);
+        let roughness = match &self.roughness {
+            None => return surface::lambert(kd, sp.normal, wi),
+            Some(Roughness::Constant(r)) => *r,
+            Some(Roughness::Map(t)) => match sp.uv {
+                Some(at) => t.lookup(at.uv, at.width).x,
+                None => t.average().x,
+            },
+        };
+        let r = roughness.clamp(0.02, 1.0);
+        surface::phong(kd, self.specular, (2.0 / (r * r) - 2.0).max(0.0), sp.normal, wo, wi)
+    }
+}
+
+/// Texture coordinates at a hit and the width of the ray's footprint there in UV units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexCoord {
+    /// Texture coordinates.
+    pub uv: [f32; 2],
+    /// Width of the ray's footprint on the surface, in UV units.
+    pub width: f32,
 }
 
 /// Where and how a ray met a surface or a strand, as the materials need it.
@@ -70,6 +134,8 @@ pub struct ShadingPoint {
     pub backface: bool,
     /// On hair: the strand index and the fraction of its length at the hit (0 root, 1 tip).
     pub strand: Option<(u32, f32)>,
+    /// On meshes with UVs: the texture coordinates and the ray's footprint.
+    pub uv: Option<TexCoord>,
 }
 
 /// A ray a specular material continues with.
@@ -117,6 +183,7 @@ impl Material {
                 // Fur shading on a surface: Lambert with the base colour.
                 _ => surface::lambert(sp.color.unwrap_or(f.diffuse[0]), sp.normal, wi),
             },
+            Material::Textured(t) => t.response(sp, wo, wi),
         }
     }
 

@@ -97,7 +97,7 @@ mod tests {
     use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 
     fn point(tangent: Option<Vec3>) -> ShadingPoint {
-        ShadingPoint { p: Vec3::ZERO, normal: Vec3::Z, tangent, color: None, backface: false, strand: None }
+        ShadingPoint { p: Vec3::ZERO, normal: Vec3::Z, tangent, color: None, backface: false, strand: None, uv: None }
     }
 
     /// The mean of `weight` over many samples estimates the albedo (the integral of

@@ -10,9 +10,11 @@ use crate::geometry::TriangleMesh;
 use crate::hair_system::ramp::RampValue;
 use crate::hair_system::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
 use crate::light::Light;
+use crate::math::Color;
 use crate::scene::{FurEntry, GuideSource, HairSource, HairSystemEntry};
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
-use crate::shading::{tube::Tube, Material};
+use crate::shading::texture::Texture;
+use crate::shading::{tube::Tube, Material, Roughness, Textured};
 use glam::{Affine3A, Quat, Vec3};
 use std::path::Path;
 
@@ -149,7 +151,7 @@ pub(super) fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Res
         _ => return Err("give exactly one of `file` and `follicles`".into()),
     };
     let material = match &h.material {
-        Some(m) => material(m)?,
+        Some(m) => material(m, base)?,
         None => Material::Tube(s.tube()),
     };
     let transform = match &h.transform {
@@ -248,7 +250,7 @@ pub(super) fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
     }
 }
 
-pub(super) fn light(l: &LightToml) -> Result<Light, String> {
+pub(super) fn light(l: &LightToml, base: &Path) -> Result<Light, String> {
     const ANY: f32 = f32::NEG_INFINITY;
     Ok(match *l {
         LightToml::Distant { direction, irradiance, angular_diameter } => {
@@ -301,15 +303,61 @@ pub(super) fn light(l: &LightToml) -> Result<Light, String> {
             check("radiance", &radiance, 0.0)?;
             Light::Sphere { center: center.into(), radius, radiance: radiance.into() }
         }
-        LightToml::Environment { radiance } => {
-            check("radiance", &radiance, 0.0)?;
-            Light::Environment { radiance: radiance.into() }
+        LightToml::Environment { radiance, ref file, rotation, intensity, exposure } => {
+            check("rotation", &[rotation], ANY)?;
+            check("intensity", &[intensity], 0.0)?;
+            check("exposure", &[exposure], ANY)?;
+            let scale = intensity * exposure.exp2();
+            if !scale.is_finite() {
+                return Err("`intensity` times 2^`exposure` is too large".into());
+            }
+            match (radiance, file) {
+                (Some(radiance), None) => {
+                    check("radiance", &radiance, 0.0)?;
+                    if rotation != 0.0 {
+                        return Err("`rotation` turns an environment map: give it a `file`".into());
+                    }
+                    Light::Environment { radiance: Vec3::from(radiance) * scale }
+                }
+                (None, Some(file)) => Light::EnvironmentMap(
+                    crate::io::raster::read_environment(&base.join(file), rotation, scale)
+                        .map_err(|e| e.to_string())?,
+                ),
+                _ => return Err("give exactly one of `radiance` and `file`".into()),
+            }
         }
     })
 }
 
-pub(super) fn material(m: &MaterialToml) -> Result<Material, String> {
+pub(super) fn material(m: &MaterialToml, base: &Path) -> Result<Material, String> {
     Ok(match *m {
+        MaterialToml::Textured { ref color, tint, ref roughness, specular } => {
+            check("tint", &tint, 0.0)?;
+            let texture = |file: &Path, encoding| -> Result<Texture, String> {
+                let path = base.join(file);
+                let image = crate::io::raster::read_rgb(&path, encoding).map_err(|e| e.to_string())?;
+                Texture::from_pixels(image.width, image.height, &image.rgb)
+                    .map_err(|m| format!("{}: {m}", path.display()))
+            };
+            let roughness = match roughness {
+                None => None,
+                Some(RoughnessToml::Constant(r)) if r.is_finite() && *r > 0.0 && *r <= 1.0 => {
+                    Some(Roughness::Constant(*r))
+                }
+                Some(RoughnessToml::Constant(_)) => return Err("`roughness` must be in (0, 1]".into()),
+                Some(RoughnessToml::Map(file)) => {
+                    Some(Roughness::Map(texture(file, crate::io::raster::Encoding::Linear)?))
+                }
+            };
+            let specular = specular.unwrap_or(if roughness.is_some() { 0.04 } else { 0.0 });
+            check("specular", &[specular], 0.0)?;
+            Material::Textured(Textured {
+                color: texture(color, crate::io::raster::Encoding::Srgb)?,
+                tint: tint.into(),
+                roughness,
+                specular: Color::splat(specular),
+            })
+        }
         MaterialToml::Diffuse { color } => {
             check("color", &color, 0.0)?;
             Material::Diffuse { color: color.into() }

@@ -134,7 +134,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
     };
     let mut lights = Vec::new();
     for (i, l) in scene.light.iter().enumerate() {
-        lights.push(light(l).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
+        lights.push(light(l, base).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
     }
     let mut meshes = Vec::new();
     for (i, m) in scene.mesh.iter().enumerate() {
@@ -146,7 +146,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         };
         meshes.push(MeshEntry {
             source,
-            material: material(&m.material).map_err(what)?,
+            material: material(&m.material, base).map_err(what)?,
             transform: transform(&m.transform).map_err(what)?,
         });
     }
@@ -155,7 +155,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         let what = |m: String| invalid(format!("hair {}: {m}", i + 1));
         hair.push(HairEntry {
             source: HairSource::File(base.join(at_frame(&h.file, frame))),
-            material: material(&h.material).map_err(what)?,
+            material: material(&h.material, base).map_err(what)?,
             transform: transform(&h.transform).map_err(what)?,
             radius_scale: h.radius_scale,
             file_colors: h.file_colors,

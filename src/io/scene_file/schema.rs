@@ -198,9 +198,31 @@ pub(super) enum LightToml {
         radius: f32,
         radiance: V3,
     },
+    /// Exactly one of `radiance` (constant) and `file` (an equirectangular map).
     Environment {
-        radiance: V3,
+        radiance: Option<V3>,
+        file: Option<PathBuf>,
+        /// Degrees about +y.
+        #[serde(default)]
+        rotation: f32,
+        #[serde(default = "default_intensity")]
+        intensity: f32,
+        /// Stops: the radiance is scaled by 2^exposure.
+        #[serde(default)]
+        exposure: f32,
     },
+}
+
+fn default_intensity() -> f32 {
+    1.0
+}
+
+/// A roughness: a number, or an image whose red channel holds it.
+#[derive(Deserialize)]
+#[serde(untagged)]
+pub(super) enum RoughnessToml {
+    Constant(f32),
+    Map(PathBuf),
 }
 
 fn default_inner() -> f32 {
@@ -219,6 +241,15 @@ pub(super) enum MaterialToml {
     Diffuse {
         #[serde(default = "default_color")]
         color: V3,
+    },
+    /// Diffuse colour from an image by UV, optionally glossy.
+    Textured {
+        color: PathBuf,
+        #[serde(default = "one3")]
+        tint: V3,
+        roughness: Option<RoughnessToml>,
+        /// Defaults to 0.04 with a roughness, else 0.
+        specular: Option<f32>,
     },
     Phong {
         #[serde(default = "default_color")]
