@@ -8,7 +8,7 @@
 //! rays start at each primary hit moved 2e-5 along the geometric normal facing the viewer
 //! and go towards the distant light.
 
-use crate::accel::{Accel, Hit, HitKind, Shape};
+use crate::accel::{Hit, HitKind, Shape};
 use crate::light::Light;
 use crate::math::rng::hash_u32;
 use crate::math::{Ray, PACKET};
@@ -20,48 +20,6 @@ use std::time::{Duration, Instant};
 
 /// Shadow-ray origin offset of the Embree baseline (`kEps` in bench.cpp).
 const SHADOW_EPS: f32 = 2e-5;
-
-/// Memory of a prepared scene by part, in bytes.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Memory {
-    /// Hair segments.
-    pub segments: u64,
-    /// Strand points and offsets (and colours, when present, and the file's index of each
-    /// strand when the set is stored in spatial order).
-    pub strand_points: u64,
-    /// Strand BVHs: nodes and segment ids.
-    pub strand_bvh: u64,
-    /// Mesh vertices, normals, UVs and indices.
-    pub mesh: u64,
-    /// Mesh BVHs and the top level.
-    pub other_bvh: u64,
-}
-
-impl Memory {
-    /// Measures the objects of `accel`.
-    pub fn of(accel: &Accel) -> Memory {
-        let mut m = Memory::default();
-        for o in &accel.objects {
-            match &o.shape {
-                Shape::Strands(s) => {
-                    m.segments += s.segment_count() as u64;
-                    m.strand_points += s.memory_bytes() as u64;
-                    m.strand_bvh += o.bvh_bytes() as u64;
-                }
-                Shape::Mesh(mesh) => {
-                    m.mesh += mesh.memory_bytes() as u64;
-                }
-            }
-        }
-        m.other_bvh = accel.bvh_bytes() as u64 - m.strand_bvh;
-        m
-    }
-
-    /// Hair bytes per segment: points and BVH together.
-    pub fn bytes_per_segment(&self) -> f64 {
-        (self.strand_points + self.strand_bvh) as f64 / self.segments.max(1) as f64
-    }
-}
 
 /// Rays traced in one measurement and the time they took.
 #[derive(Clone, Copy, Debug)]
@@ -102,14 +60,33 @@ fn u01(key: u32) -> f32 {
 }
 
 /// How the benchmark hands rays to the acceleration structure.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tracing {
     /// One ray at a time ([`Accel::intersect`], [`Accel::occluded`]), like the Embree
     /// program's `rtcIntersect1` / `rtcOccluded1`.
+    ///
+    /// [`Accel::intersect`]: crate::accel::Accel::intersect
+    /// [`Accel::occluded`]: crate::accel::Accel::occluded
     Single,
     /// A pixel's samples (shadow rays: 16 consecutive origins) as one packet
     /// ([`Accel::intersect_packet`], [`Accel::occluded_packet`]): the same rays and hits.
+    ///
+    /// [`Accel::intersect_packet`]: crate::accel::Accel::intersect_packet
+    /// [`Accel::occluded_packet`]: crate::accel::Accel::occluded_packet
     Packet,
+}
+
+impl std::str::FromStr for Tracing {
+    type Err = String;
+
+    /// `single` or `packet`.
+    fn from_str(s: &str) -> Result<Tracing, String> {
+        match s {
+            "single" => Ok(Tracing::Single),
+            "packet" => Ok(Tracing::Packet),
+            _ => Err(format!("`{s}` is not single or packet")),
+        }
+    }
 }
 
 /// The shadow-ray origin for the closest hit of `ray`: the hit point moved off the surface

@@ -44,7 +44,8 @@ impl MemoryEstimate {
 }
 
 /// Estimates the memory a render of `desc` needs, reading only the headers of its files
-/// (OBJ files, which have none, are scanned for their `v` and `f` lines).
+/// (OBJ files, which have none, are scanned for their `v` and `f` lines); fur is counted
+/// from its density and segments.
 pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> {
     let mut e = MemoryEstimate::default();
     for m in &desc.meshes {
@@ -69,6 +70,15 @@ pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> 
         let per_point = 16 + if colors { 12 } else { 0 } + if opacity { 4 } else { 0 };
         // Each strand's first point starts no segment.
         e.add(points * per_point + strands * 4, points.saturating_sub(strands));
+    }
+    for f in &desc.fur {
+        // Density is the expected root count over the whole mesh (baldness only removes
+        // roots), each hair `segments + 1` points with a colour and an opacity, and a root
+        // UV and clump per hair.
+        let d = &f.description;
+        let strands = u64::from(d.density.min(crate::fur::description::MAX_DENSITY));
+        let points = strands * (u64::from(d.segments) + 1);
+        e.add(points * (16 + 12 + 4) + strands * (4 + 8 + 4), strands * u64::from(d.segments));
     }
     let s = &desc.settings;
     e.image = u64::from(s.width) * u64::from(s.height) * std::mem::size_of::<Pixel>() as u64 * IMAGE_COPIES;
@@ -111,7 +121,7 @@ pub fn parse_memory_size(text: &str) -> Result<u64, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bench::Memory;
+    use crate::stats::Memory;
 
     #[test]
     fn memory_sizes_parse() {
@@ -133,7 +143,7 @@ mod tests {
         let e = estimate_memory(&desc).unwrap();
         let (world, _) = super::super::prepare(&desc).unwrap();
         let m = Memory::of(&world.accel);
-        let held = m.strand_points + m.strand_bvh + m.mesh + m.other_bvh;
+        let held = m.strand_points + m.strand_bvh + m.mesh + m.mesh_bvh + m.top_bvh;
         assert!(e.geometry + e.bvh >= held, "estimate {e:?} below the {held} bytes held");
         assert!(e.geometry + e.bvh <= 6 * held, "estimate {e:?} far above the {held} bytes held");
         assert_eq!(e.image, 64 * 48 * std::mem::size_of::<Pixel>() as u64 * IMAGE_COPIES);

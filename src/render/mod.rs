@@ -37,16 +37,11 @@ pub struct RenderStats {
     pub irradiance_records: u64,
 }
 
-/// Something told of progress: called with the number of tiles finished since the last call.
+/// Something told of progress: called with the tiles finished since the last call and the
+/// rays they traced.
 pub trait Progress: Sync {
-    /// `tiles` more tiles are done.
-    fn advance(&self, tiles: u64);
-}
-
-impl Progress for indicatif::ProgressBar {
-    fn advance(&self, tiles: u64) {
-        self.inc(tiles);
-    }
+    /// `tiles` more tiles are done, which traced `rays` rays.
+    fn advance(&self, tiles: u64, rays: u64);
 }
 
 /// Number of tiles the image is cut into.

@@ -38,12 +38,14 @@ pub(super) fn camera_at(c: &CameraToml, frame: u32) -> Result<(V3, V3, f32), Str
 }
 
 /// True when a file name holds a `#` frame pattern.
-pub(super) fn has_pattern(file: &Path) -> bool {
+pub fn has_pattern(file: &Path) -> bool {
     file.file_name().is_some_and(|n| n.to_string_lossy().contains('#'))
 }
 
-/// The file name with every run of `#` replaced by `frame`, zero-padded to the run's length.
-pub(super) fn at_frame(file: &Path, frame: u32) -> PathBuf {
+/// The file name with every run of `#` replaced by `frame`, zero-padded to the run's length
+/// (`hair.####.hair` at frame 7 is `hair.0007.hair`): scene files' frame patterns and the
+/// command line's output names alike.
+pub fn at_frame(file: &Path, frame: u32) -> PathBuf {
     let Some(name) = file.file_name().map(|n| n.to_string_lossy().into_owned()) else { return file.to_owned() };
     if !name.contains('#') {
         return file.to_owned();

@@ -14,7 +14,8 @@ mod schema;
 
 use crate::scene::{CameraDesc, Description, FurEntry, HairEntry, HairSource, MeshEntry, MeshSource};
 use crate::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
-use animation::{at_frame, camera_at, has_pattern};
+pub use animation::{at_frame, has_pattern};
+use animation::camera_at;
 use convert::{fur, hair_system, light, material, procedural, transform};
 use schema::{IrradianceCacheToml, LodToml, SceneToml};
 use std::path::{Path, PathBuf};
