@@ -1,4 +1,6 @@
-//! The command line on bad input: one clear error naming the file, a non-zero exit, no panic.
+//! The command line as a new user meets it: `tress SCENE` renders to an image named after
+//! the scene and never overwrites one silently, frame ranges, progress in logs, `--quiet`;
+//! and on bad input one clear error naming the file, a non-zero exit, no panic.
 
 use std::path::Path;
 use std::process::Command;
@@ -58,11 +60,15 @@ fn renders_a_scene_file_to_png_and_exr() {
     );
     std::fs::write(d.join("s.toml"), scene).unwrap();
     for out in ["s.png", "s.exr"] {
-        let (ok, stderr) = tress(&["render", "s.toml", "-o", out, "--quiet"], d);
+        let (ok, stderr) = tress(&["render", "s.toml", "-o", out], d);
         assert!(ok, "{stderr}");
         assert!(d.join(out).exists());
-        assert!(stderr.contains("rays"), "summary missing: {stderr}");
+        assert_eq!(stderr.matches("rays/s").count(), 1, "one summary: {stderr}");
+        assert!(stderr.contains(&format!("wrote {out} (8x6, 1 spp")), "{stderr}");
     }
+    // --quiet prints nothing but errors.
+    let (ok, stderr) = tress(&["render", "s.toml", "-o", "q.png", "--quiet"], d);
+    assert!(ok && stderr.is_empty() && d.join("q.png").exists(), "{stderr}");
     let img = image::open(d.join("s.png")).unwrap().to_rgb8();
     assert_eq!(img.dimensions(), (8, 6));
     // The sphere is in the middle of the frame, lit from above.
@@ -117,5 +123,137 @@ fn fur_export_writes_the_grown_fur_and_bad_fur_gives_clear_errors() {
     assert!(out.status.success());
     for name in ["Duckling:", "Squirrel:", "Llama:", "PolarBear:"] {
         assert!(listing.lines().any(|l| l.starts_with(name)), "`fur presets` lacks {name}: {listing}");
+    }
+}
+
+/// A lit sphere, 8x6 pixels.
+fn sphere_scene(d: &Path, name: &str) {
+    let scene = format!(
+        "{HEAD}[[light]]\ntype = \"distant\"\ndirection = [0, 1, 0]\nirradiance = [1, 1, 1]\n\
+         [[mesh]]\nshape = {{ type = \"sphere\", radius = 0.5 }}\nmaterial = {{ type = \"diffuse\", color = [1, 1, 1] }}\n"
+    );
+    std::fs::write(d.join(name), scene).unwrap();
+}
+
+#[test]
+fn a_scene_alone_renders_to_its_own_name_and_is_not_overwritten_without_force() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::create_dir(d.join("shots")).unwrap();
+    sphere_scene(&d.join("shots"), "fox.toml");
+    // `tress SCENE` is `tress render SCENE`; the image goes to the working directory.
+    let (ok, stderr) = tress(&["shots/fox.toml", "-q"], d);
+    assert!(ok, "{stderr}");
+    assert!(d.join("fox.png").exists() && !d.join("shots/fox.png").exists());
+    let first = std::fs::read(d.join("fox.png")).unwrap();
+    // A second render with another seed is refused and leaves the image alone.
+    std::fs::write(d.join("fox.png"), b"keep").unwrap();
+    assert_clear_error(&["shots/fox.toml", "--seed", "3"], d, &["fox.png exists", "--force"]);
+    assert_eq!(std::fs::read(d.join("fox.png")).unwrap(), b"keep");
+    assert_clear_error(&["render", "shots/fox.toml", "-o", "fox.png"], d, &["fox.png exists"]);
+    // --force (-f) overwrites; `render` spelled out works the same.
+    let (ok, stderr) = tress(&["render", "shots/fox.toml", "-f", "-q"], d);
+    assert!(ok, "{stderr}");
+    assert_eq!(std::fs::read(d.join("fox.png")).unwrap(), first);
+    // Short flags: -o, -s, -r, -t.
+    let (ok, stderr) = tress(&["shots/fox.toml", "-o", "small.png", "-s", "2", "-r", "4x3", "-t", "1"], d);
+    assert!(ok && stderr.contains("wrote small.png (4x3, 2 spp, 1 threads)"), "{stderr}");
+    assert_eq!(image::open(d.join("small.png")).unwrap().to_rgb8().dimensions(), (4, 3));
+    // No arguments at all: the help, not a render.
+    let out = Command::new(env!("CARGO_BIN_EXE_tress")).current_dir(d).output().unwrap();
+    assert!(String::from_utf8_lossy(&out.stderr).contains("Usage: tress [OPTIONS] [SCENE]"));
+    assert!(!d.join("demo.png").exists());
+}
+
+#[test]
+fn frame_ranges_write_one_numbered_image_per_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let scene = "[camera]\n[[camera.key]]\nframe = 1\neye = [0, 0, 3]\ntarget = [0, 0, 0]\n\
+        [[camera.key]]\nframe = 5\neye = [3, 0, 0]\ntarget = [0, 0, 0]\n\
+        [render]\nresolution = [8, 6]\nspp = 1\n\
+        [[light]]\ntype = \"distant\"\ndirection = [1, 0, 0]\nirradiance = [1, 1, 1]\n\
+        [[mesh]]\nshape = { type = \"sphere\", radius = 0.6 }\nmaterial = { type = \"diffuse\", color = [1, 1, 1] }\n";
+    std::fs::write(d.join("anim.toml"), scene).unwrap();
+    let (ok, stderr) = tress(&["anim.toml", "--frames", "1-3", "-o", "out/a.####.png"], d);
+    assert!(!ok && stderr.contains("out/a.0001.png") && stderr.contains("`out` does not exist"), "{stderr}");
+    std::fs::create_dir(d.join("out")).unwrap();
+    let (ok, stderr) = tress(&["anim.toml", "--frames", "1-3", "-o", "out/a.####.png"], d);
+    assert!(ok, "{stderr}");
+    for f in 1..=3 {
+        assert!(stderr.contains(&format!("wrote out/a.{f:04}.png (frame {f}, 8x6")), "{stderr}");
+    }
+    assert_eq!(stderr.matches("rays/s").count(), 1, "one summary for all frames: {stderr}");
+    // The camera moves between keys, from the dark side of the sphere to its lit side.
+    assert!(std::fs::read(d.join("out/a.0001.png")).unwrap() != std::fs::read(d.join("out/a.0003.png")).unwrap());
+    // Every second frame, the default name (scene stem and the frame, zero-padded).
+    let (ok, stderr) = tress(&["anim.toml", "--frames", "1-5x2", "-q"], d);
+    assert!(ok, "{stderr}");
+    let names: Vec<bool> = (1..=5).map(|f| d.join(format!("anim.{f:04}.png")).exists()).collect();
+    assert_eq!(names, [true, false, true, false, true]);
+    // The same frame through --frames and through a range of one renders the same image.
+    let (ok, stderr) = tress(&["anim.toml", "--frame", "3", "-o", "one.png", "-q"], d);
+    assert!(ok, "{stderr}");
+    assert_eq!(std::fs::read(d.join("one.png")).unwrap(), std::fs::read(d.join("anim.0003.png")).unwrap());
+    // Several frames need a # in the name; existing frames are not overwritten.
+    assert_clear_error(&["anim.toml", "--frames", "1-2", "-o", "a.png"], d, &["a.png", "2 frames", "a.####.png"]);
+    assert_clear_error(&["anim.toml", "--frames", "2-5"], d, &["anim.0003.png exists"]);
+    assert!(!d.join("anim.0002.png").exists(), "nothing rendered when a later frame would be overwritten");
+    assert_clear_error(&["anim.toml", "--frames", "5-1"], d, &["5-1", "before the first"]);
+}
+
+#[test]
+fn progress_goes_to_logs_as_lines_with_percent_rate_and_time_left() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // A demo render of a second or two; stderr is a pipe here, as in a farm log.
+    let slow = ["render", "--demo-strands", "2000", "-r", "128x96", "-s", "32", "-t", "2"];
+    let (ok, stderr) = tress(&[&slow[..], &["-o", "p.png", "--progress-every", "0.05"]].concat(), d);
+    assert!(ok, "{stderr}");
+    let lines: Vec<&str> = stderr.lines().filter(|l| l.contains(" % (")).collect();
+    assert!(!lines.is_empty(), "no progress lines: {stderr}");
+    for l in &lines {
+        assert!(l.contains(" tiles), ") && l.contains(" M rays/s, ETA "), "{l}");
+    }
+    assert!(!stderr.contains('\r') && !stderr.contains("\u{1b}["), "no terminal bar in a log: {stderr}");
+    assert_eq!(stderr.matches("rays          ").count(), 1, "{stderr}");
+    let (ok, stderr) = tress(&[&slow[..], &["-o", "q.png", "--progress-every", "0.05", "-q"]].concat(), d);
+    assert!(ok && stderr.is_empty(), "--quiet: {stderr}");
+}
+
+#[test]
+fn fur_export_needs_fur_and_the_memory_limit_counts_grown_fur() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    sphere_scene(d, "bare.toml");
+    assert_clear_error(&["fur", "export", "bare.toml", "-o", "fur.hair"], d, &["bare.toml", "no fur"]);
+    assert_clear_error(&["fur", "export", "bare.toml", "-o", "fur.usda"], d, &["bare.toml", "no fur"]);
+    assert_clear_error(&["export", "bare.toml", "-o", "all.hair"], d, &["bare.toml", "no strands"]);
+    assert!(!d.join("fur.hair").exists() && !d.join("fur.usda").exists() && !d.join("all.hair").exists());
+    // Two million hairs of 8 segments are some 600 MB before their BVH: over a 256 MiB
+    // limit, refused before any fur is grown. The bare sphere is far below it.
+    let furry = format!(
+        "{}[[fur]]\nmesh = 1\npreset = \"Mouse\"\ndensity = 2000000\nsegments = 8\n",
+        std::fs::read_to_string(d.join("bare.toml")).unwrap()
+    );
+    std::fs::write(d.join("furry.toml"), furry).unwrap();
+    assert_clear_error(&["furry.toml", "--memory-limit", "256M"], d, &["needs an estimated", "256.0 MiB"]);
+    let (ok, stderr) = tress(&["bare.toml", "--memory-limit", "256M", "-q"], d);
+    assert!(ok, "{stderr}");
+}
+
+#[test]
+fn help_shows_no_rustdoc_link_syntax() {
+    for command in [
+        &["--help"][..],
+        &["render", "--help"],
+        &["bench", "--help"],
+        &["info", "--help"],
+        &["fur", "export", "--help"],
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_tress")).args(command).output().unwrap();
+        let help = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success() && help.contains("Usage: tress"), "{command:?}: {help}");
+        assert!(!help.contains("[`") && !help.contains("`]"), "{command:?} shows rustdoc links: {help}");
     }
 }

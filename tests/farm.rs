@@ -113,7 +113,9 @@ fn a_killed_render_resumes_from_its_checkpoint_to_the_same_image() {
     assert!(!saved.is_complete(), "the render finished before it was killed: make SLOW slower");
     assert!(!d.join("out.exr").exists());
 
-    let out = tress(&args(SLOW, &["-o", "out.exr", "--checkpoint", "ck.exr"]), d);
+    // Not quiet, to see the resume reported.
+    let loud: Vec<&str> = SLOW.iter().copied().filter(|a| *a != "--quiet").collect();
+    let out = tress(&args(&loud, &["-o", "out.exr", "--checkpoint", "ck.exr"]), d);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stderr}");
     assert!(stderr.contains("resuming from ck.exr"), "{stderr}");
@@ -161,8 +163,11 @@ fn sigint_stops_the_render_and_writes_a_valid_partial_image() {
             assert!(got.pixels.iter().all(|p| *p == empty), "unfinished tile {t} is not empty");
         }
     }
-    // The checkpoint saved at the interruption has the same tiles, and resuming finishes it.
+    // The checkpoint saved at the interruption has the same tiles, and resuming finishes it,
+    // writing over the render's own partial image without --force.
     assert_eq!(Partial::load(&d.join("ck.exr")).unwrap().state.done, part.state.done);
+    ok(&args(SLOW, &["-o", "out.exr", "--checkpoint", "ck.exr"]), d);
+    assert!(std::fs::read(d.join("out.exr")).unwrap() == std::fs::read(path).unwrap());
 }
 
 /// Library level: a render stopped after some tiles, saved, loaded and resumed, equals one
