@@ -3,8 +3,8 @@
 # one line per figure: NAME tress=X embree=Y ratio=Z (ratio = tress / embree).
 #
 # Usage: scripts/bench-vs-embree.sh DIR [REPS]
-#   DIR   a scene directory written by shared/scenes/gen_scenes.py (scene.json, torus.obj,
-#         hairy_torus.hair), e.g. `python3 gen_scenes.py /tmp/ht720k` (needs numpy).
+#   DIR   a scene directory written by scripts/gen_scenes.py (scene.json, torus.obj,
+#         hairy_torus.hair), e.g. `python3 scripts/gen_scenes.py /tmp/ht720k` (needs numpy).
 # Needs Embree 3 (Debian: apt-get install -y libembree-dev); builds bench/embree/bench.
 # Throughput is reported by wall clock and by CPU time: on a shared machine the CPU-time
 # figures (rays per CPU-second times threads) are the steadier ones.

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Renders the same reference scene with tress, Mitsuba 3 and Blender Cycles (640x480,
 # 16 spp, direct lighting, every core), one after the other, REPS rounds, and prints one
-# line per figure: NAME tress=X other=Y ratio=Z (ratio = tress / other; the issue-7 target
+# line per figure: NAME tress=X other=Y ratio=Z (ratio = tress / other; the target
 # is a ratio of at most 0.5 against the faster peer).
 #
 # Usage: scripts/compare-end-to-end.sh DIR [REPS]
-#   DIR   a scene directory written by shared/scenes/gen_scenes.py (scene.json, torus.obj,
-#         hairy_torus.hair, hairy_torus.txt), e.g. `python3 gen_scenes.py /tmp/ht720k`.
+#   DIR   a scene directory written by scripts/gen_scenes.py (scene.json, torus.obj,
+#         hairy_torus.hair, hairy_torus.txt), e.g. `python3 scripts/gen_scenes.py /tmp/ht720k`.
 # Needs: pip install mitsuba bpy numpy; a libLLVM that Dr.Jit's LLVM backend can use
 # (LLVM 15 fails to select `fminimum`: apt-get install -y libllvm19; the newest
 # /usr/lib/*/libLLVM* is passed as DRJIT_LIBLLVM_PATH unless it is set).
@@ -45,7 +45,7 @@ run() {
   echo "$name round $rep: $(awk '{printf "wall %s s, cpu %.2f s", $3, $5 + $6}' "$out/$name.$rep.time")" >&2
 }
 for rep in $(seq 1 "$reps"); do
-  run tress "$rep" "$root/target/release/tress" render "$dir" -o "$out/tress.exr" --quiet
+  run tress "$rep" "$root/target/release/tress" render "$dir" -o "$out/tress.exr" --force
   run mitsuba "$rep" "$py" "$root/scripts/mitsuba_reference.py" "$dir" "$out/mitsuba.exr"
   run cycles "$rep" "$py" "$root/scripts/cycles_reference.py" "$dir" "$out/cycles.exr"
 done

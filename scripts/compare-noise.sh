@@ -6,7 +6,7 @@
 #   NAME spp=N render_s=T rmse=R
 #
 # Usage: scripts/compare-noise.sh DIR [REF_SPP] [MITSUBA_SPP...]
-#   DIR          a scene directory of shared/scenes/gen_scenes.py (see compare-end-to-end.sh)
+#   DIR          a scene directory of scripts/gen_scenes.py (see compare-end-to-end.sh)
 #   REF_SPP      samples of the reference (default 256), rendered by tress with seed 7, so
 #                its noise is independent of the seed-0 images measured against it
 #   MITSUBA_SPP  sample counts of Mitsuba's images (default: the scene's, 3 and 4 times it)
@@ -33,7 +33,7 @@ cargo build --release --quiet --manifest-path "$root/Cargo.toml"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-tress() { "$root/target/release/tress" render "$dir" --quiet "$@"; }
+tress() { "$root/target/release/tress" render "$dir" --force "$@"; }
 mitsuba() { "$py" "$root/scripts/mitsuba_reference.py" "$dir" "$@"; }
 seconds() { sed -nE 's/^(mitsuba )?render +([0-9.]+) s.*/\2/p' "$1"; }
 # logged NAME CMD...: runs CMD with its output in $out/NAME.log, shown if it fails.

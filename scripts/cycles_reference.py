@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Renders a reference scene directory of shared/scenes/gen_scenes.py with Blender Cycles
+"""Renders a reference scene directory of scripts/gen_scenes.py with Blender Cycles
 (the `bpy` module, CPU, direct lighting), for an end-to-end time beside `tress render DIR`.
 
 Usage: python3 scripts/cycles_reference.py DIR OUT.exr [--spp N] [--threads N]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Renders a reference scene directory of shared/scenes/gen_scenes.py with Mitsuba 3 (the
+"""Renders a reference scene directory of scripts/gen_scenes.py with Mitsuba 3 (the
 LLVM variant, direct lighting), for an end-to-end time beside `tress render DIR`.
 
 Usage: python3 scripts/mitsuba_reference.py DIR OUT.exr [--spp N] [--seed N] [--sampler NAME]

@@ -42,6 +42,6 @@ mesh = 1
 preset = "$name"
 seed = 1
 SCENE
-    ./target/release/tress render "$tmp/$name.toml" -o "docs/presets/$name.png" --quiet 2>/dev/null
+    ./target/release/tress render "$tmp/$name.toml" -o "docs/presets/$name.png" --force --quiet
     echo "docs/presets/$name.png"
 done
