@@ -1,5 +1,4 @@
-//! Measures what level of detail buys on a scene (default `scenes/lod_field.toml`), as
-//! issue 5 asks:
+//! Measures what level of detail buys on a scene (default `scenes/lod_field.toml`):
 //! - error: RMSE of linear RGB against a high-sample reference rendered without LOD, over
 //!   the whole image and over the far region (pixels whose reference depth exceeds `FAR`),
 //!   at 1, 4 and 16 spp, LOD off, on (as the scene sets it) and smooth;
@@ -11,7 +10,9 @@
 //!   strand set), at 16 spp without, and at the reference spp without LOD.
 //!
 //! `cargo run --release --example lod_quality -- [SCENE.toml] [REFERENCE_SPP] [WIDTH HEIGHT] [FRAMES]`
-//! (defaults: the scene's size, 256 spp, 24 frames; 0 frames skips the pull-back).
+//! (defaults: the scene's size, 256 spp, 24 frames; 0 frames skips the pull-back). The
+//! figures go to stdout; what is being rendered goes to stderr as it starts, since the
+//! whole run takes minutes.
 
 use tress::film::Film;
 use tress::prepare::prepare;
@@ -98,6 +99,7 @@ fn flicker(desc: &Description, frames: u32, spp: u32, lod: Lod, masks: &mut Vec<
     let mut previous: Option<Film> = None;
     let mut sum = 0.0;
     for frame in 0..frames {
+        eprintln!("  pull-back at {spp} spp, LOD {}: frame {} of {frames}", lod.name(), frame + 1);
         let mut d = desc.clone();
         d.camera.eye += back * (STEP * frame as f32);
         let film = render(&d, spp, 0, lod).0;
@@ -123,6 +125,7 @@ fn main() {
     if let (Some(w), Some(h)) = (args.get(3), args.get(4)) {
         (desc.settings.width, desc.settings.height) = (w.parse().expect("width"), h.parse().expect("height"));
     }
+    eprintln!("rendering the {ref_spp}-spp reference without LOD");
     let (reference, t_ref) = render(&desc, ref_spp, 0, Lod::Off);
     let all = vec![true; reference.pixels.len()];
     let far = far_mask(&reference);
@@ -139,6 +142,7 @@ fn main() {
     // should be set against.
     for spp in [1, 4, 16] {
         for lod in [Lod::Off, Lod::On, Lod::Smooth] {
+            eprintln!("rendering {spp} spp, LOD {}", lod.name());
             let (a, t) = render(&desc, spp, 1, lod);
             let (cov, col) = look(&a, &far);
             println!(

@@ -736,7 +736,7 @@ impl Split {
 /// reset and sweep) outweighs the items', and a handful of items needs no 32 candidate planes.
 fn choose_split(items: &[BuildItem], bounds: &Aabb, centroids: &Aabb) -> Option<Split> {
     // The thresholds: the fewest instructions at which the traced hairy torus's camera and
-    // shadow rays cost within 0.5 % of 32 bins everywhere (docs/performance.md, session 5).
+    // shadow rays cost within 0.5 % of 32 bins everywhere (docs/performance.md, tuning constants).
     match items.len() {
         0..=8 => binned_split::<4>(items, bounds, centroids),
         9..=32 => binned_split::<8>(items, bounds, centroids),

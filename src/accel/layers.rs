@@ -38,7 +38,7 @@ pub struct LayerHit {
 /// light where a hit behind turns from letting light through to blocking it as strands
 /// slide. With the camera's blend alike (`SMOOTH_BLEND_TRANSMITTANCE` of the renderer),
 /// the far fur of `scenes/lod_field.toml` flickers 1.08 times as much as 256 spp without
-/// LOD at 0.2, 1.24 times at 0.35 (docs/performance.md, session 8).
+/// LOD at 0.2, 1.24 times at 0.35 (docs/performance.md, tuning constants).
 pub const SMOOTH_EXACT_SHADOW_TRANSMITTANCE: f32 = 0.2;
 
 /// Opacity of `object`'s primitive `prim` at a hit seen at `level` by the ray from

@@ -255,7 +255,7 @@ fn trace_from(
     // Where a ray most likely meets semi-transparent coarse fur first
     // ([`CameraHint::LayersFirst`]), the closest hit would be paid on top of the layers'
     // query: 10 k instructions of 30 k on such rays in scenes/lod_field.toml, where the
-    // thin fur is drawn semi-transparent from 2 to 3 units on (docs/performance.md, session 5).
+    // thin fur is drawn semi-transparent from 2 to 3 units on.
     let layers_first = matches!(hint, CameraHint::LayersFirst);
     let opaque_first = tail.is_none() || !layers_first && !world.accel.has_strand_opacity();
     let (hit, shadows) = match hint {
@@ -462,7 +462,7 @@ impl PixelShadows {
 /// no singular light ([`crate::light::Light::is_singular`]): every layer traces its own
 /// shadow ray to it. A pick toggles to another layer, whose shadow may differ entirely, as
 /// strands slide under a fixed sample; that made most of the far fur's flicker in a camera
-/// move (docs/performance.md, session 8).
+/// move (docs/performance.md, tried and not kept).
 pub(super) struct SharedShadows {
     /// Per light; inline for the usual few lights, so a camera ray allocates nothing.
     picks: SmallVec<[Pick; 4]>,
