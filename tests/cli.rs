@@ -200,6 +200,17 @@ fn frame_ranges_write_one_numbered_image_per_frame() {
     assert_clear_error(&["anim.toml", "--frames", "2-5"], d, &["anim.0003.png exists"]);
     assert!(!d.join("anim.0002.png").exists(), "nothing rendered when a later frame would be overwritten");
     assert_clear_error(&["anim.toml", "--frames", "5-1"], d, &["5-1", "before the first"]);
+    // Frames outside the camera keys warn; --quiet silences it.
+    let (ok, stderr) = tress(&["anim.toml", "--frames", "6-7", "-o", "late.#.png"], d);
+    assert!(ok, "{stderr}");
+    assert_eq!(stderr.matches("outside the camera keys (frames 1 to 5)").count(), 2, "{stderr}");
+    let (ok, stderr) = tress(&["anim.toml", "--frame", "8", "-o", "late.png", "-q"], d);
+    assert!(ok && stderr.is_empty(), "{stderr}");
+    // A still scene warns that its frames are all alike, once for the whole range.
+    sphere_scene(d, "still.toml");
+    let (ok, stderr) = tress(&["still.toml", "--frames", "1-3"], d);
+    assert!(ok, "{stderr}");
+    assert_eq!(stderr.matches("every frame renders the same image").count(), 1, "{stderr}");
 }
 
 #[test]

@@ -1,6 +1,6 @@
 //! The fur generator's semantics (issue 3): root counts, baldness, orientation, curl,
 //! maps, clumping, attraction, determinism and stability, each against the value the
-//! specification (`shared/spec/maya-fur-hair.md`) or geometry says it must have.
+//! specification (`docs/maya-fur-hair.md`) or geometry says it must have.
 
 use glam::Vec3;
 use std::collections::HashMap;

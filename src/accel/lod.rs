@@ -3,8 +3,8 @@
 //! per ray from its cone at the distance where it meets the hair.
 //!
 //! The thesis built eight grids, one per level, and re-shot each ray level by level; it
-//! could handle one hair thickness per scene (section 2.2.2). Here (shared/DESIGN.md, "LOD
-//! without eight grids"):
+//! could handle one hair thickness per scene (section 2.2.2). Here the level is found
+//! during the one traversal, so several hair thicknesses share a scene:
 //! - each strand gets a random pruning rank; level `l` keeps the `ceil(N / d^l)` strands of
 //!   lowest rank, so the levels are nested;
 //! - the nested sets split into disjoint groups: group `k` holds the strands whose last

@@ -1,5 +1,5 @@
 //! `FurDescription`: every attribute of Maya Fur's FurDescription node (specification
-//! `shared/spec/maya-fur-hair.md`, table 2.2) under Maya's names, with Maya's *node*
+//! `docs/maya-fur-hair.md`, table 2.2) under Maya's names, with Maya's *node*
 //! defaults, so a description that only states changed values (as Maya files do) means
 //! what it meant in Maya.
 //!

@@ -1,5 +1,5 @@
 //! Attribute evaluation over the surface: global value, map, multiplier, offset and noise
-//! (specification `shared/spec/maya-fur-hair.md`, section 2.1):
+//! (specification `docs/maya-fur-hair.md`, section 2.1):
 //!
 //! ```text
 //! base(u, v)  = map present ? map(u, v) * MapMult + MapOffset : X

@@ -3,7 +3,7 @@
 //! mapped ambient colour).
 //!
 //! - [`description`]: `FurDescription`, every attribute of Maya's FurDescription node under
-//!   Maya's names and node defaults (specification `shared/spec/maya-fur-hair.md`).
+//!   Maya's names and node defaults (specification `docs/maya-fur-hair.md`).
 //! - [`maps`]: attribute maps (images at the surface UV, per-vertex values), multiplier,
 //!   offset and noise.
 //! - [`presets`]: Maya's fur presets by name, as data files shipped in the crate.

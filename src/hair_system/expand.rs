@@ -1,5 +1,5 @@
 //! Expanding guides into render hairs: each guide becomes a clump of `hairs_per_clump`
-//! hairs (thesis section 2.1.3; shared/spec/maya-fur-hair.md section 5.5).
+//! hairs (thesis section 2.1.3; docs/maya-fur-hair.md section 5.5).
 //!
 //! For each guide:
 //! 1. **Sub-segments**: the guide is refined with a uniform Catmull-Rom spline (Catmull and

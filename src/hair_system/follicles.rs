@@ -1,5 +1,5 @@
 //! Follicles: guide hairs grown on a mesh, as Maya's Create Hair dialog places them
-//! (shared/spec/maya-fur-hair.md sections 1.2 and 5.4): on a U by V grid over the
+//! (docs/maya-fur-hair.md sections 1.2 and 5.4): on a U by V grid over the
 //! surface's UV square, or at random points, with a number of points per hair and a length.
 //!
 //! Guides leave along the surface normal. Maya then gives them their rest shape by
@@ -200,7 +200,7 @@ pub fn grow_guides(mesh: &TriangleMesh, params: &FollicleParams, seed: u32) -> R
 
 /// The follicle at each of `uvs` on `mesh` (world space, as the mesh is), with the
 /// triangle it lies on; `None` where no triangle covers the UV. Maya's follicles are placed
-/// this way, by `parameterU` and `parameterV` (shared/spec/maya-fur-hair.md section 5.4).
+/// this way, by `parameterU` and `parameterV` (docs/maya-fur-hair.md section 5.4).
 pub fn follicles_at_uvs(mesh: &TriangleMesh, uvs: &[[f32; 2]]) -> Result<Vec<Option<(Follicle, u32)>>, String> {
     let mesh_uvs = mesh.uvs.as_ref().ok_or("placing follicles by UV needs a mesh with UVs")?;
     if mesh.indices.is_empty() {

@@ -1,5 +1,5 @@
 //! Maya Hair: hair systems that expand a few guide ("master") hairs into clumps of render
-//! hairs (thesis section 2.1.3; shared/spec/maya-fur-hair.md section 5).
+//! hairs (thesis section 2.1.3; docs/maya-fur-hair.md section 5).
 //!
 //! Guides come from a `.hair` file or are grown as follicles on a mesh
 //! ([`follicles`], what Maya's Create Hair dialog does); [`mod@expand`] turns them into a

@@ -2,7 +2,7 @@
 //! interpolation), with `position` 0 at the root and 1 at the tip.
 //!
 //! Maya writes a ramp key as three numbers, `position value interp`, with the
-//! interpolation enum 0 None, 1 Linear, 2 Smooth, 3 Spline (shared/spec/maya-fur-hair.md
+//! interpolation enum 0 None, 1 Linear, 2 Smooth, 3 Spline (docs/maya-fur-hair.md
 //! section 5.3, observed in `.ma` files). How each interpolation curves is not documented;
 //! this module's reading of it, applied to the interval from a key to the next one:
 //!

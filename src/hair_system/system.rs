@@ -1,5 +1,5 @@
 //! [`HairSystem`]: the render attributes of Maya's `hairSystem` node that turn guide
-//! curves into clumps of render hairs (thesis section 2.1.3; shared/spec/maya-fur-hair.md
+//! curves into clumps of render hairs (thesis section 2.1.3; docs/maya-fur-hair.md
 //! section 5). Names follow Maya's attribute names in snake case; the short name of each
 //! (`.hpc`, `.cwd`, ...) is in its documentation, and defaults are the node defaults.
 

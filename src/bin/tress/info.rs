@@ -5,8 +5,8 @@ use anyhow::Result;
 use std::path::PathBuf;
 use tress::accel::Shape;
 use tress::prepare::prepare_owned;
-use tress::world::World;
 use tress::stats::{human_bytes, Memory};
+use tress::world::World;
 
 /// The arguments of `tress info`.
 #[derive(clap::Args)]

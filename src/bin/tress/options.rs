@@ -71,11 +71,32 @@ fn parse_filter(s: &str) -> Result<tress::film::PixelFilter, String> {
 /// Reads the scene at `frame` (the demo scene when there is no file), prints the
 /// reader's warnings unless `quiet`, and applies the overrides.
 pub fn load(scene: Option<&Path>, o: &Overrides, frame: Option<u32>, quiet: bool) -> Result<Description> {
+    let (desc, warnings) = load_with_warnings(scene, o, frame)?;
+    if !quiet {
+        for w in warnings {
+            eprintln!("warning: {w}");
+        }
+    }
+    Ok(desc)
+}
+
+/// [`load`], returning the reader's warnings (each naming the file) instead of printing
+/// them.
+pub fn load_with_warnings(
+    scene: Option<&Path>,
+    o: &Overrides,
+    frame: Option<u32>,
+) -> Result<(Description, Vec<String>)> {
     let (mut desc, notes) = match scene {
         // A file or a reference scene directory of scripts/gen_scenes.py (scene.json);
         // the warnings name the file.
         Some(path) => tress::io::read_scene(path, frame)?,
         None => (tress::demo::description(o.demo_strands, 1), Vec::new()),
+    };
+    apply(&mut desc, o);
+    desc.validate()?;
+    Ok((desc, notes))
+}
     };
     if !quiet {
         for w in notes {
@@ -84,7 +105,7 @@ pub fn load(scene: Option<&Path>, o: &Overrides, frame: Option<u32>, quiet: bool
     }
     apply(&mut desc, o);
     desc.validate()?;
-    Ok(desc)
+    Ok((desc, notes))
 }
 
 fn apply(desc: &mut Description, o: &Overrides) {

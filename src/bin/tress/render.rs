@@ -4,18 +4,19 @@
 
 use crate::frames::{parse_frames, Frames};
 use crate::interrupt::Interrupt;
-use crate::options::{load, pool, Overrides};
+use crate::options::{load_with_warnings, pool, Overrides};
 use crate::progress::Progress;
 use anyhow::{bail, Result};
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use tress::film::Region;
 use tress::io::scene_file::{at_frame, has_pattern};
 use tress::partial::{fingerprint, Checkpointer, Partial};
-use tress::render::{render_tiles, Control, RenderStats, TiledFilm};
 use tress::prepare::prepare_owned;
-use tress::world::World;
+use tress::render::{render_tiles, Control, RenderStats, TiledFilm};
 use tress::stats::{human_bytes, peak_memory_bytes, Memory};
+use tress::world::World;
 
 /// The arguments of `tress render`.
 #[derive(clap::Args)]
@@ -90,11 +91,13 @@ struct Rendered {
 pub fn run(args: &RenderArgs) -> Result<()> {
     let targets = plan(args)?;
     let interrupt = Interrupt::install()?;
+    // Warnings each frame repeats are printed once.
+    let mut warned = HashSet::new();
     let mut last = None;
     let mut total = RenderStats::default();
     let mut build = (Duration::ZERO, Duration::ZERO);
     for target in &targets {
-        let r = render_target(args, target, &interrupt)?;
+        let r = render_target(args, target, &interrupt, &mut warned)?;
         (total.rays, total.elapsed) = (total.rays + r.stats.rays, total.elapsed + r.stats.elapsed);
         total.irradiance_records += r.stats.irradiance_records;
         (build.0, build.1) = (build.0 + r.build.0, build.1 + r.build.1);
@@ -191,19 +194,26 @@ fn with_pattern(path: &Path) -> PathBuf {
 
 /// Loads, prepares and renders one image and writes it; an interrupted render writes what
 /// it has and ends the process with the signal's status.
-fn render_target(args: &RenderArgs, target: &Target, interrupt: &Interrupt) -> Result<Rendered> {
-    let desc = load(args.scene.as_deref(), &args.overrides, target.frame, args.quiet)?;
+fn render_target(
+    args: &RenderArgs,
+    target: &Target,
+    interrupt: &Interrupt,
+    warned: &mut HashSet<String>,
+) -> Result<Rendered> {
+    let (desc, warnings) = load_with_warnings(args.scene.as_deref(), &args.overrides, target.frame)?;
+    let mut warn = |w: String| {
+        if !args.quiet && warned.insert(w.clone()) {
+            eprintln!("warning: {w}");
+        }
+    };
+    warnings.into_iter().for_each(&mut warn);
     if let Some(limit) = args.job.memory_limit {
         check_memory(&desc, limit)?;
     }
     let pool = pool(desc.settings.threads)?;
     // The description is not needed again: its inline strands move into the world.
     let (world, times) = pool.install(|| prepare_owned(desc))?;
-    if !args.quiet {
-        for w in &world.warnings {
-            eprintln!("warning: {w}");
-        }
-    }
+    world.warnings.iter().cloned().for_each(warn);
     let s = &world.settings;
     let region = match args.job.tile {
         Some((i, n)) => Region::band(s.width, s.height, i, n).map_err(anyhow::Error::msg)?,

@@ -1,6 +1,6 @@
 //! Maya Fur's `FurDescription` nodes as read from a `.ma` file: a plain record of the
 //! description's attributes under Maya's long names, starting from the node defaults
-//! (shared/spec/maya-fur-hair.md section 2.2: a `.ma` file stores only the attributes that
+//! (docs/maya-fur-hair.md section 2.2: a `.ma` file stores only the attributes that
 //! differ from them), plus the meshes it is attached to.
 //!
 //! Growing the fur is the job of [`crate::fur`]; [`fur_description`] carries the
@@ -37,7 +37,7 @@ const fn rgb(long: &'static str, short: &'static str, v: f64) -> FurAttr {
     FurAttr { long, short, default: FurValue::Color([v, v, v]) }
 }
 
-/// The attributes of shared/spec/maya-fur-hair.md table 2.2 with their **node** defaults
+/// The attributes of docs/maya-fur-hair.md table 2.2 with their **node** defaults
 /// (not the values Maya's UI gives a new description).
 const ATTRIBUTES: [FurAttr; 29] = [
     num("LightModel", "lmd", 2.0),

@@ -1,5 +1,5 @@
 //! Maya ASCII (`.ma`) scenes: meshes, NURBS curves, hair systems with their follicles,
-//! FurDescriptions, cameras and lights (shared/spec/maya-fur-hair.md section 6).
+//! FurDescriptions, cameras and lights (docs/maya-fur-hair.md section 6).
 //!
 //! [`parse`] turns the text into a node graph; this module reads the nodes tress knows
 //! into an [`Imported`] scene:

@@ -1,6 +1,6 @@
 //! Maya ASCII text into a node graph.
 //!
-//! A `.ma` file is a MEL script of a few commands (shared/spec/maya-fur-hair.md section 6):
+//! A `.ma` file is a MEL script of a few commands (docs/maya-fur-hair.md section 6):
 //! `createNode TYPE -n NAME -p PARENT;` makes a node and selects it, `setAttr ".attr"
 //! values;` sets an attribute of the selected node (or of `node.attr`), `connectAttr
 //! "a.out" "b.in";` connects two plugs, `select -ne NAME;` selects an existing node and

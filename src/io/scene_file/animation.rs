@@ -4,6 +4,22 @@
 use super::schema::{CameraKeyToml, CameraToml, V3};
 use std::path::{Path, PathBuf};
 
+/// Why rendering `frame` of a scene may not be what was meant: a frame outside the camera
+/// keys holds the camera still, and a scene with neither keys nor frame patterns renders the
+/// same image at every frame.
+pub(super) fn frame_warning(c: &CameraToml, animated: bool, frame: u32) -> Option<String> {
+    match (c.key.first(), c.key.last()) {
+        (Some(first), Some(last)) if frame < first.frame || frame > last.frame => Some(format!(
+            "frame {frame} is outside the camera keys (frames {} to {}): the camera holds at the nearest key",
+            first.frame, last.frame
+        )),
+        _ if !animated => {
+            Some("the scene has no camera keys or `#` frame patterns: every frame renders the same image".into())
+        }
+        _ => None,
+    }
+}
+
 /// Eye, target and field of view at `frame`: the fixed camera, or the keys interpolated
 /// linearly (held before the first key and after the last).
 pub(super) fn camera_at(c: &CameraToml, frame: u32) -> Result<(V3, V3, f32), String> {

@@ -15,7 +15,7 @@ mod schema;
 use crate::scene::{CameraDesc, Description, FurEntry, HairEntry, HairSource, MeshEntry, MeshSource};
 use crate::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
 pub use animation::{at_frame, has_pattern};
-use animation::camera_at;
+use animation::{camera_at, frame_warning};
 use convert::{fur, hair_system, light, material, procedural, transform};
 use schema::{IrradianceCacheToml, LodToml, SceneToml};
 use std::path::{Path, PathBuf};
@@ -62,7 +62,8 @@ pub fn read(path: &Path, frame: Option<u32>) -> Result<(Description, Vec<String>
 /// and every run of `#` in a file name becomes the frame number, zero-padded to the run's
 /// length (`hair.####.hair` at frame 7 is `hair.0007.hair`). A scene with keys or
 /// patterns needs a frame; a frame given to a scene with neither changes nothing.
-/// Returns the warnings of the scene's `[[import]]`s with it.
+/// Returns with it the warnings of the scene's `[[import]]`s and of a frame outside its
+/// camera keys (or given to a scene that is not animated).
 pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description, Vec<String>), SceneFileError> {
     let syntax = |e: toml::de::Error| SceneFileError::Syntax { path: path.to_owned(), message: e.to_string() };
     let invalid = |message: String| SceneFileError::Invalid { path: path.to_owned(), message };
@@ -82,6 +83,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             .filter_map(|m| m.file.as_ref())
             .chain(scene.hair.iter().map(|h| &h.file))
             .any(|f| has_pattern(f));
+    let frame_warning = frame.and_then(|f| frame_warning(c, animated, f));
     let frame = match (frame, animated) {
         (None, true) => {
             return Err(invalid(
@@ -173,7 +175,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         furs.push(fur(f, meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?);
     }
     // Imported entries come after the file's own, so `[[mesh]]` numbers stay as written.
-    let mut warnings = Vec::new();
+    let mut warnings: Vec<String> = frame_warning.into_iter().collect();
     for (i, imp) in scene.import.iter().enumerate() {
         let what = |m: String| invalid(format!("import {}: {m}", i + 1));
         let file = base.join(&imp.file);

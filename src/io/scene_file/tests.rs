@@ -355,6 +355,15 @@ fn camera_keys_interpolate_and_frame_patterns_substitute() {
     assert!(e.contains("dir/anim.toml") && e.contains("--frame"), "{e}");
     // A still scene ignores the frame.
     assert_eq!(super::parse(MINIMAL, path, Some(3)).unwrap().0, scene(MINIMAL, path).unwrap());
+    // Frames outside the keys, and frames of a still scene, warn; frames between keys do not.
+    let warnings = |text, f| super::parse(text, path, Some(f)).unwrap().1;
+    assert!(warnings(KEYS, 15).is_empty());
+    for f in [0, 99] {
+        let w = warnings(KEYS, f);
+        assert!(w.len() == 1 && w[0].contains(&format!("frame {f} is outside the camera keys")), "{w:?}");
+    }
+    assert!(warnings(MINIMAL, 3)[0].contains("no camera keys"));
+    assert!(super::parse(MINIMAL, path, None).unwrap().1.is_empty());
 }
 
 #[test]
