@@ -97,16 +97,6 @@ pub fn load_with_warnings(
     desc.validate()?;
     Ok((desc, notes))
 }
-    };
-    if !quiet {
-        for w in notes {
-            eprintln!("warning: {w}");
-        }
-    }
-    apply(&mut desc, o);
-    desc.validate()?;
-    Ok((desc, notes))
-}
 
 fn apply(desc: &mut Description, o: &Overrides) {
     let s = &mut desc.settings;
