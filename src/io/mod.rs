@@ -29,7 +29,16 @@ pub fn read_mesh(path: &Path) -> Result<TriangleMesh, LoadError> {
 }
 
 /// The scene formats [`read_imported`] reads, by extension.
-pub const IMPORTED_EXTENSIONS: [&str; 3] = ["ma", "pbrt", "usda"];
+pub const IMPORTED_EXTENSIONS: [&str; 6] = ["ma", "pbrt", "usda", "usdc", "usdz", "usd"];
+
+/// What to read of a file that holds more than one frame or camera.
+#[derive(Clone, Debug, Default)]
+pub struct ImportOptions {
+    /// The frame (a USD time code); `None` reads the file's start (USD's `startTimeCode`).
+    pub frame: Option<u32>,
+    /// The camera to render through, by its path in the file (USD); `None` takes the first.
+    pub camera: Option<String>,
+}
 
 /// True when `path` names a file [`read_imported`] reads (by its extension).
 pub fn is_imported(path: &Path) -> bool {
@@ -41,14 +50,22 @@ fn extension(path: &Path) -> Option<String> {
     path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase)
 }
 
-/// Reads a Maya ASCII (`.ma`), pbrt-v4 (`.pbrt`) or USD text (`.usda`) scene, choosing the
-/// reader by the file's extension.
+/// Reads a Maya ASCII (`.ma`), pbrt-v4 (`.pbrt`) or USD (`.usda`, `.usdc`, `.usdz`,
+/// `.usd`) scene, choosing the reader by the file's extension.
 pub fn read_imported(path: &Path) -> Result<imported::Imported, LoadError> {
+    read_imported_with(path, &ImportOptions::default())
+}
+
+/// [`read_imported`] at a frame and through a camera of the file's.
+pub fn read_imported_with(path: &Path, options: &ImportOptions) -> Result<imported::Imported, LoadError> {
     match extension(path).as_deref() {
         Some("ma") => maya_ascii::read_maya(path),
         Some("pbrt") => pbrt::read_pbrt(path),
-        Some("usda") => usd::read_usd(path),
-        _ => Err(LoadError::format(path, "unknown scene format: expected a .ma, .pbrt or .usda file")),
+        Some("usda" | "usdc" | "usdz" | "usd") => usd::read_usd(path, options),
+        _ => Err(LoadError::format(
+            path,
+            "unknown scene format: expected a .ma, .pbrt, .usda, .usdc, .usdz or .usd file",
+        )),
     }
 }
 
@@ -67,11 +84,23 @@ pub enum ReadSceneError {
 /// Maya ASCII, pbrt-v4 or USD text file (by extension), or a scene TOML at `frame`.
 /// Returns the description and the reader's warnings, each prefixed with the file's name.
 pub fn read_scene(path: &Path, frame: Option<u32>) -> Result<(crate::scene::Description, Vec<String>), ReadSceneError> {
+    read_scene_with(path, &ImportOptions { frame, camera: None })
+}
+
+/// [`read_scene`] through a camera of the file's (USD files with several).
+pub fn read_scene_with(
+    path: &Path,
+    options: &ImportOptions,
+) -> Result<(crate::scene::Description, Vec<String>), ReadSceneError> {
+    let frame = options.frame;
     if path.is_dir() {
         return Ok((reference_scene::read_reference_scene(path)?, Vec::new()));
     }
-    let (desc, warnings) =
-        if is_imported(path) { read_imported(path)?.into_description() } else { scene_file::read(path, frame)? };
+    let (desc, warnings) = if is_imported(path) {
+        read_imported_with(path, options)?.into_description()
+    } else {
+        scene_file::read(path, frame)?
+    };
     Ok((desc, warnings.into_iter().map(|w| format!("{}: {w}", path.display())).collect()))
 }
 

@@ -2,6 +2,11 @@
 //! up axis, round trips, errors, and mutated input.
 
 use super::*;
+use crate::accel::Shape;
+use crate::geometry::{StrandSet, TriangleMesh};
+use crate::io::ImportOptions;
+use crate::light::Light;
+use crate::scene::HairSource;
 use proptest::prelude::*;
 
 const SCENE: &str = r#"#usda 1.0
@@ -53,7 +58,7 @@ fn read_text(text: &str) -> Result<Imported, LoadError> {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("scene.usda");
     std::fs::write(&path, text).unwrap();
-    read_usd(&path).map_err(|e| {
+    read_usd(&path, &ImportOptions::default()).map_err(|e| {
         LoadError::format(Path::new("scene.usda"), e.to_string().replace(&*path.to_string_lossy(), "scene.usda"))
     })
 }
@@ -121,7 +126,7 @@ fn export_then_import_keeps_points_widths_and_colours() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("out.usda");
     write_usd(&path, &shapes, &materials).unwrap();
-    let s = read_usd(&path).unwrap();
+    let s = read_usd(&path, &ImportOptions::default()).unwrap();
     let back = strands(&s, 0);
     assert_eq!(back.offsets, set.offsets);
     assert_eq!(back.points, set.points);
@@ -150,6 +155,8 @@ fn malformed_files_are_errors_with_lines_and_no_panic() {
     let e = read_text(&deep).unwrap_err().to_string();
     assert!(e.contains("nest deeper"), "{e}");
     let e = read_text("PXR-USDC binary").unwrap_err().to_string();
+    assert!(e.contains("scene.usda") && e.contains("magic"), "{e}");
+    let e = read_text("\u{1}\u{2} binary").unwrap_err().to_string();
     assert!(e.contains("#usda"), "{e}");
 }
 
@@ -203,5 +210,395 @@ proptest! {
     #[test]
     fn random_text_never_panics(text in "#usda 1.0\n\\PC{0,200}") {
         let _ = read_text(&text);
+    }
+}
+
+/// A stage of one prim block (and stage metadata `meta`), read with `options`.
+fn read_with(meta: &str, body: &str, options: &ImportOptions) -> Result<Imported, LoadError> {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("scene.usda");
+    std::fs::write(&path, format!("#usda 1.0\n(\n{meta}\n)\n{body}")).unwrap();
+    read_usd(&path, options)
+}
+
+fn read_body(body: &str) -> Imported {
+    read_with("", body, &ImportOptions::default()).unwrap()
+}
+
+fn point(s: &StrandSet, i: usize) -> Vec3 {
+    Vec3::from_slice(&s.points[i][..3])
+}
+
+#[test]
+fn every_number_form_of_the_grammar_is_read() {
+    let body = r#"def BasisCurves "C" {
+        uniform token type = "linear"
+        int[] curveVertexCounts = [3]
+        point3f[] points = [(.5, -.25, 7.), (+.5e1, 2.E-1, -3.e0), (1e2, -0, 1.5)]
+        float[] widths = [.1] (interpolation = "constant")
+    }"#;
+    let s = read_body(body);
+    let c = strands(&s, 0);
+    assert_eq!(point(c, 0), Vec3::new(0.5, -0.25, 7.0));
+    assert_eq!(point(c, 1), Vec3::new(5.0, 0.2, -3.0));
+    assert_eq!(point(c, 2), Vec3::new(100.0, 0.0, 1.5));
+    assert_eq!(c.points[0][3], 0.05);
+    // The crate alone refuses these forms: the rewrite is what reads them.
+    let text = format!("#usda 1.0\n{body}");
+    assert!(openusd::usda::parser::Parser::new(&text).parse().is_err());
+    let fixed = layer::normalize_numbers(&text);
+    assert!(openusd::usda::parser::Parser::new(&fixed).parse().is_ok());
+    assert_eq!(fixed.lines().count(), text.lines().count());
+}
+
+#[test]
+fn the_number_rewrite_leaves_strings_paths_comments_and_names_alone() {
+    let text = "#usda 1.0\n# .5 and 7.\ndef \"A\" (doc = \"v7. .5\") { rel r = </A.b> asset a = @./t.5.png@ float x2.timeSamples = { 1.: .5 } }";
+    let out = layer::normalize_numbers(text);
+    assert_eq!(
+        out,
+        "#usda 1.0\n# .5 and 7.\ndef \"A\" (doc = \"v7. .5\") { rel r = </A.b> asset a = @./t.5.png@ float x2.timeSamples = { 1.0: 0.5 } }"
+    );
+}
+
+const ANIMATED: &str = r#"def BasisCurves "Hair" {
+    uniform token type = "linear"
+    int[] curveVertexCounts.timeSamples = { 0: [2], 10: [2], 20: [3] }
+    point3f[] points.timeSamples = {
+        0: [(0, 0, 0), (0, 1, 0)],
+        10: [(2, 0, 0), (2, 3, 0)],
+        20: [(5, 0, 0), (5, 1, 0), (5, 2, 0)],
+    }
+    float[] widths.timeSamples = { 0: [0.1, 0.1], 10: [0.3, 0.3], 20: [0.2, 0.2, 0.2] }
+}"#;
+
+#[test]
+fn time_samples_are_read_at_the_frame_and_interpolated_where_the_topology_stays() {
+    let at = |frame: Option<u32>, meta: &str| {
+        let s = read_with(meta, ANIMATED, &ImportOptions { frame, camera: None }).unwrap();
+        strands(&s, 0).clone()
+    };
+    // Half way between samples of the same topology: points and widths blended.
+    let c = at(Some(5), "");
+    assert_eq!((point(&c, 0), point(&c, 1)), (Vec3::new(1.0, 0.0, 0.0), Vec3::new(1.0, 2.0, 0.0)));
+    assert!((c.points[0][3] - 0.1).abs() < 1e-6, "{}", c.points[0][3]);
+    // Between samples of different counts: the earlier sample, not a blend.
+    let c = at(Some(15), "");
+    assert_eq!(c.offsets, vec![0, 2]);
+    assert_eq!(point(&c, 1), Vec3::new(2.0, 3.0, 0.0));
+    // Without a frame: the stage's start time code.
+    let c = at(None, "startTimeCode = 20");
+    assert_eq!((c.offsets.clone(), point(&c, 2)), (vec![0, 3], Vec3::new(5.0, 2.0, 0.0)));
+    assert_eq!(at(None, "").offsets, vec![0, 2]);
+}
+
+const CAMERAS: &str = r#"def Xform "Rig" {
+    double3 xformOp:translate.timeSamples = { 0: (0, 0, 10), 10: (0, 0, 20) }
+    uniform token[] xformOpOrder = ["xformOp:translate"]
+    def Camera "Main" {
+        float focalLength = 35
+        float horizontalAperture = 36
+        float verticalAperture = 24
+        float2 clippingRange = (0.1, 1000)
+    }
+}
+def Camera "Side" {
+    float focalLength.timeSamples = { 0: 50, 10: 100 }
+    double3 xformOp:translate = (10, 0, 0)
+    float xformOp:rotateY = 90
+    uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateY"]
+}
+def Sphere "Ball" {}
+"#;
+
+#[test]
+fn cameras_give_the_view_field_of_view_and_image_aspect() {
+    let s = read_with("", CAMERAS, &ImportOptions::default()).unwrap();
+    let c = s.camera.clone().unwrap();
+    assert!((c.eye - Vec3::new(0.0, 0.0, 10.0)).length() < 1e-5, "{}", c.eye);
+    assert!((c.target - Vec3::new(0.0, 0.0, 9.0)).length() < 1e-5, "{}", c.target);
+    assert!((c.up - Vec3::Y).length() < 1e-6);
+    assert_eq!(s.resolution, Some([640, 427]));
+    // The vertical aperture, widened to the rounded image's aspect.
+    let want = 2.0 * (0.5 * 24.0f32.max(36.0 * 427.0 / 640.0) / 35.0).atan().to_degrees();
+    assert!((c.vfov - want).abs() < 1e-3, "{} {want}", c.vfov);
+    assert!(s.warnings.iter().any(|w| w.contains("2 cameras") && w.contains("/Rig/Main")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("clippingRange")), "{:?}", s.warnings);
+    // The rig moves: at frame 5 the camera is half way.
+    let s = read_with("", CAMERAS, &ImportOptions { frame: Some(5), camera: None }).unwrap();
+    assert!((s.camera.unwrap().eye.z - 15.0).abs() < 1e-4);
+    // Picked by path, with its animated focal length and its turn: it looks along −X.
+    let pick = |frame| ImportOptions { frame: Some(frame), camera: Some("/Side".into()) };
+    let s = read_with("", CAMERAS, &pick(10)).unwrap();
+    let c = s.camera.unwrap();
+    assert!((c.target - c.eye - Vec3::new(-1.0, 0.0, 0.0)).length() < 1e-5, "{} {}", c.eye, c.target);
+    let want = 2.0 * (0.5f32 * 15.2908 / 100.0).atan().to_degrees();
+    assert!((c.vfov - want).abs() < 1e-3, "{} {want}", c.vfov);
+    let e = read_with("", CAMERAS, &ImportOptions { frame: None, camera: Some("/Nope".into()) }).unwrap_err();
+    assert!(e.to_string().contains("/Nope") && e.to_string().contains("/Rig/Main, /Side"), "{e}");
+}
+
+#[test]
+fn a_render_settings_resolution_widens_the_aperture_as_usd_fits_it() {
+    let body = format!("{CAMERAS}\ndef RenderSettings \"R\" {{ uniform int2 resolution = (400, 400) }}");
+    let s = read_with("", &body, &ImportOptions::default()).unwrap();
+    assert_eq!(s.resolution, Some([400, 400]));
+    // A square image of a 36 × 24 aperture: the vertical aperture grows to 36.
+    let want = 2.0 * (18.0f32 / 35.0).atan().to_degrees();
+    assert!((s.camera.unwrap().vfov - want).abs() < 1e-3);
+}
+
+#[test]
+fn lights_follow_usdlux_units_and_shapes() {
+    let body = r#"
+def RectLight "Rect" {
+    float inputs:width = 2
+    float inputs:height = 1
+    float inputs:intensity = 3
+    bool inputs:normalize = 1
+    double3 xformOp:translate = (0, 5, 0)
+    float xformOp:rotateX = -90
+    uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateX"]
+}
+def DiskLight "Disk" { float inputs:radius = 0.5  float inputs:intensity = 4  float inputs:exposure = 1 }
+def SphereLight "Bulb" {
+    float inputs:radius = 0.5
+    float inputs:intensity = 10
+    bool inputs:normalize = true
+    color3f inputs:color = (1, 0.5, 0.25)
+}
+def DistantLight "Sun" { float inputs:angle = 2 float inputs:intensity = 5 }
+def DistantLight "Key" { float inputs:angle = 0 float intensity = 2 }
+def DomeLight "Sky" { float inputs:intensity = 0.5 asset inputs:texture:file = @sky.exr@ }
+"#;
+    let s = read_body(body);
+    assert_eq!(s.lights.len(), 6);
+    let Light::Quad { corner, edge_u, edge_v, radiance } = s.lights[0] else { panic!("{:?}", s.lights[0]) };
+    // Normalized: the emission over the area (2); turned to face down from y = 5.
+    assert!((radiance - Vec3::splat(1.5)).length() < 1e-6);
+    assert!((edge_u.cross(edge_v).normalize() - Vec3::NEG_Y).length() < 1e-5, "{}", edge_u.cross(edge_v));
+    assert!((corner + 0.5 * (edge_u + edge_v) - Vec3::new(0.0, 5.0, 0.0)).length() < 1e-5);
+    let Light::Quad { edge_u, edge_v, radiance, .. } = s.lights[1] else { panic!() };
+    // A disk of radius 0.5 as a square of the same area, 4 × 2^1 bright.
+    assert!((edge_u.cross(edge_v).length() - std::f32::consts::PI * 0.25).abs() < 1e-5);
+    assert_eq!(radiance, Vec3::splat(8.0));
+    let Light::Sphere { radius, radiance, .. } = s.lights[2] else { panic!() };
+    assert_eq!(radius, 0.5);
+    assert!((radiance * std::f32::consts::PI - Vec3::new(10.0, 5.0, 2.5)).length() < 1e-4, "{radiance}");
+    // A 2° sun: its irradiance (radiance × solid angle) is the intensity.
+    let Light::Sun { radiance, cos_max, .. } = s.lights[3] else { panic!() };
+    assert!((cos_max - 1f32.to_radians().cos()).abs() < 1e-7);
+    let irradiance = radiance * std::f32::consts::TAU * (1.0 - cos_max);
+    assert!((irradiance - Vec3::splat(5.0)).length() < 1e-3, "{irradiance}");
+    // A delta light, with an attribute spelled as before `inputs:`.
+    assert_eq!(s.lights[4], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) });
+    assert_eq!(s.lights[5], Light::Environment { radiance: Vec3::splat(0.5) });
+    assert!(s.warnings.iter().any(|w| w.contains("DomeLight textures")), "{:?}", s.warnings);
+}
+
+#[test]
+fn nurbs_curves_are_evaluated_with_their_knots() {
+    // A clamped cubic with four points is the Bézier curve of those points.
+    let body = r#"def NurbsCurves "N" {
+        int[] curveVertexCounts = [4, 2]
+        int[] order = [4, 2]
+        double[] knots = [0, 0, 0, 0, 1, 1, 1, 1, 0, 0, 1, 1]
+        point3f[] points = [(0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0), (3, 0, 0), (3, 2, 0)]
+        float[] widths = [0.4, 0.4, 0.0, 0.0, 0.2, 0.2] (interpolation = "vertex")
+    }"#;
+    let s = read_body(body);
+    let c = strands(&s, 0);
+    assert_eq!(c.offsets, vec![0, PIECES_PER_SEGMENT as u32 + 1, PIECES_PER_SEGMENT as u32 + 3]);
+    let mid = point(c, PIECES_PER_SEGMENT / 2);
+    // The Bézier midpoint (P0 + 3 P1 + 3 P2 + P3) / 8 = (0.5, 0.75, 0).
+    assert!((mid - Vec3::new(0.5, 0.75, 0.0)).length() < 1e-5, "{mid}");
+    // Widths through the same basis: (0.4 + 1.2 + 0 + 0) / 8 = 0.2 wide at the middle.
+    assert!((c.points[PIECES_PER_SEGMENT / 2][3] - 0.1).abs() < 1e-6);
+    assert_eq!(c.points[PIECES_PER_SEGMENT + 2], [3.0, 2.0, 0.0, 0.1]);
+    // Orders that do not fit the knots: drawn through the points, as USD's renderer does.
+    let s = read_body(&body.replace("[4, 2]\n        double", "[3, 2]\n        double"));
+    let c = strands(&s, 0);
+    assert_eq!(c.offsets, vec![0, 4, 6]);
+    assert_eq!(point(c, 2), Vec3::new(1.0, 1.0, 0.0));
+    assert!(s.warnings.iter().any(|w| w.contains("do not fit")), "{:?}", s.warnings);
+}
+
+#[test]
+fn widths_follow_usd_conventions() {
+    let curve = |widths: &str| {
+        format!(
+            "def BasisCurves \"C\" {{ uniform token type = \"linear\" int[] curveVertexCounts = [2, 2]
+            point3f[] points = [(0, 0, 0), (0, 1, 0), (1, 0, 0), (1, 1, 0)] {widths} }}"
+        )
+    };
+    // One value without interpolation: constant.
+    let s = read_body(&curve("float[] widths = [0.5]"));
+    assert!(strands(&s, 0).points.iter().all(|p| p[3] == 0.25));
+    // No widths: USD's fallback of one unit, reported once for all the prims.
+    let s = read_body(&format!("{}\n{}", curve(""), curve("").replace("\"C\"", "\"D\"")));
+    assert!(strands(&s, 1).points.iter().all(|p| p[3] == 0.5));
+    let w: Vec<_> = s.warnings.iter().filter(|w| w.contains("without `widths`")).collect();
+    assert_eq!(w.len(), 1, "{:?}", s.warnings);
+    assert!(w[0].contains("(2; first: /C)"), "{}", w[0]);
+}
+
+#[test]
+fn gprims_become_meshes_of_their_size() {
+    let body = r#"
+def Sphere "S" { double radius = 2 }
+def Cube "C" { double size = 3 }
+def Cylinder "Y" { double radius = 0.5 double height = 4 uniform token axis = "Y" }
+def Cone "K" {}
+def Capsule "P" { double radius = 1 double height = 2 uniform token axis = "X" }
+"#;
+    let s = read_body(body);
+    assert_eq!(s.meshes.len(), 5);
+    let bounds = |i: usize| {
+        let MeshSource::Inline(m) = &s.meshes[i].source else { panic!() };
+        let lo = m.positions.iter().fold(Vec3::splat(f32::MAX), |a, p| a.min(*p));
+        let hi = m.positions.iter().fold(Vec3::splat(f32::MIN), |a, p| a.max(*p));
+        (lo, hi)
+    };
+    let close = |a: Vec3, b: Vec3| (a - b).length() < 1e-4;
+    assert!(close(bounds(0).1, Vec3::splat(2.0)), "{:?}", bounds(0));
+    assert!(close(bounds(1).0, Vec3::splat(-1.5)) && close(bounds(1).1, Vec3::splat(1.5)));
+    assert!(close(bounds(2).1, Vec3::new(0.5, 2.0, 0.5)), "{:?}", bounds(2));
+    // The cone stands along Z by default: radius 1, height 2.
+    assert!(close(bounds(3).1, Vec3::new(1.0, 1.0, 1.0)) && close(bounds(3).0, Vec3::new(-1.0, -1.0, -1.0)));
+    // The capsule: its hemispheres' centres 2 apart along X, radius 1.
+    assert!(close(bounds(4).1, Vec3::new(2.0, 1.0, 1.0)), "{:?}", bounds(4));
+}
+
+#[test]
+fn meshes_take_the_bound_preview_surface_colour_then_display_color() {
+    let body = r#"
+def Material "Red" {
+    token outputs:surface.connect = </Red/Surface.outputs:surface>
+    def Shader "Surface" {
+        uniform token info:id = "UsdPreviewSurface"
+        color3f inputs:diffuseColor = (0.8, 0.1, 0.1)
+        token outputs:surface
+    }
+}
+def Cube "Bound" (prepend apiSchemas = ["MaterialBindingAPI"]) {
+    rel material:binding = </Red>
+    color3f[] primvars:displayColor = [(0, 0, 1)]
+}
+def Cube "Plain" { color3f[] primvars:displayColor = [(0, 0, 1)] }
+def Cube "Grey" {}
+"#;
+    let s = read_body(body);
+    let colors: Vec<_> = s.meshes.iter().map(|m| m.material.clone()).collect();
+    assert_eq!(
+        colors,
+        vec![
+            Material::Diffuse { color: Vec3::new(0.8, 0.1, 0.1) },
+            Material::Diffuse { color: Vec3::new(0.0, 0.0, 1.0) },
+            Material::Diffuse { color: Vec3::splat(0.5) },
+        ]
+    );
+}
+
+#[test]
+fn stage_units_and_up_axis() {
+    let body = r#"def Xform "W" { double3 xformOp:translate = (0, 0, 2) uniform token[] xformOpOrder = ["xformOp:translate"]
+        def Sphere "S" { double radius = 1 } }"#;
+    // Geometry stays in the stage's unit, and Z-up turns Y-up: +Z becomes +Y.
+    let s = read_with("metersPerUnit = 0.01\nupAxis = \"Z\"", body, &ImportOptions::default()).unwrap();
+    let p = s.meshes[0].transform.transform_point3(Vec3::ZERO);
+    assert!((p - Vec3::new(0.0, 2.0, 0.0)).length() < 1e-6, "{p}");
+}
+
+#[test]
+fn what_is_not_read_is_reported_once_per_kind_with_a_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("scene.usda");
+    let text = r#"#usda 1.0
+(
+    subLayers = [@missing_layer.usda@]
+)
+def Points "P1" {}
+def Points "P2" {}
+def SkelRoot "Rig" {
+    def Skeleton "Bones" {}
+    def Mesh "Skin" (prepend apiSchemas = ["SkelBindingAPI"]) {
+        rel skel:skeleton = </Rig/Bones>
+        int[] faceVertexCounts = [3]
+        int[] faceVertexIndices = [0, 1, 2]
+        point3f[] points = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+    }
+}
+def Xform "Ref" (references = @gone.usda@) {}
+"#;
+    std::fs::write(&path, text).unwrap();
+    let s = read_usd(&path, &ImportOptions::default()).unwrap();
+    let has = |needle: &str| s.warnings.iter().filter(|w| w.contains(needle)).count();
+    assert_eq!(has("`Points` prims: not read (2; first: /P1)"), 1, "{:?}", s.warnings);
+    assert_eq!(has("`SkelRoot` prims"), 1, "{:?}", s.warnings);
+    assert_eq!(has("`Skeleton` prims"), 1, "{:?}", s.warnings);
+    assert_eq!(has("UsdSkel skinning"), 1, "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("composition") && w.contains("missing_layer")), "{:?}", s.warnings);
+    assert!(
+        s.warnings.iter().any(|w| w.contains("files that are missing") && w.contains("gone.usda")),
+        "{:?}",
+        s.warnings
+    );
+    assert_eq!(has("missing_layer"), 1, "{:?}", s.warnings);
+    assert_eq!(s.meshes.len(), 1);
+}
+
+#[test]
+fn arcs_back_to_their_own_prim_are_an_error_naming_the_chain() {
+    for (body, chain) in [
+        ("def Xform \"A\" (inherits = </A>) {}", "/A -> /A"),
+        ("def Xform \"A\" (prepend references = </B>) {}\ndef Xform \"B\" (specializes = </A>) {}", "/A -> /B -> /A"),
+        ("def Xform \"A\" {\n def Xform \"C\" (inherits = </A>) {}\n}", "/A/C -> /A"),
+    ] {
+        let e = read_with("", body, &ImportOptions::default()).unwrap_err().to_string();
+        assert!(e.contains("cycle") && e.contains(chain), "{body}: {e}");
+    }
+    // Arcs between distinct prims are fine.
+    let s = read_body("class \"Base\" { double radius = 3 }\ndef Sphere \"S\" (inherits = </Base>) {}");
+    assert_eq!(s.meshes.len(), 1);
+}
+
+/// `text` written by the crate as a binary crate layer (`usdc`) or package (`usdz`).
+fn binary_copy(text: &str, dir: &Path, ext: &str) -> std::path::PathBuf {
+    let src = dir.join("src.usda");
+    std::fs::write(&src, text).unwrap();
+    let stage = Stage::open(src.to_str().unwrap()).unwrap();
+    let out = dir.join(format!("scene.{ext}"));
+    stage.root_layer().export(out.to_str().unwrap()).unwrap();
+    out
+}
+
+#[test]
+fn binary_crate_files_and_packages_read_like_text() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = read_text(SCENE).unwrap();
+    for ext in ["usdc", "usdz"] {
+        let path = binary_copy(SCENE, dir.path(), ext);
+        let bytes = std::fs::read(&path).unwrap();
+        assert!(bytes.starts_with(if ext == "usdc" { b"PXR-USDC" } else { b"PK\x03\x04" }), "{ext}");
+        let s = read_usd(&path, &ImportOptions::default()).unwrap();
+        assert_eq!((s.hair.len(), s.meshes.len(), s.lights.len()), (2, 1, 1), "{ext}");
+        assert_eq!(strands(&s, 0).points, strands(&text, 0).points, "{ext}");
+        assert_eq!(strands(&s, 1).colors, strands(&text, 1).colors, "{ext}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// The number, type-name and arc-cycle passes and the time-sample, camera and arc
+    /// readers, given damaged input: errors, never a panic or a hang.
+    #[test]
+    fn mutated_new_forms_never_panic(edits in prop::collection::vec((0usize..ANIMATED.len(), prop::sample::select(&b"0123456789-.e<>/@[](){} =\nVec3fPoint"[..])), 1..6)) {
+        let mut bytes = format!("{ANIMATED}\n{CAMERAS}\ndef Xform \"Z\" (inherits = </Rig>) {{}}").into_bytes();
+        for (at, c) in edits {
+            let at = at.min(bytes.len() - 1);
+            bytes[at] = c;
+        }
+        let _ = read_with("", &String::from_utf8_lossy(&bytes), &ImportOptions { frame: Some(5), camera: None });
     }
 }

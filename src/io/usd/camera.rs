@@ -1,0 +1,62 @@
+//! `Camera` prims (UsdGeomCamera) to tress's camera, at the frame's time code.
+//!
+//! The camera looks down its local −Z with +Y up. Its vertical field of view is
+//! `2 atan(aperture / (2 focalLength))` (both in the same unit, so the ratio is all that
+//! counts), with the vertical aperture widened when the image is narrower than the
+//! horizontal aperture, as USD's default `expandAperture` fit does. Without an image size
+//! of its own (a `RenderSettings` prim's `resolution`), the image takes the apertures'
+//! aspect at tress's default width.
+
+use super::values::{number, token, value, Res};
+use super::Notes;
+use crate::scene::CameraDesc;
+use crate::world::RenderSettings;
+use glam::{Affine3A, Vec3};
+use openusd::usd::{Prim, TimeCode};
+
+/// The camera `prim` placed by `transform` (local to world), for an image of `image`
+/// pixels if known; returns it with the image size to render.
+pub fn read_camera(
+    prim: &Prim,
+    transform: &Affine3A,
+    time: TimeCode,
+    image: Option<[u32; 2]>,
+    notes: &mut Notes,
+) -> Res<(CameraDesc, [u32; 2])> {
+    let num = |name: &str, d: f64| -> Res<f32> {
+        let x = number(value(prim, name, time)?, name)?.unwrap_or(d) as f32;
+        anyhow::ensure!(x.is_finite() && x > 0.0, "`{name}` must be finite and positive");
+        Ok(x)
+    };
+    // The schema's fallbacks: a 35 mm academy aperture and a 50 mm lens.
+    let focal = num("focalLength", 50.0)?;
+    let (h_ap, v_ap) = (num("horizontalAperture", 20.955)?, num("verticalAperture", 15.2908)?);
+    if token(value(prim, "projection", time)?, "perspective") != "perspective" {
+        notes.note("orthographic cameras: rendered in perspective with the same apertures".into(), prim);
+    }
+    if value(prim, "clippingRange", time)?.is_some() {
+        notes.note("camera `clippingRange`: not applied (tress does not clip)".into(), prim);
+    }
+    for name in ["horizontalApertureOffset", "verticalApertureOffset"] {
+        if number(value(prim, name, time)?, name)?.is_some_and(|x| x != 0.0) {
+            notes.note("camera aperture offsets: not applied".into(), prim);
+        }
+    }
+    let [w, h] = image.unwrap_or_else(|| {
+        let width = RenderSettings::default().width;
+        [width, ((width as f32 * v_ap / h_ap).round() as u32).clamp(1, 16 * width)]
+    });
+    let aspect = w as f32 / h.max(1) as f32;
+    let v_ap = v_ap.max(h_ap / aspect);
+    let vfov = 2.0 * (0.5 * v_ap / focal).atan().to_degrees();
+    anyhow::ensure!(vfov > 0.0 && vfov < 180.0, "a field of view of {vfov}° from its apertures and focal length");
+    let eye = transform.transform_point3(Vec3::ZERO);
+    let forward = transform.transform_vector3(-Vec3::Z);
+    let up = transform.transform_vector3(Vec3::Y);
+    anyhow::ensure!(
+        eye.is_finite() && forward.length() > 0.0 && up.cross(forward).length() > 0.0,
+        "its transform does not give a view direction and an up direction"
+    );
+    let target = eye + forward.normalize();
+    Ok((CameraDesc { eye, target, up: up.normalize(), vfov }, [w, h]))
+}

@@ -1,0 +1,106 @@
+//! UsdLux lights: `DistantLight`, `SphereLight`, `RectLight`, `DiskLight` and `DomeLight`.
+//!
+//! UsdLux gives every light the same emission: `inputs:color × inputs:intensity ×
+//! 2^inputs:exposure` is the radiance of its surface (UsdLux's `LightAPI`), divided by the
+//! emitting area when `inputs:normalize` is on. A distant light's irradiance is the
+//! emission, as USD's Storm renderer and RenderMan light it (UsdLux would have an
+//! unnormalized one's disk radiate it instead, far darker): a delta light without an
+//! authored `inputs:angle`, a disk of that angular diameter with one. Lights
+//! shine along their local −Z; a rect light is `width × height` in its local XY plane, a
+//! disk light of radius `radius` is drawn as the square of the same area and emission.
+
+use super::values::{boolean, number, value, vec3, Res};
+use super::Notes;
+use crate::light::Light;
+use glam::{Affine3A, Vec3};
+use openusd::usd::{Prim, TimeCode};
+
+/// The light types this module reads.
+pub const LIGHT_TYPES: [&str; 5] = ["DistantLight", "SphereLight", "RectLight", "DiskLight", "DomeLight"];
+
+/// An `inputs:` attribute, or the same name without the prefix as lights authored before
+/// UsdLux took it (USD 21.02) spell it.
+fn input(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<openusd::sdf::Value>> {
+    match value(prim, &format!("inputs:{name}"), time)? {
+        Some(v) => Ok(Some(v)),
+        None => value(prim, name, time),
+    }
+}
+
+/// The light `prim` of type `kind`, placed by `transform` (local to world).
+pub fn read_light(prim: &Prim, kind: &str, transform: &Affine3A, time: TimeCode, notes: &mut Notes) -> Res<Light> {
+    let num = |name: &str, d: f32| -> Res<f32> {
+        let x = number(input(prim, name, time)?, name)?.map_or(d, |x| x as f32);
+        anyhow::ensure!(x.is_finite(), "`inputs:{name}` must be finite");
+        Ok(x)
+    };
+    let color = vec3(input(prim, "color", time)?, "inputs:color")?.unwrap_or(Vec3::ONE);
+    let emission = color * num("intensity", 1.0)? * num("exposure", 0.0)?.exp2();
+    anyhow::ensure!(
+        emission.is_finite() && emission.min_element() >= 0.0,
+        "light colour × intensity must be finite and not negative"
+    );
+    let normalize = boolean(input(prim, "normalize", time)?, false);
+    if boolean(input(prim, "enableColorTemperature", time)?, false) {
+        notes.note("light `colorTemperature`: not applied".into(), prim);
+    }
+    if ["shaping:cone:angle", "shaping:focus", "shaping:ies:file"]
+        .iter()
+        .any(|n| value(prim, &format!("inputs:{n}"), time).ok().flatten().is_some())
+    {
+        notes.note("light shaping (cones, focus, IES profiles): not applied".into(), prim);
+    }
+    let scale = transform.matrix3.determinant().abs().cbrt();
+    let size = |name: &str, d: f32| -> Res<f32> {
+        let x = num(name, d)?;
+        anyhow::ensure!(x >= 0.0, "`inputs:{name}` must not be negative");
+        Ok(x)
+    };
+    Ok(match kind {
+        "DistantLight" => {
+            let direction = transform.transform_vector3(Vec3::Z).normalize_or(Vec3::Y);
+            // Irradiance is the emission whatever the angle (as USD's Storm and RenderMan
+            // light it): an authored angle only widens the disk and softens the shadows.
+            match number(input(prim, "angle", time)?, "inputs:angle")?.map(|a| a as f32) {
+                Some(angle) if angle > 0.0 => {
+                    anyhow::ensure!(angle.is_finite(), "`inputs:angle` must be finite");
+                    let cos_max = (0.5 * angle.min(179.0)).to_radians().cos();
+                    // The disk's solid angle, 2π (1 − cos θ).
+                    let solid = std::f32::consts::TAU * (1.0 - cos_max);
+                    Light::Sun { direction, radiance: emission / solid, cos_max }
+                }
+                _ => Light::Distant { direction, irradiance: emission },
+            }
+        }
+        "DomeLight" => {
+            if input(prim, "texture:file", time)?.is_some() {
+                notes.note("DomeLight textures: lit by the dome's colour × intensity only".into(), prim);
+            }
+            Light::Environment { radiance: emission }
+        }
+        "SphereLight" => {
+            let radius = size("radius", 0.5)? * scale;
+            let area = 4.0 * std::f32::consts::PI * radius * radius;
+            let radiance = if normalize && area > 0.0 { emission / area } else { emission };
+            Light::Sphere { center: transform.transform_point3(Vec3::ZERO), radius, radiance }
+        }
+        _ => {
+            let (w, h) = if kind == "RectLight" {
+                if input(prim, "texture:file", time)?.is_some() {
+                    notes.note("RectLight textures: not applied".into(), prim);
+                }
+                (size("width", 1.0)?, size("height", 1.0)?)
+            } else {
+                let side = size("radius", 0.5)? * std::f32::consts::PI.sqrt();
+                (side, side)
+            };
+            // Edges ordered so that edge_u × edge_v is the local −Z the light shines along.
+            let corner = transform.transform_point3(Vec3::new(-0.5 * w, -0.5 * h, 0.0));
+            let edge_u = transform.transform_vector3(Vec3::new(0.0, h, 0.0));
+            let edge_v = transform.transform_vector3(Vec3::new(w, 0.0, 0.0));
+            let area = edge_u.cross(edge_v).length();
+            let radiance = if normalize && area > 0.0 { emission / area } else { emission };
+            Light::Quad { corner, edge_u, edge_v, radiance }
+        }
+    })
+}

@@ -1,0 +1,240 @@
+//! `Mesh` prims and the gprims (`Sphere`, `Cube`, `Cylinder`, `Cone`, `Capsule`) to
+//! triangle meshes, with their colour: the `diffuseColor` of a bound `UsdPreviewSurface`,
+//! else `primvars:displayColor`.
+
+use super::values::{interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res};
+use super::Notes;
+use crate::geometry::TriangleMesh;
+use glam::{Mat3, Vec3};
+use openusd::sdf;
+use openusd::usd::{Prim, TimeCode};
+use std::f32::consts::TAU;
+
+/// The gprim types [`read_gprim`] reads.
+pub const GPRIMS: [&str; 5] = ["Sphere", "Cube", "Cylinder", "Cone", "Capsule"];
+
+/// Facets around a gprim's axis.
+const AROUND: usize = 32;
+
+/// A `Mesh` prim: `points`, `faceVertexCounts`, `faceVertexIndices` (polygons as fans),
+/// vertex `normals` and `primvars:st` (vertex or face-varying, indexed or not).
+/// Subdivision surfaces are their control cage.
+pub fn read_mesh(prim: &Prim, time: TimeCode) -> Res<TriangleMesh> {
+    let positions = vec3s(value(prim, "points", time)?, "points")?.unwrap_or_default();
+    let counts = ints(value(prim, "faceVertexCounts", time)?, "faceVertexCounts")?.unwrap_or_default();
+    let indices = ints(value(prim, "faceVertexIndices", time)?, "faceVertexIndices")?.unwrap_or_default();
+    let total: i64 = counts.iter().map(|&c| c.max(0)).sum();
+    anyhow::ensure!(counts.iter().all(|&c| c >= 0), "`faceVertexCounts` has a negative count");
+    anyhow::ensure!(
+        total as usize == indices.len(),
+        "`faceVertexCounts` sum to {total} but there are {} indices",
+        indices.len()
+    );
+    let n = positions.len();
+    anyhow::ensure!(indices.iter().all(|&i| i >= 0 && (i as usize) < n), "a face index is not one of the {n} points");
+    let normals_attr = prim.attribute("normals");
+    let normals = vec3s(normals_attr.get_at(time)?, "normals")?.filter(|v| {
+        v.len() == n && interpolation(&normals_attr, Interpolation::Vertex).ok() == Some(Interpolation::Vertex)
+    });
+    // UVs: vertex (one per point) or face-varying (one per face corner), optionally indexed.
+    let st_attr = prim.attribute("primvars:st");
+    let st: Option<Vec<[f32; 2]>> = match st_attr.get_at::<sdf::Value>(time)? {
+        None => None,
+        Some(sdf::Value::Vec2fVec(v)) => Some(v.iter().map(|p| [p.x, p.y]).collect()),
+        Some(sdf::Value::Vec2dVec(v)) => Some(v.iter().map(|p| [p.x as f32, p.y as f32]).collect()),
+        Some(other) => anyhow::bail!("`primvars:st` is not an array of 2-vectors: {}", short(&other)),
+    };
+    // An empty index array indexes nothing: the values are read in order.
+    let st_indices =
+        ints(value(prim, "primvars:st:indices", time)?, "primvars:st:indices")?.filter(|ix| !ix.is_empty());
+    interpolation(&st_attr, Interpolation::Vertex)?;
+    let face_varying = matches!(st_attr.get_metadata::<sdf::Value>("interpolation")?, Some(sdf::Value::Token(t)) if t.as_str() == "faceVarying");
+    // The UV of corner `k` (running over all faces) of point `p`.
+    let uv_of = |k: usize, p: usize| -> Res<Option<[f32; 2]>> {
+        let Some(st) = &st else { return Ok(None) };
+        let slot = if face_varying { k } else { p };
+        let slot = match &st_indices {
+            Some(ix) => *ix.get(slot).ok_or_else(|| anyhow::anyhow!("`primvars:st:indices` is too short"))? as usize,
+            None => slot,
+        };
+        Ok(Some(*st.get(slot).ok_or_else(|| anyhow::anyhow!("`primvars:st` has no value {slot}"))?))
+    };
+    let mut mesh = TriangleMesh::default();
+    let (mut uvs, mut out_normals) = (Vec::new(), Vec::new());
+    let mut corners: std::collections::HashMap<(u32, [u32; 2]), u32> = std::collections::HashMap::new();
+    let mut k = 0usize;
+    for &c in &counts {
+        let mut ids = Vec::with_capacity(c as usize);
+        for _ in 0..c {
+            let p = indices[k] as usize;
+            let uv = uv_of(k, p)?;
+            let key = (p as u32, uv.map_or([u32::MAX; 2], |u| u.map(f32::to_bits)));
+            let id = *corners.entry(key).or_insert_with(|| {
+                mesh.positions.push(positions[p]);
+                uvs.push(uv.unwrap_or([0.0; 2]));
+                if let Some(ns) = &normals {
+                    out_normals.push(ns[p]);
+                }
+                (mesh.positions.len() - 1) as u32
+            });
+            ids.push(id);
+            k += 1;
+        }
+        for j in 1..ids.len().saturating_sub(1) {
+            mesh.indices.push([ids[0], ids[j], ids[j + 1]]);
+        }
+    }
+    if st.is_some() {
+        mesh.uvs = Some(uvs);
+    }
+    if normals.is_some() {
+        mesh.normals = Some(out_normals);
+    }
+    mesh.validate().map_err(|e| anyhow::anyhow!("{e}"))?;
+    Ok(mesh)
+}
+
+/// A gprim of `kind` as a triangle mesh with the schema's attributes and fallbacks
+/// (`Sphere` radius 1; `Cube` size 2; `Cylinder` and `Cone` radius 1, height 2, axis Z;
+/// `Capsule` radius 0.5, height 1 between its hemispheres' centres, axis Z).
+pub fn read_gprim(prim: &Prim, kind: &str, time: TimeCode) -> Res<TriangleMesh> {
+    let num = |name: &str, d: f64| -> Res<f32> {
+        let x = number(value(prim, name, time)?, name)?.unwrap_or(d) as f32;
+        anyhow::ensure!((0.0..1e30).contains(&x), "`{name}` must be finite and not negative");
+        Ok(x)
+    };
+    let axis = token(value(prim, "axis", time)?, "Z");
+    let mut mesh = match kind {
+        "Sphere" => TriangleMesh::sphere(num("radius", 1.0)?, AROUND as u32 / 2),
+        "Cube" => cube(num("size", 2.0)?),
+        "Cylinder" => {
+            let (r, h) = (num("radius", 1.0)?, 0.5 * num("height", 2.0)?);
+            revolve(&[(0.0, -h), (r, -h), (r, h), (0.0, h)])
+        }
+        "Cone" => {
+            let (r, h) = (num("radius", 1.0)?, 0.5 * num("height", 2.0)?);
+            revolve(&[(0.0, -h), (r, -h), (0.0, h)])
+        }
+        _ => {
+            let (r, h) = (num("radius", 0.5)?, 0.5 * num("height", 1.0)?);
+            let quarter = AROUND / 4;
+            let mut profile = Vec::new();
+            for i in 0..=quarter {
+                let a = (i as f32 / quarter as f32) * TAU / 4.0;
+                profile.push((r * a.sin(), -h - r * a.cos()));
+            }
+            for i in 0..=quarter {
+                let a = (i as f32 / quarter as f32) * TAU / 4.0;
+                profile.push((r * a.cos(), h + r * a.sin()));
+            }
+            revolve(&profile)
+        }
+    };
+    // The profiles stand along Y; the schema's axis turns them.
+    let turn = match axis.as_str() {
+        "X" => Mat3::from_rotation_z(-TAU / 4.0),
+        "Y" => Mat3::IDENTITY,
+        _ => Mat3::from_rotation_x(TAU / 4.0),
+    };
+    if kind != "Sphere" && kind != "Cube" {
+        mesh.transform(&glam::Affine3A::from_mat3(turn));
+    }
+    mesh.remove_unusable_triangles();
+    Ok(mesh)
+}
+
+/// A cube of edge `size` centred on the origin, two triangles a face.
+fn cube(size: f32) -> TriangleMesh {
+    let h = 0.5 * size;
+    let mut mesh = TriangleMesh::default();
+    for axis in 0..3 {
+        for sign in [-1.0f32, 1.0] {
+            let n = Vec3::from_array(std::array::from_fn(|k| if k == axis { sign } else { 0.0 }));
+            let u = Vec3::from_array(std::array::from_fn(|k| if k == (axis + 1) % 3 { 1.0 } else { 0.0 }));
+            let v = n.cross(u);
+            let base = mesh.positions.len() as u32;
+            for (a, b) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                mesh.positions.push((n + u * a + v * b) * h);
+            }
+            mesh.indices.push([base, base + 1, base + 2]);
+            mesh.indices.push([base, base + 2, base + 3]);
+        }
+    }
+    mesh
+}
+
+/// The surface swept by a profile of `(radius, height)` points turned about the Y axis,
+/// its faces facing outwards.
+fn revolve(profile: &[(f32, f32)]) -> TriangleMesh {
+    let mut mesh = TriangleMesh::default();
+    for &(r, y) in profile {
+        for j in 0..AROUND {
+            let a = j as f32 / AROUND as f32 * TAU;
+            mesh.positions.push(Vec3::new(r * a.cos(), y, -r * a.sin()));
+        }
+    }
+    let at = |i: usize, j: usize| (i * AROUND + j % AROUND) as u32;
+    for i in 0..profile.len().saturating_sub(1) {
+        for j in 0..AROUND {
+            mesh.indices.push([at(i, j), at(i, j + 1), at(i + 1, j + 1)]);
+            mesh.indices.push([at(i, j), at(i + 1, j + 1), at(i + 1, j)]);
+        }
+    }
+    mesh
+}
+
+/// The colour a prim is drawn in: the `diffuseColor` of the `UsdPreviewSurface` its bound
+/// material's surface output leads to (`material:binding`), else its constant
+/// `primvars:displayColor` (the mean of a varying one); `None` without either.
+pub fn surface_color(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Vec3>> {
+    if let Some(c) = bound_diffuse(prim, time, notes)? {
+        return Ok(Some(c));
+    }
+    let Some(c) = vec3s(value(prim, "primvars:displayColor", time)?, "primvars:displayColor")? else {
+        return Ok(None);
+    };
+    if c.is_empty() || c.iter().any(|c| !c.is_finite() || c.min_element() < 0.0) {
+        return Ok(None);
+    }
+    if c.len() > 1 {
+        notes.note("varying `displayColor` on surfaces: drawn in its mean colour".into(), prim);
+    }
+    Ok(Some(c.iter().sum::<Vec3>() / c.len() as f32))
+}
+
+/// The `diffuseColor` of the preview surface bound to `prim`, following the material's
+/// `outputs:surface` connection to its shader.
+fn bound_diffuse(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Vec3>> {
+    let stage = prim.stage();
+    let Some(material) = prim.relationship("material:binding").targets()?.into_iter().next() else { return Ok(None) };
+    let material = stage.prim(material);
+    let shader = match material.attribute("outputs:surface").connections()?.into_iter().next() {
+        Some(p) => stage.prim(p.prim_path()),
+        None => {
+            notes.note("materials without a connected `outputs:surface`: not read".into(), prim);
+            return Ok(None);
+        }
+    };
+    let id = token(value(&shader, "info:id", time)?, "");
+    if id != "UsdPreviewSurface" {
+        let what = if id.is_empty() { "a shader without `info:id`".to_string() } else { format!("`{id}` shaders") };
+        notes.note(format!("materials with {what}: not read"), prim);
+        return Ok(None);
+    }
+    let diffuse = shader.attribute("inputs:diffuseColor");
+    let authored = vec3(diffuse.get_at(time)?, "inputs:diffuseColor")?;
+    if diffuse.has_authored_connections()? {
+        notes.note("textured `diffuseColor` of preview surfaces: textures are not read".into(), prim);
+        if authored.is_none() {
+            return Ok(None);
+        }
+    }
+    // The preview surface's own fallback is 0.18 grey.
+    let c = authored.unwrap_or(Vec3::splat(0.18));
+    anyhow::ensure!(
+        c.is_finite() && c.min_element() >= 0.0,
+        "{}: `diffuseColor` must be finite and not negative",
+        shader.path()
+    );
+    Ok(Some(c))
+}
