@@ -10,6 +10,7 @@
 //! |---|---|
 //! | [`scene`] | the scene description: what a file says, with paths |
 //! | [`io`] | file formats: scene TOML, meshes, strands, other tools' scenes |
+//! | [`input_file`] | opening input files: regular files only, a size cap per kind |
 //! | [`prepare`] | the only code that reads geometry and map files; builds the world |
 //! | [`world`] | the prepared world and render settings: plain data, no paths |
 //! | [`render`] | the integrators, reading only the world |
@@ -32,6 +33,7 @@ pub mod film;
 pub mod fur;
 pub mod geometry;
 pub mod hair_system;
+pub mod input_file;
 pub mod io;
 pub mod light;
 pub mod math;

@@ -10,6 +10,7 @@
 //! | `tressTileSize` | `16` |
 //! | `tressRender` | a fingerprint of everything that decides the pixels (scene, geometry, settings, frame) |
 //! | `tressTile` | `I/N` for the farm tile `I` of `N` (bands of rows, see [`Region::band`]) |
+//! | `tressChecksum` | a hash of the tile list and every pixel, so an edited file is refused rather than resumed |
 //!
 //! Pixels of unfinished tiles are empty: black, coverage 0, depth `+inf`, ids -1. Because
 //! every pixel depends only on (seed, pixel, sample), a render resumed from a checkpoint and
@@ -30,6 +31,7 @@ const TILES: &str = "tressTiles";
 const TILE_SIZE: &str = "tressTileSize";
 const RENDER: &str = "tressRender";
 const FARM_TILE: &str = "tressTile";
+const CHECKSUM: &str = "tressChecksum";
 
 /// A part of a render with what identifies it.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,8 +59,14 @@ impl Partial {
         let render = format!("{:016x}", self.fingerprint);
         let tile_size = TILE.to_string();
         let farm = self.farm_tile.map(|(i, n)| format!("{i}/{n}"));
-        let mut attributes =
-            vec![(STATUS, status), (TILES, tiles.as_str()), (TILE_SIZE, &tile_size), (RENDER, &render)];
+        let checksum = format!("{:016x}", checksum(&tiles, &self.state.film));
+        let mut attributes = vec![
+            (STATUS, status),
+            (TILES, tiles.as_str()),
+            (TILE_SIZE, &tile_size),
+            (RENDER, &render),
+            (CHECKSUM, &checksum),
+        ];
         if let Some(farm) = &farm {
             attributes.push((FARM_TILE, farm));
         }
@@ -68,7 +76,7 @@ impl Partial {
 
     /// Reads a part from an EXR file written by [`Partial::save`].
     pub fn load(path: &Path) -> Result<Partial, LoadError> {
-        let bytes = std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))?;
+        let bytes = crate::input_file::read(path, crate::input_file::Kind::PartialImage)?;
         Partial::decode(&bytes, path)
     }
 
@@ -90,6 +98,13 @@ impl Partial {
             .map_err(|_| invalid(format!("`{RENDER}` is not a fingerprint")))?;
         let region = Region { x: exr.at.0, y: exr.at.1, width: exr.film.width, height: exr.film.height };
         let done = TileMask::from_ranges(attribute(TILES)?, tile_count_of(region)).map_err(invalid)?;
+        let written = u64::from_str_radix(attribute(CHECKSUM)?, 16)
+            .map_err(|_| invalid(format!("`{CHECKSUM}` is not a checksum")))?;
+        if written != checksum(attribute(TILES)?, &exr.film) {
+            return Err(invalid(format!(
+                "its tile list or pixels changed after tress wrote it (`{CHECKSUM}` does not match): render it afresh"
+            )));
+        }
         let complete = match attribute(STATUS)? {
             "complete" => true,
             "partial" => false,
@@ -119,6 +134,90 @@ impl Partial {
             && s.film.pixels.len() == s.region.pixel_count()
             && Region::full(self.full.0, self.full.1).contains(&s.region)
             && s.done.len() == tile_count_of(s.region)
+    }
+}
+
+/// The hash [`Partial::save`] stores under `tressChecksum`: of the tile list as written and
+/// every pixel's bits, so a file whose list claims tiles that were never rendered (black)
+/// is refused by [`Partial::decode`].
+fn checksum(tiles: &str, film: &Film) -> u64 {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    tiles.hash(&mut h);
+    for p in &film.pixels {
+        let scalars = [
+            p.coverage,
+            p.depth,
+            p.object_id,
+            p.strand_id,
+            p.strand_along,
+            p.root_uv[0],
+            p.root_uv[1],
+            p.clump_id,
+            p.strand_random,
+            p.lod_level,
+            p.samples,
+        ];
+        for x in p.color.to_array().into_iter().chain(p.normal.to_array()).chain(scalars) {
+            h.write_u32(x.to_bits());
+        }
+    }
+    h.finish()
+}
+
+/// The longest interval between checkpoints, in minutes (a year): longer is never.
+pub const MAX_CHECKPOINT_MINUTES: f64 = 525_600.0;
+
+/// Parses `--checkpoint-every`: a positive number of minutes up to
+/// [`MAX_CHECKPOINT_MINUTES`].
+pub fn parse_checkpoint_minutes(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(m) if m > 0.0 && m <= MAX_CHECKPOINT_MINUTES => Ok(m),
+        _ => Err(format!("`{text}` is not a number of minutes above 0 and at most {MAX_CHECKPOINT_MINUTES}")),
+    }
+}
+
+/// Refuses files the render writes that are one file under two names (`x.exr`, `./x.exr`,
+/// a symbolic or hard link): `names` are (how the file was given, e.g. `--checkpoint`,
+/// path). Writing one would overwrite the other, and removing the checkpoint once the
+/// image is written would delete the image.
+pub fn check_distinct(names: &[(&str, &Path)]) -> Result<(), String> {
+    for (i, (a_name, a)) in names.iter().enumerate() {
+        for (b_name, b) in &names[i + 1..] {
+            if same_file(a, b) {
+                return Err(format!(
+                    "{a_name} {} and {b_name} {} are the same file: give them different names",
+                    a.display(),
+                    b.display()
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether two paths name one file: the same device and inode when both exist, else the
+/// same directory (symbolic links resolved) and name.
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+            return (x.dev(), x.ino()) == (y.dev(), y.ino());
+        }
+    }
+    let resolved = |p: &Path| -> Option<PathBuf> {
+        if let Ok(p) = std::fs::canonicalize(p) {
+            return Some(p);
+        }
+        let dir = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        Some(std::fs::canonicalize(dir).ok()?.join(p.file_name()?))
+    };
+    match (resolved(a), resolved(b)) {
+        (Some(x), Some(y)) => x == y,
+        _ => a == b,
     }
 }
 

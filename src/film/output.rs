@@ -285,6 +285,10 @@ fn write_atomically(
     }
     let mut temp: NamedTempFile =
         builder.tempfile_in(directory).map_err(write_error(path, "cannot create a temporary file in its directory"))?;
+    // Held until the file is renamed or deleted: it tells this live temporary file from
+    // the leftovers of killed runs, which are removed now.
+    temp.as_file().lock().map_err(write_error(path, "cannot lock the temporary file"))?;
+    remove_stale_temporaries(directory, &prefix, temp.path());
 
     let mut writer = BufWriter::new(temp.as_file_mut());
     encode(&mut writer)?;
@@ -293,6 +297,31 @@ fn write_atomically(
     temp.as_file().sync_all().map_err(write_error(path, "cannot sync the temporary file to disk"))?;
     temp.persist(path).map_err(|error| write_error(path, "cannot rename the temporary file over it")(error.error))?;
     Ok(())
+}
+
+/// Removes the temporary files named `prefix*.tmp` in `directory` that no live writer
+/// holds locked: what a run killed while writing left behind. A file another process is
+/// writing right now stays. Failures are ignored: a leftover is only clutter.
+fn remove_stale_temporaries(directory: &Path, prefix: &OsString, own: &Path) {
+    let Ok(entries) = std::fs::read_dir(directory) else { return };
+    let prefix = prefix.as_encoded_bytes();
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let bytes = name.as_encoded_bytes();
+        // The random part is never empty: a name of exactly `prefix.tmp` is not ours.
+        if !(bytes.len() > prefix.len() + 4 && bytes.starts_with(prefix) && bytes.ends_with(b".tmp")) {
+            continue;
+        }
+        let candidate = entry.path();
+        if candidate == own || !entry.file_type().is_ok_and(|t| t.is_file()) {
+            continue;
+        }
+        if let Ok(file) = File::open(&candidate) {
+            if file.try_lock().is_ok() {
+                let _ = std::fs::remove_file(&candidate);
+            }
+        }
+    }
 }
 
 /// The step of [`OutputError::Write`] for failures while writing the encoded bytes.

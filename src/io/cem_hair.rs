@@ -148,7 +148,7 @@ fn f32_at(bytes: &[u8], at: usize) -> f32 {
 /// See the [module documentation](self) for how the file's arrays and defaults map onto the
 /// set and which files are rejected.
 pub fn read_hair(path: &Path) -> Result<StrandSet, LoadError> {
-    let bytes = std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))?;
+    let bytes = crate::input_file::read(path, crate::input_file::Kind::Geometry)?;
     parse_hair(&bytes, path)
 }
 
@@ -306,7 +306,7 @@ pub struct HairCounts {
 pub fn read_hair_counts(path: &Path) -> Result<HairCounts, LoadError> {
     use std::io::Read;
     let mut bytes = [0u8; HEADER_SIZE];
-    let mut file = std::fs::File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    let mut file = crate::input_file::open(path, crate::input_file::Kind::Geometry)?;
     file.read_exact(&mut bytes).map_err(|e| LoadError::io(path, "read the hair header", e))?;
     if &bytes[..4] != SIGNATURE {
         return Err(LoadError::format(path, "not a hair file: it does not start with the \"HAIR\" signature"));
@@ -831,7 +831,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("missing.hair");
         let msg = read_hair(&path).unwrap_err().to_string();
-        assert!(msg.contains("missing.hair") && msg.contains("could not read the file"), "{msg}");
+        assert!(msg.contains("missing.hair") && msg.contains("could not open the file"), "{msg}");
     }
 
     #[test]

@@ -8,7 +8,6 @@
 //! object has them, because the mesh stores them for all vertices or none. Materials
 //! (`mtllib`, `usemtl`) are ignored: shading comes from the scene description.
 
-use std::fs::File;
 use std::io::{BufRead, BufReader};
 use std::path::Path;
 
@@ -22,7 +21,7 @@ use crate::geometry::TriangleMesh;
 /// Fails, naming the file, if it cannot be read, does not parse, has a face index out of
 /// range, holds a non-finite position, normal or texture coordinate, or has no triangles.
 pub fn read_obj(path: &Path) -> Result<TriangleMesh, LoadError> {
-    let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    let file = crate::input_file::open(path, crate::input_file::Kind::Geometry)?;
     // tobj drops the underlying error of a failed read; the usual cause is text that is not
     // UTF-8, so look for it in the file to tell the user.
     let cause = || match std::fs::read(path) {
@@ -35,7 +34,7 @@ pub fn read_obj(path: &Path) -> Result<TriangleMesh, LoadError> {
 /// Counts the vertices (`v` lines) and the triangles the faces (`f` lines) make, without
 /// parsing the numbers, for estimates made before reading the file.
 pub fn count_obj(path: &Path) -> Result<(u64, u64), LoadError> {
-    let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    let file = crate::input_file::open(path, crate::input_file::Kind::Geometry)?;
     let (mut vertices, mut triangles) = (0u64, 0u64);
     for line in BufReader::new(file).split(b'\n') {
         let line = line.map_err(|e| LoadError::io(path, "read the file", e))?;

@@ -48,6 +48,9 @@ use std::path::{Path, PathBuf};
 
 /// Deepest nesting of `Include`/`Import`.
 const MAX_INCLUDE_DEPTH: usize = 32;
+/// Most `Include`/`Import`s in a scene, counting every inclusion of a file: nesting alone
+/// bounds nothing, as a file including the next one twice doubles the work at each level.
+const MAX_INCLUDES: usize = 10_000;
 /// Most linear pieces per curve segment (`splitdepth` up to 6).
 const MAX_SPLIT_DEPTH: u32 = 6;
 
@@ -66,7 +69,7 @@ pub fn parse_pbrt(text: &str, path: &Path) -> Result<Imported, LoadError> {
 }
 
 fn read_text(path: &Path) -> Result<String, LoadError> {
-    let bytes = std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))?;
+    let bytes = crate::input_file::read(path, crate::input_file::Kind::ImportedScene)?;
     String::from_utf8(bytes).map_err(|_| LoadError::format(path, "the file is not UTF-8 text"))
 }
 
@@ -289,6 +292,12 @@ struct Parser {
     camera_to_world: Option<DMat4>,
     fov: f64,
     warnings: BTreeSet<String>,
+    /// The files being read, the outermost first, to name an include cycle.
+    chain: Vec<PathBuf>,
+    /// `Include`/`Import`s read so far, and their bytes, for [`MAX_INCLUDES`] and the
+    /// size cap of one imported scene.
+    includes: usize,
+    included_bytes: u64,
 }
 
 impl Parser {
@@ -306,10 +315,20 @@ impl Parser {
             camera_to_world: None,
             fov: 90.0,
             warnings: BTreeSet::new(),
+            chain: Vec::new(),
+            includes: 0,
+            included_bytes: 0,
         }
     }
 
     fn file(&mut self, text: &str, path: &Path, depth: usize) -> Result<(), LoadError> {
+        self.chain.push(std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf()));
+        let read = self.file_body(text, path, depth);
+        self.chain.pop();
+        read
+    }
+
+    fn file_body(&mut self, text: &str, path: &Path, depth: usize) -> Result<(), LoadError> {
         let at = |(line, msg): (u32, String)| LoadError::format(path, format!("line {line}: {msg}"));
         let mut lex = Lexer::new(text);
         while let Some(t) = lex.next().map_err(at)? {
@@ -322,7 +341,28 @@ impl Parser {
                     return Err(at((t.line, format!("includes nest deeper than {MAX_INCLUDE_DEPTH} (a cycle?)"))));
                 }
                 let child = self.dir.join(&name);
+                let canonical = std::fs::canonicalize(&child).unwrap_or_else(|_| child.clone());
+                if let Some(start) = self.chain.iter().position(|p| *p == canonical) {
+                    let names: Vec<String> =
+                        self.chain[start..].iter().chain([&canonical]).map(|p| p.display().to_string()).collect();
+                    return Err(at((t.line, format!("include cycle: {}", names.join(" includes ")))));
+                }
+                self.includes += 1;
+                if self.includes > MAX_INCLUDES {
+                    return Err(at((
+                        t.line,
+                        format!("more than {MAX_INCLUDES} includes in all (files including each other repeatedly?)"),
+                    )));
+                }
                 let text = read_text(&child)?;
+                self.included_bytes += text.len() as u64;
+                let cap = crate::input_file::Kind::ImportedScene.cap();
+                if self.included_bytes > cap {
+                    return Err(at((
+                        t.line,
+                        format!("the included files hold more than {} in all", crate::stats::human_bytes(cap)),
+                    )));
+                }
                 self.file(&text, &child, depth + 1)?;
                 continue;
             }

@@ -15,7 +15,6 @@
 //! claiming 10^12 vertices in a 1 KB file is rejected up front instead of driving the
 //! parser into a huge loop or allocation.
 
-use std::fs::File;
 use std::io::{BufRead, BufReader, Seek};
 use std::path::Path;
 
@@ -162,7 +161,7 @@ impl PropertyAccess for Skip {
 /// element with a vertex index list, if a face refers to a vertex that does not exist, if a
 /// position, normal or texture coordinate is not finite, or if it has no triangles.
 pub fn read_ply(path: &Path) -> Result<TriangleMesh, LoadError> {
-    let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    let file = crate::input_file::open(path, crate::input_file::Kind::Geometry)?;
     let file_len = file.metadata().map_err(|e| LoadError::io(path, "read the file", e))?.len();
     load(Reader::new(BufReader::new(file)), file_len, path)
 }
@@ -170,7 +169,7 @@ pub fn read_ply(path: &Path) -> Result<TriangleMesh, LoadError> {
 /// Reads only the header of a PLY file: its numbers of vertices and faces, for estimates
 /// made before reading it.
 pub fn read_ply_counts(path: &Path) -> Result<(u64, u64), LoadError> {
-    let file = File::open(path).map_err(|e| LoadError::io(path, "open the file", e))?;
+    let file = crate::input_file::open(path, crate::input_file::Kind::Geometry)?;
     let mut reader = Reader::new(BufReader::new(file));
     let start = reader.get_mut().fill_buf().map_err(|e| LoadError::io(path, "read the file", e))?;
     if !start.starts_with(b"ply") {

@@ -54,7 +54,7 @@ struct RefHair {
 /// the OBJ and the `.hair` it names) as a scene description.
 pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
     let path = dir.join("scene.json");
-    let text = std::fs::read_to_string(&path).map_err(|e| LoadError::io(&path, "read the file", e))?;
+    let text = crate::input_file::read_text(&path, crate::input_file::Kind::Scene)?;
     let s: RefScene =
         serde_json::from_str(&text).map_err(|e| LoadError::format(&path, format!("not a reference scene: {e}")))?;
     let lights = s

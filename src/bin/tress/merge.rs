@@ -22,6 +22,9 @@ pub struct MergeArgs {
 pub fn run(args: &MergeArgs) -> Result<()> {
     let output = &args.output;
     tress::film::check_output(output)?;
+    for tile in tiles {
+        tress::partial::check_distinct(&[("-o", output), ("the tile", tile)]).map_err(anyhow::Error::msg)?;
+    }
     if output.exists() && !args.force {
         bail!("{} exists already: pass --force (-f) to overwrite it, or name another with -o", output.display());
     }

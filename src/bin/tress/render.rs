@@ -62,8 +62,9 @@ struct Job {
     /// over its own output. Removed once the image is written.
     #[arg(long, value_name = "PATH")]
     checkpoint: Option<PathBuf>,
-    /// Minutes between checkpoints.
-    #[arg(long, value_name = "MINUTES", default_value_t = 10.0, requires = "checkpoint")]
+    /// Minutes between checkpoints (at most a year).
+    #[arg(long, value_name = "MINUTES", default_value_t = 10.0, requires = "checkpoint",
+          value_parser = tress::partial::parse_checkpoint_minutes)]
     checkpoint_every: f64,
     /// Refuse, before loading anything, a scene whose estimated memory (grown fur
     /// included) exceeds this (bytes, or with a K, M, G or T suffix: powers of 1024).
@@ -116,9 +117,6 @@ pub fn run(args: &RenderArgs) -> Result<()> {
 /// outputs that exist already.
 fn plan(args: &RenderArgs) -> Result<Vec<Target>> {
     let job = &args.job;
-    if !(job.checkpoint_every.is_finite() && job.checkpoint_every > 0.0) {
-        bail!("--checkpoint-every must be a positive number of minutes");
-    }
     if !(args.progress_every.is_finite() && args.progress_every > 0.0) {
         bail!("--progress-every must be a positive number of seconds");
     }
@@ -158,6 +156,8 @@ fn plan(args: &RenderArgs) -> Result<Vec<Target>> {
         tress::film::check_output(&target.output)?;
         if let Some(c) = &target.checkpoint {
             tress::film::check_output(c)?;
+            tress::partial::check_distinct(&[("-o", &target.output), ("--checkpoint", c)])
+                .map_err(anyhow::Error::msg)?;
         }
         // Resuming writes over the partial image the interrupted render left.
         let resuming = target.checkpoint.as_ref().is_some_and(|c| c.exists());

@@ -61,7 +61,7 @@ const MAX_CVS: usize = 1 << 22;
 
 /// Reads a `.ma` file.
 pub fn read_maya(path: &Path) -> Result<Imported, LoadError> {
-    let bytes = std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))?;
+    let bytes = crate::input_file::read(path, crate::input_file::Kind::ImportedScene)?;
     // Maya writes files in the system code page; anything not UTF-8 is replaced, which can
     // only touch names and strings.
     parse_maya(&String::from_utf8_lossy(&bytes), path)

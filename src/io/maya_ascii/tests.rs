@@ -1,9 +1,8 @@
 //! Maya ASCII import against a small scene written as Maya writes them: counts, attribute
-//! values, node defaults, curve knots, line-numbered errors, and random or mutated input.
+//! values, node defaults, curve knots, line-numbered errors (random and mutated input: `tests/hostile.rs`).
 
 use super::*;
 use crate::fur::{ColorAttr, FurDescription, Scalar};
-use proptest::prelude::*;
 
 /// A small scene as Maya writes it: a 2 × 1 quad plane with UVs under a moved transform,
 /// a hair system with three follicles (two with stored transforms and start curves of
@@ -305,32 +304,4 @@ fn the_example_scene_imports() {
     assert_eq!(s.hair_systems.len(), 1);
     assert_eq!(s.fur.len(), 1);
     assert!(s.camera.is_some() && !s.lights.is_empty());
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
-
-    /// Random text never panics.
-    #[test]
-    fn random_text_never_panics(text in "\\PC{0,300}") {
-        let _ = read(&text);
-    }
-
-    /// The scene with a few bytes changed, removed or inserted never panics, and an error
-    /// names the file.
-    #[test]
-    fn mutated_scenes_never_panic(edits in prop::collection::vec((0usize..SCENE.len(), 0u8..3, prop::sample::select(&b"0123456789-.;\" fxyzab[]:\n"[..])), 1..6)) {
-        let mut bytes = SCENE.as_bytes().to_vec();
-        for (at, op, c) in edits {
-            let at = at.min(bytes.len().saturating_sub(1));
-            match op {
-                0 => bytes[at] = c,
-                1 => { bytes.remove(at); }
-                _ => bytes.insert(at, c),
-            }
-        }
-        if let Err(e) = read(&String::from_utf8_lossy(&bytes)) {
-            prop_assert!(e.to_string().starts_with("dir/scene.ma"));
-        }
-    }
 }

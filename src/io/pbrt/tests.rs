@@ -1,8 +1,7 @@
 //! pbrt-v4 import: camera, lights, curves against their control points, materials,
-//! includes, line-numbered errors, and random or mutated input.
+//! includes, line-numbered errors (random and mutated input: `tests/hostile.rs`).
 
 use super::*;
-use proptest::prelude::*;
 
 const SCENE: &str = r#"# a small pbrt-v4 hair scene
 LookAt 0 0 5   0 0 0   0 1 0
@@ -110,7 +109,7 @@ fn includes_named_materials_and_degree_two_curves() {
     // An include cycle is an error, not a hang.
     std::fs::write(dir.path().join("loop.pbrt"), "Include \"loop.pbrt\"\n").unwrap();
     let e = read_pbrt(&dir.path().join("loop.pbrt")).unwrap_err().to_string();
-    assert!(e.contains("deeper"), "{e}");
+    assert!(e.contains("include cycle"), "{e}");
 }
 
 #[test]
@@ -143,29 +142,4 @@ fn sigma_a_round_trips_through_the_physical_material() {
     let Material::Physical(h) = &s.hair[0].material else { panic!() };
     let sigma = h.sigma_a(None);
     assert!((sigma - Vec3::new(0.2, 0.5, 1.1)).abs().max_element() < 1e-4, "{sigma}");
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
-
-    #[test]
-    fn random_text_never_panics(text in "\\PC{0,300}") {
-        let _ = read(&text);
-    }
-
-    #[test]
-    fn mutated_scenes_never_panic(edits in prop::collection::vec((0usize..SCENE.len(), 0u8..3, prop::sample::select(&b"0123456789-.e\"[] #\nPx"[..])), 1..6)) {
-        let mut bytes = SCENE.as_bytes().to_vec();
-        for (at, op, c) in edits {
-            let at = at.min(bytes.len().saturating_sub(1));
-            match op {
-                0 => bytes[at] = c,
-                1 => { bytes.remove(at); }
-                _ => bytes.insert(at, c),
-            }
-        }
-        if let Err(e) = read(&String::from_utf8_lossy(&bytes)) {
-            prop_assert!(e.to_string().starts_with("dir/scene.pbrt"));
-        }
-    }
 }

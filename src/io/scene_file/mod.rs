@@ -23,14 +23,9 @@ use std::path::{Path, PathBuf};
 /// Why a scene file cannot be read.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneFileError {
-    /// The file cannot be read.
-    #[error("{path}: {source}")]
-    Io {
-        /// The scene file.
-        path: PathBuf,
-        /// What failed.
-        source: std::io::Error,
-    },
+    /// The file cannot be opened or read (not a regular file, too large, missing).
+    #[error(transparent)]
+    Read(#[from] crate::error::LoadError),
     /// The TOML is malformed or does not match the scene format.
     #[error("{path}: {message}")]
     Syntax {
@@ -53,7 +48,7 @@ pub enum SceneFileError {
 /// inside it are relative to its directory. Returns the warnings of its `[[import]]`s
 /// (what the imported files hold that tress skipped) with it.
 pub fn read(path: &Path, frame: Option<u32>) -> Result<(Description, Vec<String>), SceneFileError> {
-    let text = std::fs::read_to_string(path).map_err(|source| SceneFileError::Io { path: path.to_owned(), source })?;
+    let text = crate::input_file::read_text(path, crate::input_file::Kind::Scene)?;
     parse(&text, path, frame)
 }
 

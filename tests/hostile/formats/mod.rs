@@ -6,9 +6,14 @@
 
 pub mod exr;
 pub mod hair;
+pub mod imported;
+pub mod ma;
 pub mod obj;
+pub mod pbrt;
 pub mod ply;
 pub mod scene;
+pub mod scene_files;
+pub mod usda;
 
 use tress::geometry::{StrandSet, TriangleMesh};
 
@@ -31,6 +36,10 @@ pub const ALL: &[Format] = &[
     Format { name: "ply", seeds: ply::SEEDS, check: ply::check },
     Format { name: "scene", seeds: scene::SEEDS, check: scene::check },
     Format { name: "exr", seeds: exr::SEEDS, check: exr::check },
+    Format { name: "ma", seeds: ma::SEEDS, check: ma::check },
+    Format { name: "pbrt", seeds: pbrt::SEEDS, check: pbrt::check },
+    Format { name: "usda", seeds: usda::SEEDS, check: usda::check },
+    Format { name: "scene_files", seeds: scene_files::SEEDS, check: scene_files::check },
 ];
 
 /// What every accepted mesh must satisfy: indices in range, finite data, triangles.
