@@ -23,12 +23,12 @@ pub fn assert_usable(scene: Imported) {
     }
     let (desc, _) = scene.into_description();
     if desc.validate().is_ok() {
-        let _ = tress::scene::estimate_memory(&desc);
+        let _ = tress::prepare::estimate_memory(&desc);
     }
 }
 
 /// An error must start with the name of the file it is about: `dir` or a file in it.
-pub fn assert_names_file(error: &tress::io::LoadError, dir: &Path) {
+pub fn assert_names_file(error: &tress::error::LoadError, dir: &Path) {
     let text = error.to_string();
     assert!(text.starts_with(&dir.display().to_string()), "error does not name the file: {text}");
 }

@@ -48,18 +48,18 @@ pub fn check(bytes: &[u8]) -> bool {
         std::fs::write(dir.path().join(name), body).expect("writing a bundled file");
     }
     let scene = dir.path().join("scene.toml");
-    let Ok((mut desc, _)) = tress::io::scene_file::read_scene_frame_with_warnings(&scene, Some(1)) else {
+    let Ok((mut desc, _)) = tress::io::scene_file::read(&scene, Some(1)) else {
         return false;
     };
     if desc.validate().is_err() {
         return false;
     }
     desc.settings.threads = 1;
-    match tress::scene::estimate_memory(&desc) {
+    match tress::prepare::estimate_memory(&desc) {
         Ok(e) if e.total() < PREPARE_BELOW => {}
         _ => return false,
     }
-    tress::scene::prepare(&desc).is_ok()
+    tress::prepare::prepare(&desc).is_ok()
 }
 
 #[cfg(test)]
