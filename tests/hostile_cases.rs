@@ -156,7 +156,7 @@ fn output_and_checkpoint_must_be_different_files() {
     let out = tress(&["merge", "t0.exr", "-o", "./t0.exr"], d);
     assert_refused(&out, &["are the same file"]);
     // Distinct files still work: the image is written and the checkpoint removed.
-    let out = tress(&["render", "s.toml", "-o", "X.exr", "--checkpoint", "c.exr"], d);
+    let out = tress(&["render", "s.toml", "-o", "X.exr", "--checkpoint", "c.exr", "--force"], d);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(std::fs::metadata(d.join("X.exr")).unwrap().len() > 100 && !d.join("c.exr").exists());
 }

@@ -22,7 +22,7 @@ pub struct MergeArgs {
 pub fn run(args: &MergeArgs) -> Result<()> {
     let output = &args.output;
     tress::film::check_output(output)?;
-    for tile in tiles {
+    for tile in &args.tiles {
         tress::partial::check_distinct(&[("-o", output), ("the tile", tile)]).map_err(anyhow::Error::msg)?;
     }
     if output.exists() && !args.force {
