@@ -9,7 +9,7 @@ pub fn check(bytes: &[u8]) -> bool {
     let dir = tempfile::tempdir().expect("a temporary directory");
     let path = dir.path().join("scene.usda");
     std::fs::write(&path, bytes).expect("writing the layer");
-    match tress::io::usd::read_usd(&path) {
+    match tress::io::usd::read_usd(&path, &tress::io::ImportOptions::default()) {
         Ok(scene) => {
             super::imported::assert_usable(scene);
             true
