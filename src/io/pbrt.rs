@@ -22,9 +22,8 @@
 //! `physical` material, which takes its parameters: `beta_m`, `beta_n`, `alpha`, `eta`,
 //! and the absorption from `sigma_a` (as the colour Chiang et al. §4.2 maps to it, which
 //! tress maps back), `reflectance` (that colour) or `eumelanin` and `pheomelanin` (1.3 and
-//! 0 when nothing is given, pbrt's default). The melanin concentrations mean the same
-//! pigment in both renderers; their RGB absorption coefficients differ slightly (pbrt
-//! integrates d'Eon et al. 2011's spectra itself).
+//! 0 when nothing is given, pbrt's default). The melanin concentrations are taken as they
+//! are: both renderers turn them into absorption with the same RGB coefficients.
 //!
 //! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
 //! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the

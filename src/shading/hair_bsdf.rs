@@ -35,10 +35,11 @@ use std::f32::consts::{PI, TAU};
 const LOBES: usize = 4;
 
 /// Absorption of eumelanin and pheomelanin per unit concentration, linear RGB, per fibre
-/// radius: d'Eon §6.1 integrated against RGB (the coefficients Cycles documents for its
-/// Principled Hair BSDF).
-const EUMELANIN_SIGMA_A: Color = Color::new(0.506, 0.841, 1.653);
-const PHEOMELANIN_SIGMA_A: Color = Color::new(0.343, 0.733, 1.924);
+/// radius: Chiang §4.1 (after d'Eon §6.1), the values pbrt-v4
+/// (`HairBxDF::SigmaAFromConcentration`) and Mitsuba 3 (`hair`) use, so that the same
+/// concentrations give the same hair in all three.
+const EUMELANIN_SIGMA_A: Color = Color::new(0.419, 0.697, 1.37);
+const PHEOMELANIN_SIGMA_A: Color = Color::new(0.187, 0.4, 1.05);
 
 /// Smallest roughness used; values below it make the lobes narrower than `f32` resolves.
 const MIN_BETA: f32 = 1e-3;
