@@ -157,7 +157,7 @@ pub fn trace_shadow(world: &World, origins: &[Vec3], light: Vec3, threads: usize
                     .chunks(PACKET)
                     .map(|o| {
                         let rays: smallvec::SmallVec<[Ray; PACKET]> = o.iter().map(|&o| Ray::new(o, light)).collect();
-                        world.accel.occluded_packet(&rays, &[]).count_ones() as u64
+                        world.accel.occluded_packet(&rays).count_ones() as u64
                     })
                     .sum(),
             })

@@ -47,14 +47,15 @@ fn settings(width: u32, height: u32, spp: u32, max_depth: u32, integrator: Integ
     RenderSettings { width, height, spp, max_depth, integrator, ..Default::default() }
 }
 
-/// A ball of random white strands (no absorption): light scatters many times inside it.
-fn hair_ball(count: u32) -> StrandSet {
+/// A ball of random strands of radius `r0` at the root to `r1` at the tip: light scatters
+/// many times inside it.
+fn hair_ball(count: u32, (r0, r1): (f32, f32)) -> StrandSet {
     let mut s = StrandSet::new();
     for i in 0..count {
         let h = |k: u32| tress::math::rng::unit_float(tress::math::rng::hash_combine(&[i, k]));
         let a = tress::math::sampling::uniform_sphere(h(0), h(1)) * 0.6;
         let b = tress::math::sampling::uniform_sphere(h(2), h(3)) * 0.6;
-        s.push_strand([(a, 0.01), (a.lerp(b, 0.5) + Vec3::splat(0.05), 0.01), (b, 0.01)]);
+        s.push_strand([(a, r0), (a.lerp(b, 0.5) + Vec3::splat(0.05), 0.5 * (r0 + r1)), (b, r1)]);
     }
     s
 }
@@ -71,40 +72,43 @@ fn white_hair() -> Material {
 #[test]
 fn path_tracer_white_furnace() {
     // Diffuse albedo 1 sphere and a ball of non-absorbing hair in a uniform environment of
-    // radiance 1: every pixel's expected value is 1.
-    let desc = Description {
-        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
-        settings: settings(24, 24, 64, 64, Integrator::Path),
-        lights: vec![Light::Environment { radiance: Color::ONE }],
-        meshes: vec![mesh(
-            TriangleMesh::sphere(0.5, 48),
-            Material::Diffuse { color: Color::ONE },
-            Affine3A::from_translation(Vec3::new(-0.7, 0.0, 0.0)),
-        )],
-        hair: vec![hair(
-            {
-                let mut b = hair_ball(300);
-                b.transform(&Affine3A::from_translation(Vec3::new(0.7, 0.0, 0.0)));
-                b
-            },
-            white_hair(),
-        )],
-        ..Default::default()
-    };
-    let film = render(&desc, 2);
-    let hair_pixels: Vec<f32> = film.pixels.iter().filter(|p| p.strand_id >= 0.0).map(|p| p.color.x).collect();
-    assert!(hair_pixels.len() > 20, "the hair ball is seen: {}", hair_pixels.len());
-    let m = mean(&film);
-    println!(
-        "furnace: image mean {m}, hair pixels' mean {}",
-        hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32
-    );
-    assert!((m - Vec3::ONE).abs().max_element() < 0.01, "image mean {m}");
-    let hm = hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32;
-    assert!((hm - 1.0).abs() < 0.01, "hair mean {hm}");
-    // The sphere alone is exact for every sample (cosine sampling of an albedo-1 Lambertian).
-    for p in film.pixels.iter().filter(|p| p.object_id == 0.0 && p.coverage == 1.0) {
-        assert!((p.color - Vec3::ONE).abs().max_element() < 1e-4, "{}", p.color);
+    // radiance 1: every pixel's expected value is 1, for strands of constant radius and
+    // tapered ones (which rays leaving a strand must not hit again where they start).
+    for radii in [(0.01, 0.01), (0.02, 0.004)] {
+        let desc = Description {
+            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+            settings: settings(24, 24, 64, 64, Integrator::Path),
+            lights: vec![Light::Environment { radiance: Color::ONE }],
+            meshes: vec![mesh(
+                TriangleMesh::sphere(0.5, 48),
+                Material::Diffuse { color: Color::ONE },
+                Affine3A::from_translation(Vec3::new(-0.7, 0.0, 0.0)),
+            )],
+            hair: vec![hair(
+                {
+                    let mut b = hair_ball(300, radii);
+                    b.transform(&Affine3A::from_translation(Vec3::new(0.7, 0.0, 0.0)));
+                    b
+                },
+                white_hair(),
+            )],
+            ..Default::default()
+        };
+        let film = render(&desc, 2);
+        let hair_pixels: Vec<f32> = film.pixels.iter().filter(|p| p.strand_id >= 0.0).map(|p| p.color.x).collect();
+        assert!(hair_pixels.len() > 20, "the hair ball is seen: {}", hair_pixels.len());
+        let m = mean(&film);
+        println!(
+            "furnace, radii {radii:?}: image mean {m}, hair pixels' mean {}",
+            hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32
+        );
+        assert!((m - Vec3::ONE).abs().max_element() < 0.01, "image mean {m}");
+        let hm = hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32;
+        assert!((hm - 1.0).abs() < 0.01, "hair mean {hm}");
+        // The sphere alone is exact for every sample (cosine sampling of an albedo-1 Lambertian).
+        for p in film.pixels.iter().filter(|p| p.object_id == 0.0 && p.coverage == 1.0) {
+            assert!((p.color - Vec3::ONE).abs().max_element() < 1e-4, "{}", p.color);
+        }
     }
 }
 
@@ -200,7 +204,7 @@ fn shadow_through_layers_of_hair_has_the_expected_transmittance() {
     for (layers, a) in [(1, 0.5), (2, 0.5), (2, 0.3), (3, 0.8)] {
         for integrator in [Integrator::Direct, Integrator::Path] {
             let (world, _) = prepare(&shadow_scene(layers, a, integrator)).unwrap();
-            let mut counters = tress::render::Counters::default();
+            let mut tracer = tress::render::Tracer::new(&world);
             // The direct integrator estimates shadow transmittance stochastically (each
             // shadow ray passes or not): average many samples of one ray.
             const SAMPLES: u32 = 4096;
@@ -210,7 +214,7 @@ fn shadow_through_layers_of_hair_has_the_expected_transmittance() {
                 let sum: f32 = (0..SAMPLES)
                     .map(|i| {
                         let mut sampler = tress::math::rng::PixelSampler::new(0, 0, 0, i);
-                        tress::render::trace_camera(&world, &ray, &mut sampler, &mut counters).0.x
+                        tracer.trace_camera(&ray, &mut sampler).0.x
                     })
                     .sum();
                 sum / SAMPLES as f32
@@ -245,11 +249,11 @@ fn layers_sharing_a_shadow_ray_are_each_lit_through_their_own_on_average() {
     let ray = tress::math::Ray::new(eye, (Vec3::new(0.013, 0.0, -1.004) - eye).normalize());
     let radiance = |desc: &Description, samples: u32| -> Vec<f32> {
         let (world, _) = prepare(desc).unwrap();
-        let mut counters = tress::render::Counters::default();
+        let mut tracer = tress::render::Tracer::new(&world);
         (0..samples)
             .map(|i| {
                 let mut sampler = tress::math::rng::PixelSampler::new(0, 0, 0, i);
-                tress::render::trace_camera(&world, &ray, &mut sampler, &mut counters).0.x
+                tracer.trace_camera(&ray, &mut sampler).0.x
             })
             .collect()
     };
@@ -417,4 +421,62 @@ fn irradiance_cache_gives_the_same_image_on_one_and_two_threads() {
     assert_eq!(sa.irradiance_records, sb.irradiance_records);
     assert!(sa.irradiance_records > 0);
     assert_eq!(a, b);
+}
+
+/// One straight strand of four segments along y, seen from the side: radius `r0` at the
+/// root to `r1` at the tip.
+fn lone_strand(r0: f32, r1: f32, material: Material, integrator: Integrator, max_depth: u32) -> Description {
+    let mut strands = StrandSet::new();
+    strands.push_strand((0..5).map(|i| {
+        let f = i as f32 / 4.0;
+        (Vec3::new(0.0, -1.0 + 2.0 * f, 0.0), r0 + (r1 - r0) * f)
+    }));
+    Description {
+        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+        settings: RenderSettings { gather_rays: 4, ..settings(8, 8, 1, max_depth, integrator) },
+        lights: vec![Light::Environment { radiance: Color::ONE }],
+        hair: vec![hair(strands, material)],
+        ..Default::default()
+    }
+}
+
+/// The mean radiance of camera rays aimed across the strand of [`lone_strand`] at many
+/// heights and offsets from its axis (each ray hits it), and the number of rays.
+fn lone_strand_radiance(desc: &Description, r0: f32, r1: f32) -> (Vec3, u32) {
+    let (world, _) = prepare(desc).unwrap();
+    let mut tracer = tress::render::Tracer::new(&world);
+    let eye = desc.camera.eye;
+    let (mut sum, mut n) = (Vec3::ZERO, 0);
+    for i in 0..64 {
+        let y = -0.95 + 1.9 * (i as f32 + 0.5) / 64.0;
+        let r = r0 + (r1 - r0) * (y + 1.0) / 2.0;
+        for j in 0..32 {
+            let x = r * 0.95 * (-1.0 + 2.0 * (j as f32 + 0.5) / 32.0);
+            let ray = tress::math::Ray::new(eye, (Vec3::new(x, y, 0.0) - eye).normalize());
+            let mut sampler = tress::math::rng::PixelSampler::new(0, i, j, 0);
+            let (color, first) = tracer.trace_camera(&ray, &mut sampler);
+            assert!(first.is_some_and(|f| f.strand == Some(0)), "the ray at {x} {y} hits the strand");
+            sum += color;
+            n += 1;
+        }
+    }
+    (sum / n as f32, n)
+}
+
+/// A lone diffuse strand of albedo `a` in a uniform environment of radiance 1 reflects
+/// exactly `a` (it sees nothing but the sky): every integrator, tapered or not. Each
+/// sample is `a` itself unless a ray leaving the strand hits the strand again (cosine
+/// sampling of a Lambertian under constant light has no variance), so the tolerance is
+/// rounding only.
+#[test]
+fn a_lone_diffuse_strand_in_a_uniform_sky_reflects_its_albedo() {
+    let a = 0.5;
+    for (r0, r1) in [(0.08, 0.02), (0.02, 0.08), (0.05, 0.05)] {
+        for integrator in [Integrator::Path, Integrator::FinalGather, Integrator::Direct] {
+            let desc = lone_strand(r0, r1, Material::Diffuse { color: Color::splat(a) }, integrator, 8);
+            let (m, _) = lone_strand_radiance(&desc, r0, r1);
+            println!("radius {r0} to {r1}, {integrator:?}: {m}");
+            assert!((m - Vec3::splat(a)).abs().max_element() < 1e-3, "radius {r0} to {r1}, {integrator:?}: {m}");
+        }
+    }
 }

@@ -139,7 +139,7 @@ fn semi_transparent_strands_let_the_background_through() {
     use glam::Vec3;
     use tress::geometry::StrandSet;
     use tress::math::{rng::PixelSampler, Ray};
-    use tress::render::{trace, Counters};
+    use tress::render::Tracer;
     use tress::world::RenderSettings;
     let seen = |opacities: &[f32]| {
         let mut strands = StrandSet::new();
@@ -157,7 +157,7 @@ fn semi_transparent_strands_let_the_background_through() {
         for i in 0..n {
             let mut sampler = PixelSampler::new(0, 3, 4, i);
             let ray = Ray::new(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z);
-            sum += trace(&world, &ray, 0, &mut sampler, &mut Counters::default()).0.x;
+            sum += Tracer::new(&world).trace_camera(&ray, &mut sampler).0.x;
         }
         sum / n as f32
     };

@@ -7,7 +7,7 @@ use tress::light::Light;
 use tress::math::rng::PixelSampler;
 use tress::math::{Color, Ray};
 use tress::prepare::prepare;
-use tress::render::{trace, Counters};
+use tress::render::Tracer;
 use tress::scene::{CameraDesc, Description, HairEntry, HairSource};
 use tress::shading::{tube::Tube, Material};
 use tress::world::{RenderSettings, World};
@@ -44,7 +44,7 @@ fn assert_no_acne(world: &World, eye: Vec3, target: Vec3, spread: Vec3, expected
         let ray = Ray::new(eye, (target + offset - eye).normalize());
         let Some(hit) = world.accel.intersect(&ray) else { continue };
         let mut sampler = PixelSampler::new(0, i, 0, 0);
-        let (color, _) = trace(world, &ray, 0, &mut sampler, &mut Counters::default());
+        let (color, _) = Tracer::new(world).trace_camera(&ray, &mut sampler);
         let tress::accel::HitKind::Segment { normal, .. } = hit.kind else { panic!() };
         let want = expected(normal, ray.dir);
         hits += 1;
@@ -103,6 +103,6 @@ fn long_nearly_parallel_segments_do_not_shadow_each_other() {
     // that nothing is darkened to zero, since T varies slightly along the zigzag.
     let joint = strands.position(25);
     let ray = Ray::new(eye, (joint - eye).normalize());
-    let (c, first) = trace(&w, &ray, 0, &mut PixelSampler::new(0, 0, 0, 0), &mut Counters::default());
+    let (c, first) = Tracer::new(&w).trace_camera(&ray, &mut PixelSampler::new(0, 0, 0, 0));
     assert!(first.is_some() && c.x > 0.9 * (1.0 - l.x * l.x).sqrt() / std::f32::consts::PI, "{c}");
 }

@@ -7,10 +7,10 @@
 //! traversal.
 
 use super::lod::Widen;
-use super::{for_each_group, Accel, Hit, HitKind, LeafRay, Object, Shape, Skip};
+use super::{for_each_group, Accel, Hit, HitKind, LeafRay, Object, Shape};
 use crate::geometry::{segment, triangle, StrandSet};
 use crate::math::rng::{hash_combine, unit_float};
-use crate::math::{Ray, RayCone};
+use crate::math::{Ray, RayCone, Skip};
 use glam::Vec3;
 
 /// Transmittance below which a shadow ray counts as blocked and a stack of partial hits
@@ -238,7 +238,7 @@ impl Accel {
         opacity(&o.shape, hit.prim, hit.kind) * o.lod_opacity(hit.level)
     }
 
-    /// The nearest hits along `ray` beyond `tmin`, sorted by distance, into `out`
+    /// The nearest hits along `ray` beyond `tmin` (but on `ray.skip`), sorted by distance, into `out`
     /// (cleared first): at most `k` of them (at least one), ending early at the first
     /// opaque hit or at the first hit behind which less than [`NEGLIGIBLE_TRANSMITTANCE`]
     /// of the light is left (a blend stops there: what lies behind cannot show), or, with
@@ -273,7 +273,7 @@ impl Accel {
                 prims,
                 (ray.origin, ray.dir),
                 (tmin, *cutoff),
-                (None, true),
+                (ray.skip.filter(|s| s.object == object), true),
                 widen,
                 |prim, t, kind, level| {
                     if t >= *cutoff || exclude.iter().any(|e| e.hit.object == object && e.hit.prim == prim) {

@@ -43,7 +43,7 @@ pub use layers::{
 };
 
 use crate::geometry::{segment, triangle, StrandSet, TriangleMesh};
-use crate::math::{Aabb, Ray, RayCone, RayMask, PACKET};
+use crate::math::{Aabb, Ray, RayCone, RayMask, Skip, PACKET};
 use bvh::{BuildItem, Bvh, RayBoxTest};
 use glam::Vec3;
 use lod::{LodCamera, LodLeaf, LodParams, LodRay, StrandLod, Widen};
@@ -217,18 +217,6 @@ pub struct Hit {
     pub radius_scale: f32,
 }
 
-/// Primitives a shadow ray must ignore: the segments `first..=last` of one object (the
-/// hit segment and its neighbours on the strand a shadow ray starts from).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Skip {
-    /// Object index.
-    pub object: u32,
-    /// First ignored primitive.
-    pub first: u32,
-    /// Last ignored primitive.
-    pub last: u32,
-}
-
 /// Every object of a scene with its BVH, under a top-level BVH.
 #[derive(Clone, Debug, Default)]
 pub struct Accel {
@@ -293,14 +281,15 @@ impl Accel {
     }
 
     simd_query! {
-        /// The closest hit along the ray before `ray.tmax`.
+        /// The closest hit along the ray before `ray.tmax`, but on `ray.skip`.
         /// Strand sets with level of detail use the level of `ray.cone` at each distance.
         pub fn intersect / intersect_avx2 / intersect_portable(&self, ray: &Ray) -> Option<Hit> {
             let mut tmax = ray.tmax;
             let mut best = None;
             self.walk(ray.origin, ray.dir, ray.cone, 0.0, &mut tmax, |object, o, prims, widen, tmax| {
+                let skip = ray.skip.filter(|s| s.object == object);
                 if let Some((prim, t, kind, level)) =
-                    intersect_leaf(&o.shape, prims, LeafRay::new(ray.origin, ray.dir), *tmax, None, false, widen)
+                    intersect_leaf(&o.shape, prims, LeafRay::new(ray.origin, ray.dir), *tmax, skip, false, widen)
                 {
                     *tmax = t;
                     best = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
@@ -371,7 +360,8 @@ impl Accel {
             let mut tmax = [0.0; PACKET];
             rays.iter().zip(&mut tmax).for_each(|(r, t)| *t = r.tmax);
             self.walk_packet(rays, &mut tmax, |i, object, o, prims, widen, ray, tmax| {
-                if let Some((prim, t, kind, level)) = intersect_leaf(&o.shape, prims, ray, *tmax, None, false, widen) {
+                let skip = rays[i].skip.filter(|s| s.object == object);
+                if let Some((prim, t, kind, level)) = intersect_leaf(&o.shape, prims, ray, *tmax, skip, false, widen) {
                     *tmax = t;
                     hits[i] = Some(Hit { t, object, prim, kind, level, radius_scale: o.radius_scale(level) });
                 }
@@ -382,18 +372,17 @@ impl Accel {
 
     simd_query! {
         /// Any-hit queries for a packet of up to [`PACKET`] shadow rays: bit i of the result is
-        /// set when something but `skips[i]` (none when `skips` is shorter) lies on ray i before
-        /// its `tmax`, strands with level of detail seen at the level of the ray's cone. For
+        /// set when something but the ray's `skip` lies on ray i before its `tmax`, strands with level of detail seen at the level of the ray's cone. For
         /// opaque scenes this is [`Accel::transmittance_cone`] being 0, for rays that start
         /// close together (a pixel's shadow rays towards one light) at a shared cost.
         pub fn occluded_packet / occluded_packet_avx2 / occluded_packet_portable(
-            &self, rays: &[Ray], skips: &[Option<Skip>],
+            &self, rays: &[Ray],
         ) -> RayMask {
             let rays = &rays[..rays.len().min(PACKET)];
             let mut t = [0.0; PACKET];
             rays.iter().zip(&mut t).for_each(|(r, t)| *t = r.tmax);
             self.walk_packet(rays, &mut t, |i, object, o, prims, widen, ray, t| {
-                let skip = skips.get(i).copied().flatten().filter(|s| s.object == object);
+                let skip = rays[i].skip.filter(|s| s.object == object);
                 intersect_leaf(&o.shape, prims, ray, *t, skip, true, widen).is_some()
             })
         }
@@ -862,16 +851,16 @@ mod tests {
                 // Shadow rays: the same rays up to a distance, some skipping a segment.
                 let mut shadows = rays.clone();
                 shadows.iter_mut().enumerate().for_each(|(i, r)| r.tmax = 2.0 + i as f32);
-                let skips: Vec<Option<Skip>> = (0..n)
-                    .map(|i| {
-                        got[i].filter(|_| i % 2 == 0).map(|h| Skip { object: h.object, first: h.prim, last: h.prim })
-                    })
-                    .collect();
-                let occluded = accel.occluded_packet(&shadows, &skips);
+                for (i, r) in shadows.iter_mut().enumerate() {
+                    r.skip =
+                        got[i].filter(|_| i % 2 == 0).map(|h| Skip { object: h.object, first: h.prim, last: h.prim });
+                }
+                let occluded = accel.occluded_packet(&shadows);
                 for (i, ray) in rays.iter().enumerate() {
                     assert_eq!(got[i], accel.intersect(ray), "ray {i} of packet {p}");
+                    let skip = shadows[i].skip;
                     let expected =
-                        accel.transmittance_cone(ray.origin, ray.dir, shadows[i].tmax, skips[i], ray.cone, None) == 0.0;
+                        accel.transmittance_cone(ray.origin, ray.dir, shadows[i].tmax, skip, ray.cone, None) == 0.0;
                     assert_eq!(occluded >> i & 1 == 1, expected, "shadow ray {i} of packet {p}");
                     hits += got[i].is_some() as u32;
                     blocked += expected as u32;
@@ -890,5 +879,17 @@ mod tests {
         assert!(accel.occluded(o, d, 10.0, None));
         assert!(!accel.occluded(o, d, 10.0, Some(Skip { object: 0, first: 0, last: 0 })));
         assert!(accel.occluded(o, d, 10.0, Some(Skip { object: 0, first: 1, last: 1 })));
+        // A ray's own skip holds for the closest hit, the packets and the layers alike.
+        for (first, hit) in [(0, false), (1, true)] {
+            let ray = Ray { skip: Some(Skip { object: 0, first, last: first }), ..Ray::new(o, d) };
+            assert_eq!(accel.intersect(&ray).is_some(), hit, "skip {first}");
+            let mut got = [None; 4];
+            accel.intersect_packet(&[ray; 4], &mut got);
+            assert_eq!(got[0].is_some(), hit, "skip {first}, packet");
+            assert_eq!(accel.occluded_packet(&[ray; 4]) & 1 == 1, hit, "skip {first}, packet");
+            let mut layers = Vec::new();
+            accel.intersect_k(&ray, 0.0, 4, &[], None, &mut layers);
+            assert_eq!(!layers.is_empty(), hit, "skip {first}, layers");
+        }
     }
 }

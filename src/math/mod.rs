@@ -8,7 +8,7 @@ pub mod rng;
 pub mod sampling;
 
 pub use glam::{Vec3, Vec3A};
-pub use ray::{offset_origin, Ray, RayCone, RayMask, PACKET};
+pub use ray::{offset_origin, Ray, RayCone, RayMask, Skip, PACKET};
 
 /// Linear RGB colour (scene-referred, not clamped).
 pub type Color = glam::Vec3;

@@ -39,6 +39,21 @@ impl RayCone {
     }
 }
 
+/// Primitives a ray ignores: the segments `first..=last` of one object, the strand
+/// segment a ray leaves from and its neighbours on the strand. A ray leaving a strand
+/// starts on its circle at the hit, but the segment test takes the radius where the ray
+/// passes closest to the axis: on a tapered segment, a ray leaving towards the thicker
+/// end starts inside that radius and would hit its own segment again.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Skip {
+    /// Object index.
+    pub object: u32,
+    /// First ignored primitive.
+    pub first: u32,
+    /// Last ignored primitive.
+    pub last: u32,
+}
+
 /// A ray with its valid interval and its cone.
 #[derive(Clone, Copy, Debug)]
 pub struct Ray {
@@ -50,12 +65,15 @@ pub struct Ray {
     pub tmax: f32,
     /// Footprint of the ray.
     pub cone: RayCone,
+    /// The primitives it leaves from, which no query along it hits (`None` for camera
+    /// rays and rays leaving surfaces, which start off the surface instead).
+    pub skip: Option<Skip>,
 }
 
 impl Ray {
     /// A ray from `origin` along unit `dir`, unbounded, with a zero cone.
     pub fn new(origin: Vec3, dir: Vec3) -> Ray {
-        Ray { origin, dir, tmax: f32::INFINITY, cone: RayCone::default() }
+        Ray { origin, dir, tmax: f32::INFINITY, cone: RayCone::default(), skip: None }
     }
 
     /// Point at distance `t`.

@@ -10,12 +10,13 @@
 //! ([`IrradianceCache`]), diffuse surfaces read the gathered light from it where a record
 //! serves, and gather anew elsewhere; hair always gathers anew.
 
-use super::direct::{departure, trace_hinted, trace_with, At, CameraHint, Counters, FirstHit, Indirect, Whitted};
+use super::direct::{trace, Bounce, Indirect, Whitted};
+use super::interaction::{FirstHit, Interaction};
 use super::irradiance_cache::{cached_albedo, IrradianceCache};
+use super::tracer::{CameraHint, Tracer};
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
 use crate::shading::Material;
-use crate::world::World;
 
 /// The final-gather integrator's indirect term, with the irradiance cache when there is one.
 struct FinalGather<'a> {
@@ -23,45 +24,35 @@ struct FinalGather<'a> {
 }
 
 impl Indirect for FinalGather<'_> {
-    fn diffuse(
-        &self,
-        world: &World,
-        at: &At,
-        depth: u32,
-        sampler: &mut PixelSampler,
-        counters: &mut Counters,
-    ) -> Color {
+    fn diffuse(&self, tracer: &mut Tracer, at: &Interaction, depth: u32, sampler: &mut PixelSampler) -> Color {
         if matches!(at.material, Material::Mirror { .. } | Material::Glass { .. }) {
             return Color::ZERO;
         }
         if let (Some(cache), Some(albedo)) = (self.cache, cached_albedo(at)) {
-            if let Some(e) = cache.lookup(at.surface.sp.p, at.surface.sp.normal) {
+            if let Some(e) = cache.lookup(at.sp.p, at.sp.normal) {
                 return albedo * e;
             }
         }
-        let n = world.settings.gather_rays;
+        let n = tracer.world.settings.gather_rays;
         let mut sum = Color::ZERO;
         for _ in 0..n {
-            let Some(s) = at.material.sample_scatter(&at.surface.sp, at.wo, sampler) else { continue };
-            let d = departure(at.surface, at.hit, s.dir, at.material.shades_whole_circle());
-            let mut ray = Ray::new(d.origin, s.dir);
-            ray.cone = at.cone.scattered(at.hit.t, s.pdf, n);
-            sum += s.weight
-                * trace_with(world, &ray, depth + 1, sampler, counters, &Whitted { see_emitters: false }, false).0;
+            let Some(s) = at.material.sample_scatter(&at.sp, at.wo, sampler) else { continue };
+            let ray = Ray { cone: at.cone.scattered(at.hit.t, s.pdf, n), ..at.spawn_ray(s.dir) };
+            let gathered = Bounce::scattered(depth + 1, false);
+            sum += s.weight * trace(tracer, &ray, gathered, sampler, &Whitted { see_emitters: false }).0;
         }
         sum / n as f32
     }
 }
 
 /// Radiance along a camera ray by final gathering, and the first hit for AOVs; diffuse
-/// surfaces read `cache` where one of its records serves.
-pub fn trace(
-    world: &World,
-    cache: Option<&IrradianceCache>,
+/// surfaces read the tracer's irradiance cache where one of its records serves.
+pub(super) fn trace_camera(
+    tracer: &mut Tracer,
     ray: &Ray,
     hint: CameraHint,
     sampler: &mut PixelSampler,
-    counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    trace_hinted(world, ray, hint, sampler, counters, &FinalGather { cache })
+    let gather = FinalGather { cache: tracer.cache };
+    trace(tracer, ray, Bounce::camera(hint), sampler, &gather)
 }

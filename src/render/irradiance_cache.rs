@@ -23,9 +23,11 @@
 //! back to gathering where no record serves. So the cache, and the image, are the same
 //! for any thread count, and for any set of tiles rendered from the same scene.
 
-use super::direct::{departure, trace_with, At, Counters, Indirect, Whitted};
+use super::direct::{trace, Bounce, Indirect, Whitted};
+use super::interaction::Interaction;
+use super::tracer::{CameraHint, Counters, Tracer};
 use crate::math::rng::{hash_combine, PixelSampler};
-use crate::math::{frame, Color, Ray};
+use crate::math::{frame, Color, Ray, RayCone};
 use crate::shading::Material;
 use crate::world::{IrradianceCacheSettings, World};
 use glam::Vec3;
@@ -66,10 +68,10 @@ pub struct IrradianceCache {
 
 /// The albedo the cached light is reflected with, for a hit the cache serves: diffuse
 /// surfaces only (not hair, not glossy or specular materials).
-pub(super) fn cached_albedo(at: &At) -> Option<Color> {
+pub(super) fn cached_albedo(at: &Interaction) -> Option<Color> {
     match at.material {
-        Material::Diffuse { color } if at.surface.hair.is_none() => Some(at.surface.sp.color.unwrap_or(*color)),
-        Material::Textured(t) if at.surface.hair.is_none() && t.roughness.is_none() => Some(t.albedo(&at.surface.sp)),
+        Material::Diffuse { color } if !at.on_hair() => Some(at.sp.color.unwrap_or(*color)),
+        Material::Textured(t) if !at.on_hair() && t.roughness.is_none() => Some(t.albedo(&at.sp)),
         _ => None,
     }
 }
@@ -161,9 +163,9 @@ impl IrradianceCache {
         let mut sampler = PixelSampler::new(hash_combine(&[world.settings.seed, STREAM, level]), x, y, 0);
         let ray = world.camera.ray(x as f32 + 0.5, y as f32 + 0.5);
         let recorder = Recorder { cache: self, settings, found: RefCell::new(Vec::new()) };
-        let mut counters = Counters::default();
-        trace_with(world, &ray, 0, &mut sampler, &mut counters, &recorder, true);
-        (recorder.found.into_inner(), counters.rays)
+        let mut tracer = Tracer::new(world);
+        trace(&mut tracer, &ray, Bounce::camera(CameraHint::None), &mut sampler, &recorder);
+        (recorder.found.into_inner(), tracer.counters.rays)
     }
 }
 
@@ -176,16 +178,9 @@ struct Recorder<'a> {
 }
 
 impl Indirect for Recorder<'_> {
-    fn diffuse(
-        &self,
-        world: &World,
-        at: &At,
-        depth: u32,
-        sampler: &mut PixelSampler,
-        counters: &mut Counters,
-    ) -> Color {
-        if cached_albedo(at).is_some() && self.cache.lookup(at.surface.sp.p, at.surface.sp.normal).is_none() {
-            let record = gather_record(world, at, depth, self.settings, sampler, counters);
+    fn diffuse(&self, tracer: &mut Tracer, at: &Interaction, depth: u32, sampler: &mut PixelSampler) -> Color {
+        if cached_albedo(at).is_some() && self.cache.lookup(at.sp.p, at.sp.normal).is_none() {
+            let record = gather_record(tracer, at, depth, self.settings, sampler);
             self.found.borrow_mut().push(record);
         }
         Color::ZERO
@@ -196,14 +191,13 @@ impl Indirect for Recorder<'_> {
 /// `M` rings of equal weight (`sin^2 theta` uniform) by `N` sectors, `N` about `pi M`
 /// (Ward & Heckbert 1992, section 2), each returning what the final gather's rays return.
 fn gather_record(
-    world: &World,
-    at: &At,
+    tracer: &mut Tracer,
+    at: &Interaction,
     depth: u32,
     settings: IrradianceCacheSettings,
     sampler: &mut PixelSampler,
-    counters: &mut Counters,
 ) -> Record {
-    let sp = &at.surface.sp;
+    let sp = &at.sp;
     let n = sp.normal;
     let (b1, b2) = frame(n);
     let rings = ((settings.rays as f32 / PI).sqrt().round() as usize).max(2);
@@ -223,10 +217,10 @@ fn gather_record(
             let (sin_t, cos_t) = (sin2.sqrt(), (1.0 - sin2).max(0.0).sqrt());
             let phi = 2.0 * PI * (k as f32 + v) / sectors as f32;
             let dir = (sector(phi) * sin_t + n * cos_t).normalize();
-            let d = departure(at.surface, at.hit, dir, false);
+            // A record stands for many pixels: its rays see strands at full detail.
+            let ray = Ray { cone: RayCone::default(), ..at.spawn_ray(dir) };
             let gathered = Whitted { see_emitters: false };
-            let (l, first) =
-                trace_with(world, &Ray::new(d.origin, dir), depth + 1, sampler, counters, &gathered, false);
+            let (l, first) = trace(tracer, &ray, Bounce::scattered(depth + 1, false), sampler, &gathered);
             let t = first.map_or(f32::INFINITY, |f| f.t);
             radiance[j * sectors + k] = l;
             dist[j * sectors + k] = t;
@@ -273,11 +267,11 @@ fn gather_record(
     let e = radiance.iter().sum::<Color>() / count;
     let harmonic = if inverse_dist > 0.0 { count / inverse_dist } else { f32::INFINITY };
     // Screen-space clamp: a record serves between `spacing` and `8 spacing` pixels around it.
-    let scale = at.footprint * settings.spacing as f32 / settings.accuracy;
+    let scale = at.footprint() * settings.spacing as f32 / settings.accuracy;
     let r = if scale > 0.0 {
         harmonic.clamp(scale, scale * (1 << (LEVELS - 1)) as f32)
     } else {
-        harmonic.min(world.accel.bounds().half_area().sqrt())
+        harmonic.min(tracer.world.accel.bounds().half_area().sqrt())
     };
     // Gradient limiting (Krivanek & Gautron 2009, "Practical Global Illumination with
     // Irradiance Caching"): within its reach a record extrapolates at most to 0 or to

@@ -7,19 +7,25 @@ mod adaptive;
 mod direct;
 mod environment;
 mod final_gather;
+mod interaction;
 mod irradiance_cache;
 mod path;
+mod shadow;
 mod tiled;
+mod tracer;
 
-pub use direct::{trace, CameraHint, Counters, FirstHit, PixelShadows, BLEND_TRANSMITTANCE};
+pub use direct::BLEND_TRANSMITTANCE;
+pub use interaction::FirstHit;
 pub use irradiance_cache::IrradianceCache;
+pub use shadow::PixelShadows;
 pub use tiled::{render_tiles, tile_count_of, AfterTile, Control, TileMask, TiledFilm};
+pub use tracer::{CameraHint, Counters, Tracer};
 
 use crate::accel::Hit;
 use crate::film::{Film, Pixel};
 use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray, PACKET};
-use crate::world::{Integrator, World};
+use crate::world::World;
 use glam::Vec3;
 use std::time::Duration;
 
@@ -56,44 +62,15 @@ pub fn render(world: &World, progress: Option<&dyn Progress>) -> (Film, RenderSt
     (state.film, stats)
 }
 
-/// Radiance along a camera ray by the world's integrator, and the first hit. The final
-/// gather gathers at every hit here (the irradiance cache needs a pre-pass over the image:
-/// [`trace_camera_cached`]).
-pub fn trace_camera(
-    world: &World,
-    ray: &Ray,
-    sampler: &mut PixelSampler,
-    counters: &mut Counters,
-) -> (Color, Option<FirstHit>) {
-    trace_camera_cached(world, None, ray, CameraHint::None, sampler, counters)
-}
-
-/// [`trace_camera`], the final gather reading `cache` on diffuse surfaces, with what the
-/// ray's pixel tells of it (`hint`).
-pub fn trace_camera_cached(
-    world: &World,
-    cache: Option<&IrradianceCache>,
-    ray: &Ray,
-    hint: CameraHint,
-    sampler: &mut PixelSampler,
-    counters: &mut Counters,
-) -> (Color, Option<FirstHit>) {
-    match world.settings.integrator {
-        Integrator::Direct => direct::trace_camera(world, ray, hint, sampler, counters),
-        Integrator::FinalGather => final_gather::trace(world, cache, ray, hint, sampler, counters),
-        Integrator::Path => path::trace(world, ray, hint, sampler, counters),
-    }
-}
-
 /// Per-ray values of one batch of a pixel's samples: on the stack up to a packet's worth.
 type PixelRays<T> = smallvec::SmallVec<[T; PACKET]>;
 
 /// The closest hits of a pixel's camera rays, traced as packets ([`crate::accel::Accel::intersect_packet`]:
 /// the same hits as one by one, for less work), when every integrator starts with exactly
 /// that query (in scenes without semi-transparent strands) and there are enough rays
-/// ([`direct::MIN_PACKET`]). `None` otherwise.
+/// ([`shadow::MIN_PACKET`]). `None` otherwise.
 fn camera_hits(world: &World, rays: &[Ray]) -> Option<PixelRays<Option<Hit>>> {
-    if world.accel.has_transparency() || rays.len() < direct::MIN_PACKET {
+    if world.accel.has_transparency() || rays.len() < shadow::MIN_PACKET {
         return None;
     }
     let mut hits: PixelRays<Option<Hit>> = smallvec::smallvec![None; rays.len()];
@@ -110,13 +87,8 @@ fn camera_hits(world: &World, rays: &[Ray]) -> Option<PixelRays<Option<Hit>>> {
 ///
 /// `shadows` holds the shadow rays of a batch of samples traced as packets (empty between
 /// calls; one per task spares allocating its arrays per pixel).
-fn render_pixel(
-    world: &World,
-    cache: Option<&IrradianceCache>,
-    (x, y): (u32, u32),
-    shadows: &mut PixelShadows,
-    counters: &mut Counters,
-) -> Pixel {
+fn render_pixel(tracer: &mut Tracer, (x, y): (u32, u32), shadows: &mut PixelShadows) -> Pixel {
+    let world = tracer.world;
     let (min, max, threshold) = match world.settings.adaptive {
         Some(a) => (a.min_spp, a.max_spp, Some(a.threshold)),
         None => (world.settings.spp, world.settings.spp, None),
@@ -147,7 +119,7 @@ fn render_pixel(
                 None if layers_first => CameraHint::LayersFirst,
                 None => CameraHint::None,
             };
-            let (color, first) = trace_camera_cached(world, cache, ray, hint, &mut sampler, counters);
+            let (color, first) = tracer.trace_camera_hinted(ray, hint, &mut sampler);
             layers_first = first.is_some_and(|f| {
                 f.lod_level.is_some_and(|l| world.accel.objects[f.object as usize].lod_opacity(l) < 1.0)
             });
@@ -170,7 +142,7 @@ fn render_pixel(
                 hits += 1;
             }
         }
-        shadows.trace(world, &mut colors, counters);
+        shadows.trace(tracer, &mut colors);
         for (&color, &key) in colors.iter().zip(&keys) {
             sum += color;
             spread.add(color, key);
@@ -202,14 +174,14 @@ mod tests {
             assert!(!world.accel.has_transparency());
             let (mut hair, mut shadowed) = (0, 0);
             for (x, y) in (0..36).flat_map(|y| (0..48).map(move |x| (x, y))) {
-                let mut counters = Counters::default();
-                let packed = render_pixel(&world, None, (x, y), &mut PixelShadows::default(), &mut counters);
+                let mut tracer = Tracer::new(&world);
+                let packed = render_pixel(&mut tracer, (x, y), &mut PixelShadows::default());
                 let mut sum = Vec3::ZERO;
                 for s in 0..8 {
                     let mut sampler = PixelSampler::new(world.settings.seed, x, y, s);
                     let (jx, jy) = world.settings.filter.place(sampler.next_2d());
                     let ray = world.camera.ray(x as f32 + jx, y as f32 + jy);
-                    let (color, first) = trace_camera(&world, &ray, &mut sampler, &mut counters);
+                    let (color, first) = tracer.trace_camera(&ray, &mut sampler);
                     sum += color;
                     hair += first.is_some_and(|f| f.strand.is_some()) as u32;
                     // Black where a hit's every shadow ray was blocked and nothing else lit it.

@@ -14,8 +14,9 @@
 //! `max_depth` counts scattering vertices after the first: with 0, the camera hit's direct
 //! light only (the direct integrator's image); with 1, one bounce of indirect light.
 
-use super::direct::{departure, surface_at, CameraHint, Counters, FirstHit};
-use crate::accel::{Hit, LayerHit, NEGLIGIBLE_TRANSMITTANCE};
+use super::interaction::{FirstHit, Interaction};
+use super::tracer::{CameraHint, LayerWalk, Tracer};
+use crate::accel::{Hit, NEGLIGIBLE_TRANSMITTANCE};
 use crate::light::Light;
 use crate::math::rng::PixelSampler;
 use crate::math::sampling::power_heuristic;
@@ -38,47 +39,55 @@ fn sky(world: &World, dir: glam::Vec3, scatter_pdf: Option<f32>) -> Color {
 /// probability equal to its opacity, front to back; a ray never goes past a stack of
 /// partial hits that lets less than [`NEGLIGIBLE_TRANSMITTANCE`] through (a bias below
 /// that fraction, where the multi-hit query stops looking).
-fn next_hit(
-    world: &World,
-    ray: &Ray,
-    sampler: &mut PixelSampler,
-    layers: &mut Vec<LayerHit>,
-    seen: &mut Vec<LayerHit>,
-) -> Option<Hit> {
-    if !world.accel.has_transparency() {
-        return world.accel.intersect(ray);
+fn next_hit(tracer: &mut Tracer, ray: &Ray, sampler: &mut PixelSampler, walk: &mut LayerWalk) -> Option<Hit> {
+    if !tracer.world.accel.has_transparency() {
+        return tracer.world.accel.intersect(ray);
     }
-    let k = world.settings.transparency_layers as usize;
-    seen.clear();
-    let mut tmin = 0.0;
-    loop {
-        world.accel.intersect_k(ray, tmin, k, seen, None, layers);
-        let mut transmitted = 1.0f32;
-        for l in layers.iter() {
-            transmitted *= 1.0 - l.opacity;
-            // The list ends where less than NEGLIGIBLE_TRANSMITTANCE passes: stop there.
-            if transmitted < NEGLIGIBLE_TRANSMITTANCE || sampler.next_1d() < l.opacity {
-                return Some(l.hit);
-            }
+    walk.restart(0.0, None);
+    let mut transmitted = 1.0f32;
+    while let Some(l) = walk.next(tracer, ray) {
+        transmitted *= 1.0 - l.opacity;
+        // The list ends where less than NEGLIGIBLE_TRANSMITTANCE passes: stop there.
+        if transmitted < NEGLIGIBLE_TRANSMITTANCE || sampler.next_1d() < l.opacity {
+            return Some(l.hit);
         }
-        if layers.len() < k {
-            return None;
+    }
+    None
+}
+
+/// Next-event estimation at a path vertex of throughput `beta`, added to `radiance`: one
+/// sample of every light but the constant environment (which material sampling reaches), shadowed,
+/// weighted by MIS against the material sample for lights that sample can hit.
+fn next_event(tracer: &mut Tracer, at: &Interaction, beta: Color, sampler: &mut PixelSampler, radiance: &mut Color) {
+    let (sp, material) = (&at.sp, at.material);
+    for light in tracer.world.lights.iter().filter(|l| l.background() == Color::ZERO) {
+        let Some(ls) = light.sample(sp.p, Some(sp.normal), sampler.next_2d()) else { continue };
+        let f = material.response(sp, at.wo, ls.dir);
+        if f.max_element() <= 0.0 {
+            continue;
         }
-        tmin = layers[k - 1].hit.t;
-        seen.extend_from_slice(layers);
+        let transmitted = tracer.transmittance(&at.shadow_ray(ls.dir, ls.dist, None));
+        if transmitted > 0.0 {
+            let w = if hittable(light) {
+                power_heuristic(light.pdf(sp.p, ls.dir), material.scatter_pdf(sp, at.wo, ls.dir))
+            } else {
+                1.0
+            };
+            *radiance += beta * f * ls.value * (transmitted * w);
+        }
     }
 }
 
 /// Radiance along a camera ray by path tracing, and the first hit for AOVs.
 /// `hint` may hold the camera ray's closest hit, already traced ([`CameraHint::Hit`]).
-pub fn trace(
-    world: &World,
+pub(super) fn trace_camera(
+    tracer: &mut Tracer,
     ray: &Ray,
     hint: CameraHint,
     sampler: &mut PixelSampler,
-    counters: &mut Counters,
 ) -> (Color, Option<FirstHit>) {
-    let (mut layers, mut seen) = (Vec::new(), Vec::new());
+    let world = tracer.world;
+    let mut walk = LayerWalk::default();
     let mut ray = *ray;
     let (mut radiance, mut beta) = (Color::ZERO, Color::ONE);
     let mut first = None;
@@ -87,18 +96,12 @@ pub fn trace(
     let mut scatter_pdf: Option<f32> = None;
     let mut vertex = 0u32;
     loop {
-        counters.rays += 1;
+        tracer.counters.rays += 1;
         let hit = match &hint {
             CameraHint::Hit { hit, .. } if vertex == 0 => *hit,
-            _ => next_hit(world, &ray, sampler, &mut layers, &mut seen),
+            _ => next_hit(tracer, &ray, sampler, &mut walk),
         };
-        let t_hit = hit.map_or(ray.tmax, |h| h.t);
-        let seen_light = world
-            .lights
-            .iter()
-            .filter_map(|l| l.emitted(ray.origin, ray.dir, t_hit).map(|(t, le)| (t, le, l)))
-            .min_by(|a, b| a.0.total_cmp(&b.0));
-        if let Some((_, le, light)) = seen_light {
+        if let Some((_, le, light)) = tracer.light_along(&ray, hit.map_or(ray.tmax, |h| h.t)) {
             let w = scatter_pdf.map_or(1.0, |pdf| power_heuristic(pdf, light.pdf(ray.origin, ray.dir)));
             radiance += beta * le * w;
             if hit.is_none() {
@@ -114,39 +117,13 @@ pub fn trace(
         if vertex > world.settings.max_depth {
             break;
         }
-        let object = &world.accel.objects[hit.object as usize];
-        let material = &world.materials[object.material as usize];
-        let surface = surface_at(object, &hit, &ray);
-        let sp = &surface.sp;
-        let wo = -ray.dir;
-        let tube = material.shades_whole_circle();
+        let at = Interaction::new(world, &ray, &hit);
         if vertex == 0 {
-            first = Some(surface.first_hit(&hit));
+            first = Some(at.first_hit());
         }
+        next_event(tracer, &at, beta, sampler, &mut radiance);
 
-        // Next-event estimation: one sample of every light but the constant environment.
-        for light in world.lights.iter().filter(|l| l.background() == Color::ZERO) {
-            let Some(ls) = light.sample(sp.p, Some(sp.normal), sampler.next_2d()) else { continue };
-            let f = material.response(sp, wo, ls.dir);
-            if f.max_element() <= 0.0 {
-                continue;
-            }
-            let d = departure(&surface, &hit, ls.dir, tube);
-            counters.rays += 1;
-            let tmax = if ls.dist.is_finite() { ls.dist * (1.0 - 1e-4) } else { f32::INFINITY };
-            let cone = ray.cone.propagate(hit.t, 0.0);
-            let transmitted = world.accel.transmittance_cone(d.origin, ls.dir, tmax, d.skip, cone, None);
-            if transmitted > 0.0 {
-                let w = if hittable(light) {
-                    power_heuristic(light.pdf(sp.p, ls.dir), material.scatter_pdf(sp, wo, ls.dir))
-                } else {
-                    1.0
-                };
-                radiance += beta * f * ls.value * (transmitted * w);
-            }
-        }
-
-        let Some(s) = material.sample_scatter(sp, wo, sampler) else { break };
+        let Some(s) = at.material.sample_scatter(&at.sp, at.wo, sampler) else { break };
         beta *= s.weight;
         scatter_pdf = (!s.is_specular()).then_some(s.pdf);
         // Russian roulette (PBR 4th ed. 13.1.1): paths that carry little go on rarely,
@@ -159,10 +136,7 @@ pub fn trace(
             }
             beta /= 1.0 - q;
         }
-        let d = departure(&surface, &hit, s.dir, tube);
-        let mut next = Ray::new(d.origin, s.dir);
-        next.cone = ray.cone.scattered(hit.t, s.pdf, 1);
-        ray = next;
+        ray = Ray { cone: ray.cone.scattered(hit.t, s.pdf, 1), ..at.spawn_ray(s.dir) };
         vertex += 1;
     }
     (radiance, first)

@@ -2,7 +2,7 @@
 //! and resumed, or be split over machines: every pixel depends only on (seed, pixel,
 //! sample), so any set of tiles, rendered in any order or process, gives the same pixels.
 
-use super::{render_pixel, Counters, IrradianceCache, PixelShadows, Progress, RenderStats, TILE};
+use super::{render_pixel, Counters, IrradianceCache, PixelShadows, Progress, RenderStats, Tracer, TILE};
 use crate::film::{Film, Region};
 use crate::world::{Integrator, World};
 use rayon::prelude::*;
@@ -167,7 +167,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
                 return 0;
             }
             let tile = tile_of(region, t);
-            let mut counters = Counters::default();
+            let mut tracer = Tracer::with_cache(world, cache.as_ref());
             let mut shadows = PixelShadows::default();
             let mut pixels = Film::new(tile.width, tile.height);
             for (i, p) in pixels.pixels.iter_mut().enumerate() {
@@ -175,7 +175,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
                     return 0;
                 }
                 let (x, y) = (tile.x + i as u32 % tile.width, tile.y + i as u32 / tile.width);
-                *p = render_pixel(world, cache.as_ref(), (x, y), &mut shadows, &mut counters);
+                *p = render_pixel(&mut tracer, (x, y), &mut shadows);
             }
             {
                 let mut s = lock(&shared);
@@ -188,7 +188,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
             if let Some(after) = control.after_tile {
                 after(&shared);
             }
-            counters.rays
+            tracer.counters.rays
         })
         .sum();
     let state = shared.into_inner().unwrap_or_else(|e| e.into_inner());
