@@ -23,7 +23,9 @@ OUTDIR/curves.hair), so both see the same geometry.
   mitsuba-seed1 the same with seed 1: the noise level of Mitsuba's image
 Then, for the pairs that exist, the mean absolute difference of 8x8 block means over the
 mean of the second image, in percent (`diff A B = X %`), and each render's time.
-Needs `pip install mitsuba numpy` and a release build of tress (`cargo build --release`).
+Needs `pip install mitsuba numpy`, a release build of tress (`cargo build --release`) and,
+for Mitsuba's LLVM variant, a libLLVM Dr.Jit can use (LLVM 19 works, 15 does not), named by
+DRJIT_LIBLLVM_PATH (e.g. /usr/lib/x86_64-linux-gnu/libLLVM.so.19.1).
 """
 import argparse, json, os, struct, subprocess, sys, time
 
@@ -146,7 +148,9 @@ def main():
             "torus": {"type": "obj", "filename": os.path.join(a.dir, s["meshes"][0]["obj"]),
                       "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": s["meshes"][0]["diffuse"]}}},
             "hair": {"type": "bsplinecurve", "filename": os.path.join(a.out, "curves.txt"),
-                     "bsdf": {"type": "hair", **hair}},
+                     "bsdf": {"type": "hair", "eumelanin": hair["eumelanin"], "pheomelanin": hair["pheomelanin"],
+                              "longitudinal_roughness": hair["beta_m"], "azimuthal_roughness": hair["beta_n"],
+                              "scale_tilt": hair["alpha"], "int_ior": hair["eta"]}},
         }
         for i, light in enumerate(s["lights"]):
             if light["type"] == "distant":

@@ -441,42 +441,52 @@ fn lone_strand(r0: f32, r1: f32, material: Material, integrator: Integrator, max
 }
 
 /// The mean radiance of camera rays aimed across the strand of [`lone_strand`] at many
-/// heights and offsets from its axis (each ray hits it), and the number of rays.
-fn lone_strand_radiance(desc: &Description, r0: f32, r1: f32) -> (Vec3, u32) {
+/// heights and offsets from its axis (each ray hits it, 16 samples each), and the standard
+/// error of that mean.
+fn lone_strand_radiance(desc: &Description, r0: f32, r1: f32) -> (Vec3, f32) {
     let (world, _) = prepare(desc).unwrap();
     let mut tracer = tress::render::Tracer::new(&world);
     let eye = desc.camera.eye;
-    let (mut sum, mut n) = (Vec3::ZERO, 0);
+    let mut values = Vec::new();
     for i in 0..64 {
         let y = -0.95 + 1.9 * (i as f32 + 0.5) / 64.0;
         let r = r0 + (r1 - r0) * (y + 1.0) / 2.0;
         for j in 0..32 {
             let x = r * 0.95 * (-1.0 + 2.0 * (j as f32 + 0.5) / 32.0);
             let ray = tress::math::Ray::new(eye, (Vec3::new(x, y, 0.0) - eye).normalize());
-            let mut sampler = tress::math::rng::PixelSampler::new(0, i, j, 0);
-            let (color, first) = tracer.trace_camera(&ray, &mut sampler);
-            assert!(first.is_some_and(|f| f.strand == Some(0)), "the ray at {x} {y} hits the strand");
-            sum += color;
-            n += 1;
+            for sample in 0..16 {
+                let mut sampler = tress::math::rng::PixelSampler::new(0, i, j, sample);
+                let (color, first) = tracer.trace_camera(&ray, &mut sampler);
+                assert!(first.is_some_and(|f| f.strand == Some(0)), "the ray at {x} {y} hits the strand");
+                values.push(color);
+            }
         }
     }
-    (sum / n as f32, n)
+    let n = values.len() as f32;
+    let mean = values.iter().sum::<Vec3>() / n;
+    let variance = values.iter().map(|v| (v.x - mean.x).powi(2)).sum::<f32>() / (n - 1.0);
+    (mean, (variance / n).sqrt())
 }
 
 /// A lone diffuse strand of albedo `a` in a uniform environment of radiance 1 reflects
-/// exactly `a` (it sees nothing but the sky): every integrator, tapered or not. Each
-/// sample is `a` itself unless a ray leaving the strand hits the strand again (cosine
-/// sampling of a Lambertian under constant light has no variance), so the tolerance is
-/// rounding only.
+/// exactly `a` (it sees nothing but the sky): every integrator, tapered either way or not.
+/// The direct integrator and the final gather are exact per sample (cosine sampling of a
+/// Lambertian under constant light; gathered rays that reach the sky bring nothing) unless
+/// a ray leaving the strand hits the strand again; the path tracer samples the sphere
+/// around a strand of a non-hair material, so its tolerance is statistical.
 #[test]
 fn a_lone_diffuse_strand_in_a_uniform_sky_reflects_its_albedo() {
     let a = 0.5;
     for (r0, r1) in [(0.08, 0.02), (0.02, 0.08), (0.05, 0.05)] {
         for integrator in [Integrator::Path, Integrator::FinalGather, Integrator::Direct] {
             let desc = lone_strand(r0, r1, Material::Diffuse { color: Color::splat(a) }, integrator, 8);
-            let (m, _) = lone_strand_radiance(&desc, r0, r1);
-            println!("radius {r0} to {r1}, {integrator:?}: {m}");
-            assert!((m - Vec3::splat(a)).abs().max_element() < 1e-3, "radius {r0} to {r1}, {integrator:?}: {m}");
+            let (m, error) = lone_strand_radiance(&desc, r0, r1);
+            println!("radius {r0} to {r1}, {integrator:?}: {m} (standard error {error})");
+            let tolerance = 1e-3 + 4.0 * error;
+            assert!(
+                (m - Vec3::splat(a)).abs().max_element() < tolerance,
+                "radius {r0} to {r1}, {integrator:?}: {m}, tolerance {tolerance}"
+            );
         }
     }
 }
