@@ -183,7 +183,7 @@ pub fn render_tiles(world: &World, state: TiledFilm, control: &Control) -> (Tile
                 s.done.set(t);
             }
             if let Some(p) = control.progress {
-                p.advance(1, counters.rays);
+                p.advance(1, tracer.counters.rays);
             }
             if let Some(after) = control.after_tile {
                 after(&shared);
