@@ -190,9 +190,32 @@ fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> HairEnt
 }
 
 /// Checks a primvar's length against what its interpolation needs.
-fn check_len(what: &str, len: usize, interp: Interpolation, expect: impl Fn(Interpolation) -> usize) -> Res<()> {
-    anyhow::ensure!(len == expect(interp), "{len} {what} where {interp:?} needs {}", expect(interp));
-    Ok(())
+impl CurveData {
+    /// Checks that widths and colours have the length their interpolation needs
+    /// (`varying_total` values for `varying`, which depends on the curve type), and
+    /// returns the colour when it is constant.
+    fn check_primvars(&self, varying_total: usize) -> Res<Option<Vec3>> {
+        let expect = |i: Interpolation| match i {
+            Interpolation::Constant => 1,
+            Interpolation::Uniform => self.counts.len(),
+            Interpolation::Varying => varying_total,
+            Interpolation::Vertex => self.points.len(),
+        };
+        let check = |what: &str, len: usize, interp: Interpolation| -> Res<()> {
+            anyhow::ensure!(len == expect(interp), "{len} {what} where {interp:?} needs {}", expect(interp));
+            Ok(())
+        };
+        if let Some((w, i)) = &self.widths {
+            check("widths", w.len(), *i)?;
+        }
+        if let Some((c, i)) = &self.colors {
+            check("colours", c.len(), *i)?;
+        }
+        Ok(match &self.colors {
+            Some((c, Interpolation::Constant)) => Some(c[0]),
+            _ => None,
+        })
+    }
 }
 
 /// A `BasisCurves` prim: linear or cubic (bezier, bspline, catmullRom) with its wrap.
@@ -217,22 +240,7 @@ pub fn read_basis_curves(
     let shape = CurveShape { basis, periodic: wrap == "periodic", pinned: wrap == "pinned" };
     let d = curve_data(prim, time, notes)?;
     let varying_total: usize = d.counts.iter().map(|&n| shape.ends(n)).sum();
-    let expect = |i: Interpolation| match i {
-        Interpolation::Constant => 1,
-        Interpolation::Uniform => d.counts.len(),
-        Interpolation::Varying => varying_total,
-        Interpolation::Vertex => d.points.len(),
-    };
-    if let Some((w, i)) = &d.widths {
-        check_len("widths", w.len(), *i, expect)?;
-    }
-    if let Some((c, i)) = &d.colors {
-        check_len("colours", c.len(), *i, expect)?;
-    }
-    let constant_color = match &d.colors {
-        Some((c, Interpolation::Constant)) => Some(c[0]),
-        _ => None,
-    };
+    let constant_color = d.check_primvars(varying_total)?;
     let mut set = StrandSet::new();
     let mut point_colors = Vec::new();
     let (mut offset, mut varying, mut skipped) = (0usize, 0usize, 0usize);
@@ -339,22 +347,7 @@ pub fn read_nurbs_curves(
         anyhow::ensure!(w.len() == d.points.len(), "{} pointWeights for {} points", w.len(), d.points.len());
     }
     let varying_total: usize = d.counts.iter().zip(&orders).map(|(&n, &o)| (n + 2).saturating_sub(o as usize)).sum();
-    let expect = |i: Interpolation| match i {
-        Interpolation::Constant => 1,
-        Interpolation::Uniform => d.counts.len(),
-        Interpolation::Varying => varying_total,
-        Interpolation::Vertex => d.points.len(),
-    };
-    if let Some((w, i)) = &d.widths {
-        check_len("widths", w.len(), *i, expect)?;
-    }
-    if let Some((c, i)) = &d.colors {
-        check_len("colours", c.len(), *i, expect)?;
-    }
-    let constant_color = match &d.colors {
-        Some((c, Interpolation::Constant)) => Some(c[0]),
-        _ => None,
-    };
+    let constant_color = d.check_primvars(varying_total)?;
     let mut set = StrandSet::new();
     let mut point_colors = Vec::new();
     let (mut offset, mut knot_at, mut varying) = (0usize, 0usize, 0usize);
