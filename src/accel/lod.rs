@@ -453,7 +453,7 @@ impl StrandLod {
     /// The BVH items of `strands` (the set this was built for): every segment, its id
     /// carrying its group, bounded at the radius its group's level gives it (and, for the
     /// first segment of a pair that can be simplified, around its pair's chord too), tagged
-    /// with the level of that radius ([`LodView::leaf`]).
+    /// with the level of that radius (`LodView::leaf`).
     pub fn items(&self, strands: &StrandSet) -> Vec<BuildItem> {
         let mut items = Vec::with_capacity(strands.segment_count());
         let eye = self.camera_eye();
@@ -547,7 +547,7 @@ impl StrandLod {
     }
 
     /// The jitter in [0, 1) of the segment from point `first` in [`StrandLod::level_at`]:
-    /// one of [`JITTER_STEPS`] values, drawn by a hash of the point.
+    /// one of `JITTER_STEPS` values, drawn by a hash of the point.
     pub fn segment_jitter(&self, first: u32) -> f32 {
         step_jitter(jitter_step(first))
     }

@@ -13,7 +13,7 @@ use crate::math::rng::PixelSampler;
 use crate::math::{Color, Ray};
 
 /// Transmittance below which the layers of semi-transparent hair behind are walked
-/// stochastically instead of all shaded and blended ([`trace`]). A half: behind a
+/// stochastically instead of all shaded and blended (`trace`). A half: behind a
 /// layer of 50 % (or denser) hair the rest is walked, so a camera ray shades at most two
 /// layers. With the stochastic shadow transmittance of [`crate::accel::EXACT_SHADOW_TRANSMITTANCE`]
 /// and one shadow ray per light shared by the layers (`SharedShadows`), 50 %-tip fur

@@ -74,7 +74,7 @@ impl PixelShadows {
     }
 
     /// Traces the kept rays, light by light in the order of the samples, [`PACKET`] at a
-    /// time (fewer than [`MIN_PACKET`] one by one), adding the light of each unblocked one
+    /// time (fewer than `MIN_PACKET` one by one), adding the light of each unblocked one
     /// to `colors[sample]`; then forgets them.
     pub fn trace(&mut self, tracer: &mut Tracer, colors: &mut [Color]) {
         let accel = &tracer.world.accel;

@@ -28,7 +28,7 @@ pub enum LayerKind {
 /// Checks a layer's bytes and returns them as the crate should read them: text layers
 /// with their numbers rewritten by [`normalize_numbers`] (line numbers unchanged), binary
 /// crate files and packages as they are (a package's text layers checked by
-/// [`check_package`]).
+/// `check_package`).
 pub fn prepare_layer(bytes: Vec<u8>) -> Result<(LayerKind, Vec<u8>), String> {
     if bytes.starts_with(USDC_MAGIC) {
         return Ok((LayerKind::Crate, bytes));
@@ -204,7 +204,7 @@ const TYPE_ALIASES: [(&str, &str); 27] = [
     ("Matrix4d", "matrix4d"),
 ];
 
-/// Rewrites [`TYPE_ALIASES`] where they stand as an attribute's type: a word (outside
+/// Rewrites `TYPE_ALIASES` where they stand as an attribute's type: a word (outside
 /// strings, comments and paths) followed by an optional `[]`, spaces and the attribute's
 /// name. Line numbers stay.
 pub fn legacy_type_names(text: &str) -> String {
