@@ -278,6 +278,16 @@ impl Light {
         }
     }
 
+    /// Radiance the tube and fur models' ambient term takes from this light: the constant
+    /// environment's, or an environment map's mean over the sphere; zero for other lights.
+    pub fn ambient(&self) -> Color {
+        match *self {
+            Light::Environment { radiance } => radiance,
+            Light::EnvironmentMap(ref map) => map.mean_radiance(),
+            _ => Color::ZERO,
+        }
+    }
+
     /// Radiance an unblocked ray along `dir` sees of this light when it is an environment
     /// (constant or mapped); zero for other lights.
     pub fn sky(&self, dir: Vec3) -> Color {

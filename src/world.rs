@@ -22,8 +22,12 @@ pub struct World {
     pub materials: Vec<Material>,
     /// Objects and their BVHs.
     pub accel: Accel,
-    /// Sum of the environment lights' radiance (what unblocked rays see).
+    /// Sum of the constant environment lights' radiance (what unblocked rays see, besides
+    /// the environment maps).
     pub background: Color,
+    /// The light the tube and fur models' ambient term stands for: `background` plus every
+    /// environment map's mean radiance over the sphere.
+    pub ambient: Color,
     /// What was skipped while preparing (strands or triangles with unusable numbers).
     pub warnings: Vec<String>,
 }

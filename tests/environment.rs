@@ -225,3 +225,42 @@ fn scene_files_name_the_unusable_map() {
     let e = tress::io::scene_file::parse(&both, &scene_path, None).map(|d| d.0).unwrap_err().to_string();
     assert!(e.contains("exactly one of `radiance` and `file`"), "{e}");
 }
+
+/// The tube model's ambient term stands for the environment map too: a tube strand with
+/// only an ambient colour, under a map bright above the horizon and black below (mean
+/// radiance over the sphere 1), shows the ambient colour times 1, with every integrator
+/// that shades tubes by their ambient term.
+#[test]
+fn the_tube_ambient_term_takes_an_environment_maps_mean_radiance() {
+    let (w, h) = (32u32, 16u32);
+    let rgb: Vec<f32> = (0..w * h * 3).map(|i| if i / 3 / w < h / 2 { 2.0 } else { 0.0 }).collect();
+    let map = EnvironmentMap::from_pixels(w, h, &rgb, 0.0, 1.0).unwrap();
+    assert!((map.mean_radiance() - Color::ONE).abs().max_element() < 1e-5, "{}", map.mean_radiance());
+    let mut strands = StrandSet::new();
+    strands.push_strand([(Vec3::new(0.0, -1.0, 0.0), 0.4), (Vec3::new(0.0, 1.0, 0.0), 0.4)]);
+    let ambient = Color::new(0.3, 0.2, 0.1);
+    let tube = tress::shading::tube::Tube { ambient, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
+    for integrator in [Integrator::Direct, Integrator::FinalGather] {
+        let desc = Description {
+            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+            settings: RenderSettings { width: 16, height: 16, spp: 4, integrator, ..Default::default() },
+            lights: vec![Light::EnvironmentMap(map.clone())],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(strands.clone()),
+                material: Material::Tube(tube.clone()),
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: false,
+                lod: None,
+            }],
+            ..Default::default()
+        };
+        let film = render(&desc);
+        let on_strand: Vec<Vec3> =
+            film.pixels.iter().filter(|p| p.strand_id >= 0.0 && p.coverage == 1.0).map(|p| p.color).collect();
+        assert!(!on_strand.is_empty(), "{integrator:?}: the strand is seen");
+        for c in on_strand {
+            assert!((c - ambient).abs().max_element() < 1e-4, "{integrator:?}: {c} where {ambient} is right");
+        }
+    }
+}

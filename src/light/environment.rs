@@ -36,6 +36,8 @@ struct MapImage {
     pixels: Vec<Color>,
     /// Over (u, v) in the unit square, u along a row, v down the rows.
     distribution: Distribution2D,
+    /// Mean radiance over the sphere of directions (each pixel weighted by its solid angle).
+    mean: Color,
 }
 
 impl std::fmt::Debug for EnvironmentMap {
@@ -102,7 +104,8 @@ impl EnvironmentMap {
         let (w, h) = (width as usize, height as usize);
         let pixels: Vec<Color> = rgb.chunks_exact(3).map(|c| Color::new(c[0], c[1], c[2])).collect();
         let distribution = Distribution2D::new(&sampling_weights(&pixels, w, h), w, h);
-        let image = Arc::new(MapImage { width: w, height: h, pixels, distribution });
+        let mean = mean_radiance(&pixels, w, h);
+        let image = Arc::new(MapImage { width: w, height: h, pixels, distribution, mean });
         Ok(EnvironmentMap { image, to_map: Mat3::from_rotation_y(-rotation.to_radians()), scale: intensity })
     }
 
@@ -114,6 +117,12 @@ impl EnvironmentMap {
     /// Width and height in pixels.
     pub fn size(&self) -> (u32, u32) {
         (self.image.width as u32, self.image.height as u32)
+    }
+
+    /// Mean radiance over the sphere of directions: the constant environment that sends the
+    /// same total light. The tube and fur models' ambient term stands for it (thesis eq. 2.3).
+    pub fn mean_radiance(&self) -> Color {
+        self.image.mean * self.scale
     }
 
     /// Radiance arriving from the unit direction `dir` (pointing away from the scene).
@@ -187,6 +196,18 @@ fn sampling_weights(pixels: &[Color], w: usize, h: usize) -> Vec<f32> {
         }
     }
     weights
+}
+
+/// The mean of the pixels over the sphere: a pixel of row y spans the solid angle
+/// (2 pi / w) (cos theta_y - cos theta_(y+1)), and the sphere 4 pi.
+fn mean_radiance(pixels: &[Color], w: usize, h: usize) -> Color {
+    let mut sum = glam::DVec3::ZERO;
+    for (y, row) in pixels.chunks_exact(w).enumerate() {
+        let (t0, t1) = (std::f64::consts::PI * y as f64 / h as f64, std::f64::consts::PI * (y + 1) as f64 / h as f64);
+        let row_sum: glam::DVec3 = row.iter().map(|c| c.as_dvec3()).sum();
+        sum += row_sum * (t0.cos() - t1.cos());
+    }
+    (sum * (2.0 * std::f64::consts::PI / w as f64) / (4.0 * std::f64::consts::PI)).as_vec3()
 }
 
 /// (u, v) in the unit square of a direction in the map's frame.
@@ -332,6 +353,13 @@ mod tests {
         }
         let sampled = sampled / (n * n) as f32;
         assert!((sampled - grid).abs().max_element() < 0.01 * grid.max_element(), "{sampled} vs {grid}");
+        // The mean radiance is that integral over 4 pi (pixels against their bilinear
+        // interpolant: equal up to the smoothing of the bright spot's edge).
+        let mean = map.mean_radiance();
+        let expected = grid / (4.0 * PI);
+        assert!((mean - expected).abs().max_element() < 0.01 * expected.max_element(), "{mean} vs {expected}");
+        let twice = EnvironmentMap { scale: 2.0 * map.scale, ..map.clone() };
+        assert!((twice.mean_radiance() - 2.0 * mean).abs().max_element() < 1e-6);
     }
 
     /// A map turned by an angle shows along the turned direction what the unturned map

@@ -213,6 +213,7 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = desc.lights.iter().map(Light::background).sum();
+    let ambient = desc.lights.iter().map(Light::ambient).sum();
     let world = World {
         camera,
         settings: desc.settings.clone(),
@@ -220,6 +221,7 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
         materials,
         accel,
         background,
+        ambient,
         warnings,
     };
     Ok((world, PrepareTimes { load, build, build_cpu }))
@@ -322,6 +324,7 @@ seed = 3
             materials: geometry.materials,
             accel: Accel::build(geometry.shapes),
             background: world.background,
+            ambient: world.ambient,
             warnings: Vec::new(),
         };
         let (moved, kept) = (strand_sets(&world), strand_sets(&file));

@@ -253,7 +253,7 @@ fn shade(
     let (sp, material) = (&at.sp, at.material);
     let first = at.first_hit();
 
-    let mut color = material.ambient(sp, world.background);
+    let mut color = material.ambient(sp, world.ambient);
     let tube_hair = material.has_ambient_term(sp);
     // Shadow rays through semi-transparent hair are estimated: unbiased, and they stop
     // early in dense fur (`Accel::transmittance_estimate`). The seed is a hash, not a
