@@ -22,11 +22,14 @@ pub struct Camera {
 /// Why a camera cannot be built.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum CameraError {
+    /// The eye, the target or the up vector has a NaN or an infinite coordinate.
+    #[error("the camera position is not finite (eye {0}, target {1}, up {2})")]
+    NotFinite(Vec3, Vec3, Vec3),
     /// Eye and target coincide.
-    #[error("camera eye and target are the same point")]
+    #[error("eye and target are the same point")]
     NoDirection,
     /// Up is parallel to the view direction.
-    #[error("camera up vector is parallel to the view direction")]
+    #[error("the up vector is parallel to the view direction")]
     UpParallel,
     /// Field of view out of range.
     #[error("vertical field of view {0} is not between 0 and 180 degrees")]
@@ -48,6 +51,9 @@ impl Camera {
     ) -> Result<Camera, CameraError> {
         // Divided by its largest component first, so a camera 1e30 away from its target
         // does not overflow the squared length.
+        if !(eye.is_finite() && target.is_finite() && up.is_finite()) {
+            return Err(CameraError::NotFinite(eye, target, up));
+        }
         let view = target - eye;
         let forward = (view / view.abs().max_element()).try_normalize().ok_or(CameraError::NoDirection)?;
         let right = forward.cross(up).try_normalize().ok_or(CameraError::UpParallel)?;

@@ -16,6 +16,7 @@
 //! | [`render`] | the integrators, reading only the world |
 //! | [`film`] | pixels, reconstruction filters, image files |
 //! | [`error`] | why a file cannot be read or a description prepared |
+//! | [`memory`] | the memory a render may take; large buffers allocated without aborting |
 //! | [`fur`] | Maya Fur grown on meshes |
 //! | [`hair_system`] | Maya hair systems: guides expanded into clumps |
 //! | [`accel`], [`geometry`], [`shading`], [`light`], [`camera`], [`math`] | the renderer's parts |
@@ -37,6 +38,7 @@ pub mod input_file;
 pub mod io;
 pub mod light;
 pub mod math;
+pub mod memory;
 pub mod partial;
 pub mod prepare;
 pub mod render;

@@ -102,7 +102,7 @@ fn an_unusable_texture_is_an_error_naming_it() {
         .map(|d| d.0)
         .unwrap_err()
         .to_string();
-    assert!(e.contains("mesh 1") && e.contains("skin.png: could not read the file"), "{e}");
+    assert!(e.contains("mesh 1") && e.contains("skin.png: could not open the file"), "{e}");
     std::fs::write(dir.path().join("skin.png"), b"\x89PNG\r\n\x1a\n broken").unwrap();
     let e = tress::io::scene_file::parse(&quad_scene("skin.png", 2.0, 8, 1), &path, None)
         .map(|d| d.0)

@@ -208,6 +208,7 @@ fn render(
     if !(preview_interval.is_finite() && preview_interval >= 0.0) {
         return Err(PyValueError::new_err("preview_interval must be a number of seconds >= 0"));
     }
+    tress::prepare::check_memory(&desc, None).map_err(error)?;
     let pool = pool(desc.settings.threads)?;
     let (world, _) = py.detach(|| pool.install(|| tress::prepare::prepare_owned(desc))).map_err(error)?;
     let full = Region::full(world.settings.width, world.settings.height);
@@ -301,7 +302,7 @@ fn render(
 #[pyfunction]
 fn info<'py>(py: Python<'py>, scene: &PyDescription) -> PyResult<Bound<'py, PyDict>> {
     let desc = scene.desc.clone();
-    let estimate = tress::prepare::estimate_memory(&desc).map_err(error)?;
+    let estimate = tress::prepare::check_memory(&desc, None).map_err(error)?;
     let pool = pool(desc.settings.threads)?;
     let (world, _) = py.detach(|| pool.install(|| tress::prepare::prepare_owned(desc))).map_err(error)?;
     let (mut meshes, mut triangles, mut sets, mut strands, mut segments) = (0usize, 0usize, 0usize, 0usize, 0usize);
@@ -337,6 +338,7 @@ fn info<'py>(py: Python<'py>, scene: &PyDescription) -> PyResult<Bound<'py, PyDi
     e.set_item("geometry", estimate.geometry)?;
     e.set_item("bvh", estimate.bvh)?;
     e.set_item("image", estimate.image)?;
+    e.set_item("maps", estimate.maps)?;
     e.set_item("total", estimate.total())?;
     d.set_item("estimate", e)?;
     d.set_item("warnings", world.warnings.clone())?;

@@ -445,10 +445,11 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
     let clumps = (!g.attrs.scalar_is_zero(Scalar::Clumping)).then(|| clumps(&g, total_weight.max(f64::MIN_POSITIVE)));
 
     let n = roots.len();
-    let mut points = vec![[0.0f32; 4]; n * np];
-    let mut colors = vec![[0.0f32; 3]; n * np];
-    let mut opacity = vec![0.0f32; n * np];
-    let mut extra = vec![StrandExtra::default(); n];
+    let oom = |e: crate::memory::OutOfMemory| FurError::Invalid(e.to_string());
+    let mut points = crate::memory::try_filled([0.0f32; 4], n * np, "the fur's points").map_err(oom)?;
+    let mut colors = crate::memory::try_filled([0.0f32; 3], n * np, "the fur's colours").map_err(oom)?;
+    let mut opacity = crate::memory::try_filled(0.0f32, n * np, "the fur's opacities").map_err(oom)?;
+    let mut extra = crate::memory::try_filled(StrandExtra::default(), n, "the fur's hairs").map_err(oom)?;
     points
         .par_chunks_mut(np)
         .zip(colors.par_chunks_mut(np))

@@ -99,6 +99,10 @@ pub fn expand(system: &HairSystem, guides: &Guides, colors: HairColors, seed: u3
     let clumps: Vec<StrandSet> =
         (0..count as u32).into_par_iter().map(|g| expand_guide(system, guides, g, colors, seed, &noise)).collect();
     let mut out = StrandSet::new();
+    let oom = |e: crate::memory::OutOfMemory| e.to_string();
+    crate::memory::try_reserve(&mut out.points, points as usize, "the hair system's points").map_err(oom)?;
+    crate::memory::try_reserve(&mut out.offsets, count * system.hairs_per_clump as usize, "the hair system's hairs")
+        .map_err(oom)?;
     for c in &clumps {
         out.append(c);
     }

@@ -297,6 +297,8 @@ struct Parser {
     /// size cap of one imported scene.
     includes: usize,
     included_bytes: u64,
+    /// Names of the `ObjectBegin`s not yet ended, the outermost first.
+    open_objects: Vec<String>,
 }
 
 impl Parser {
@@ -317,6 +319,7 @@ impl Parser {
             chain: Vec::new(),
             includes: 0,
             included_bytes: 0,
+            open_objects: Vec::new(),
         }
     }
 
@@ -506,12 +509,29 @@ impl Parser {
                 let (kind, p) = named(lex, t)?;
                 self.shape(&kind, &p)?;
             }
-            "ObjectBegin" | "ObjectInstance" | "Texture" | "AreaLightSource" | "MakeNamedMedium" | "PixelFilter"
-            | "Accelerator" | "ColorSpace" | "Option" | "Attribute" | "MediumInterface" => {
+            // Instancing is not supported (an object's shapes are read where they stand),
+            // but an object that instances itself, directly or through one it is inside,
+            // is an error in any reader: named, not skipped.
+            "ObjectBegin" | "ObjectInstance" => {
+                let name = string_arg(lex, t)?;
+                if t.text == "ObjectBegin" {
+                    self.open_objects.push(name);
+                } else if let Some(i) = self.open_objects.iter().position(|o| *o == name) {
+                    let chain: Vec<String> = self.open_objects[i..].iter().map(|o| format!("\"{o}\"")).collect();
+                    return Err((line, format!("object cycle: {} instances \"{name}\"", chain.join(" contains "))));
+                }
+                self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
+            }
+            "ObjectEnd" => {
+                self.open_objects.pop();
+                self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
+            }
+            "Texture" | "AreaLightSource" | "MakeNamedMedium" | "PixelFilter" | "Accelerator" | "ColorSpace"
+            | "Option" | "Attribute" | "MediumInterface" => {
                 let _ = rest_params(lex)?;
                 self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
             }
-            "ObjectEnd" | "TransformTimes" | "ActiveTransform" => {
+            "TransformTimes" | "ActiveTransform" => {
                 let _ = rest_params(lex)?;
                 self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
             }
@@ -636,6 +656,8 @@ impl Parser {
                         &mut self.strands.last_mut().expect("just pushed").1
                     }
                 };
+                crate::memory::try_reserve(&mut set.points, strand.len(), "the curves' points")
+                    .map_err(|e| (p.line, e.to_string()))?;
                 set.push_strand(strand);
             }
             "trianglemesh" => {
@@ -857,7 +879,9 @@ fn curve(p: &Params, ctm: &DMat4) -> Res<Vec<(Vec3, f32)>> {
     };
     let scale = ctm.determinant().abs().cbrt();
     let total = (segments.len() * pieces) as f64;
-    let mut out = Vec::with_capacity(segments.len() * pieces + 1);
+    let mut out: Vec<(Vec3, f32)> = Vec::new();
+    crate::memory::try_reserve(&mut out, segments.len() * pieces + 1, "the curve's pieces")
+        .map_err(|e| (p.line, e.to_string()))?;
     for (s, (b, c)) in segments.iter().enumerate() {
         let c = c.map(|q| ctm.transform_point3(q).as_vec3());
         for k in usize::from(s > 0)..=pieces {

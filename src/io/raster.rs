@@ -15,11 +15,8 @@ use std::path::Path;
 /// Most pixels an image may have (a 16k x 8k environment map).
 pub const MAX_PIXELS: u64 = crate::light::MAX_ENVIRONMENT_PIXELS;
 
-/// Largest image file read, in bytes.
-const MAX_FILE_BYTES: u64 = 2 << 30;
-
 /// How the values of 8-bit images are encoded (high-dynamic-range formats are linear).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Encoding {
     /// sRGB-encoded colour, decoded to linear values.
     Srgb,
@@ -49,7 +46,7 @@ pub fn read_environment(path: &Path, rotation: f32, intensity: f32) -> Result<En
 /// Reads an image as linear RGB, choosing the decoder by the file's extension.
 pub fn read_rgb(path: &Path, encoding: Encoding) -> Result<RgbImage, LoadError> {
     let extension = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-    let bytes = read_bytes(path)?;
+    let bytes = crate::input_file::read(path, crate::input_file::Kind::Map)?;
     match extension.as_deref() {
         Some("exr") => decode_exr(&bytes, path),
         Some("pfm") => decode_pfm(&bytes, path),
@@ -58,20 +55,6 @@ pub fn read_rgb(path: &Path, encoding: Encoding) -> Result<RgbImage, LoadError> 
         Some("jpg" | "jpeg") => decode_with_image(&bytes, path, image::ImageFormat::Jpeg, encoding),
         _ => Err(LoadError::format(path, "unknown image format: expected .exr, .hdr, .pfm, .png or .jpg")),
     }
-}
-
-fn read_bytes(path: &Path) -> Result<Vec<u8>, LoadError> {
-    let meta = std::fs::metadata(path).map_err(|e| LoadError::io(path, "read the file", e))?;
-    if !meta.is_file() {
-        return Err(LoadError::invalid(path, "not a regular file"));
-    }
-    if meta.len() > MAX_FILE_BYTES {
-        return Err(LoadError::invalid(
-            path,
-            format!("the file has {} bytes; images of at most {MAX_FILE_BYTES} bytes are read", meta.len()),
-        ));
-    }
-    std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))
 }
 
 /// Checks a header's size against [`MAX_PIXELS`] and what `file_bytes` can hold at
@@ -362,7 +345,7 @@ mod tests {
         assert!(e.contains("grey.exr") && e.contains("needs R, G and B"), "{e}");
         let missing = dir.path().join("missing.exr");
         let e = read_environment(&missing, 0.0, 1.0).unwrap_err().to_string();
-        assert!(e.contains("missing.exr: could not read the file"), "{e}");
+        assert!(e.contains("missing.exr: could not open the file"), "{e}");
         let e = read_environment(dir.path(), 0.0, 1.0).unwrap_err().to_string();
         assert!(e.contains("not a regular file"), "{e}");
     }

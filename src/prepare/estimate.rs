@@ -3,10 +3,10 @@
 //! slot's limit) is refused at once rather than after minutes of loading, or by the
 //! kernel's out-of-memory killer.
 
-use crate::error::LoadError;
+use crate::error::{LoadError, PrepareError};
 use crate::film::Pixel;
 use crate::io;
-use crate::scene::{Description, HairSource, MeshSource};
+use crate::scene::{Description, GuideSource, HairSource, MeshSource};
 use std::path::Path;
 
 /// Bytes of BVH per primitive: 64-byte nodes of four children whose leaves hold up to four
@@ -29,17 +29,19 @@ pub struct MemoryEstimate {
     pub bvh: u64,
     /// The image being rendered and written.
     pub image: u64,
+    /// Fur map images, decoded.
+    pub maps: u64,
 }
 
 impl MemoryEstimate {
     /// Everything together.
     pub fn total(&self) -> u64 {
-        self.geometry + self.bvh + self.image
+        self.geometry.saturating_add(self.bvh).saturating_add(self.image).saturating_add(self.maps)
     }
 
     fn add(&mut self, geometry: u64, primitives: u64) {
-        self.geometry += geometry;
-        self.bvh += primitives * (BVH_BYTES + BUILD_BYTES);
+        self.geometry = self.geometry.saturating_add(geometry);
+        self.bvh = self.bvh.saturating_add(primitives.saturating_mul(BVH_BYTES + BUILD_BYTES));
     }
 }
 
@@ -71,6 +73,33 @@ pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> 
         // Each strand's first point starts no segment.
         e.add(points * per_point + strands * 4, points.saturating_sub(strands));
     }
+    for h in &desc.hair_systems {
+        // Guides: `n` points each become `(n - 1) * (sub_segments + 1) + 2` points of every
+        // hair of their clump (`hair_system::expand`).
+        let (guides, guide_points) = match &h.guides {
+            GuideSource::File(path) => {
+                let c = io::cem_hair::read_hair_counts(path)?;
+                (u64::from(c.strands), u64::from(c.points))
+            }
+            GuideSource::Inline(g) => (g.curves.strand_count() as u64, g.curves.points.len() as u64),
+            GuideSource::Follicles { params, .. } => {
+                let count = match params.placement {
+                    crate::hair_system::Placement::Grid { u, v } => u64::from(u) * u64::from(v),
+                    crate::hair_system::Placement::Random { count } => u64::from(count),
+                };
+                (count, count.saturating_mul(u64::from(params.points_per_hair)))
+            }
+        };
+        let steps = u64::from(h.system.sub_segments) + 1;
+        let per_clump = u64::from(h.system.hairs_per_clump);
+        let strands = guides.saturating_mul(per_clump);
+        let points = (guide_points.saturating_sub(guides).saturating_mul(steps).saturating_add(2 * guides))
+            .saturating_mul(per_clump);
+        // A point and a colour; a root UV and clump per hair. The clumps are expanded apart
+        // and then joined, so both copies are held at the peak.
+        let bytes = points.saturating_mul(16 + 12).saturating_add(strands.saturating_mul(4 + 8 + 4));
+        e.add(bytes.saturating_mul(2), points.saturating_sub(strands));
+    }
     for f in &desc.fur {
         // Density is the expected root count over the whole mesh (baldness only removes
         // roots), each hair `segments + 1` points with a colour and an opacity, and a root
@@ -79,9 +108,40 @@ pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> 
         let strands = u64::from(d.density.min(crate::fur::description::MAX_DENSITY));
         let points = strands * (u64::from(d.segments) + 1);
         e.add(points * (16 + 12 + 4) + strands * (4 + 8 + 4), strands * u64::from(d.segments));
+        for path in crate::fur::image_map_paths(d) {
+            let (w, h) = super::maps::map_dimensions(path)?;
+            e.maps = e.maps.saturating_add(u64::from(w) * u64::from(h) * super::maps::DECODE_BYTES_PER_PIXEL);
+        }
     }
     let s = &desc.settings;
     e.image = u64::from(s.width) * u64::from(s.height) * std::mem::size_of::<Pixel>() as u64 * IMAGE_COPIES;
+    Ok(e)
+}
+
+/// Refuses a render of `desc` whose estimated memory is above `limit` bytes, or, without
+/// a limit, above the memory the machine has available ([`crate::memory::available`]);
+/// the error gives the estimate by part.
+pub fn check_memory(desc: &Description, limit: Option<u64>) -> Result<MemoryEstimate, PrepareError> {
+    let e = estimate_memory(desc)?;
+    let (limit, what) = match limit {
+        Some(l) => (l, "the memory limit of"),
+        None => match crate::memory::available() {
+            Some(a) => (a, "the memory available,"),
+            None => return Ok(e),
+        },
+    };
+    if e.total() > limit {
+        let b = crate::stats::human_bytes;
+        return Err(PrepareError::Invalid(format!(
+            "the scene needs an estimated {} (geometry {}, BVH {}, image {}, maps {}), more than {what} {}",
+            b(e.total()),
+            b(e.geometry),
+            b(e.bvh),
+            b(e.image),
+            b(e.maps),
+            b(limit)
+        )));
+    }
     Ok(e)
 }
 
@@ -147,6 +207,23 @@ mod tests {
         assert!(e.geometry + e.bvh >= held, "estimate {e:?} below the {held} bytes held");
         assert!(e.geometry + e.bvh <= 6 * held, "estimate {e:?} far above the {held} bytes held");
         assert_eq!(e.image, 64 * 48 * std::mem::size_of::<Pixel>() as u64 * IMAGE_COPIES);
+    }
+
+    /// A hair system's render hairs are counted from its follicles and clumps.
+    #[test]
+    fn hair_systems_are_estimated() {
+        let scene = "[camera]\neye = [0, 0, 4]\ntarget = [0, 0, 0]\n[render]\nresolution = [8, 8]\n\
+            [[mesh]]\nshape = { type = \"sphere\", radius = 1.0 }\nmaterial = { type = \"diffuse\", color = [1, 1, 1] }\n\
+            [[hair_system]]\nfollicles = { mesh = 1, placement = \"grid\", u = 30, v = 20, points_per_hair = 6, length = 0.3 }\n\
+            hairs_per_clump = 8\nsub_segments = 1\n";
+        let desc = io::scene_file::parse(scene, Path::new("h.toml"), None).unwrap().0;
+        let e = estimate_memory(&desc).unwrap();
+        let (world, _) = super::super::prepare(&desc).unwrap();
+        let m = Memory::of(&world.accel);
+        assert_eq!(m.strands, 30 * 20 * 8);
+        let held = m.strand_points + m.strand_bvh;
+        assert!(e.geometry + e.bvh >= held, "estimate {e:?} below the {held} bytes held");
+        assert!(e.geometry + e.bvh <= 8 * held, "estimate {e:?} far above the {held} bytes held");
     }
 
     #[test]

@@ -7,7 +7,7 @@
 mod estimate;
 mod maps;
 
-pub use estimate::{estimate_memory, parse_memory_size, MemoryEstimate};
+pub use estimate::{check_memory, estimate_memory, parse_memory_size, MemoryEstimate};
 pub use maps::{read_map_images, MAX_MAP_SIDE};
 
 use crate::accel::lod::LodParams;
@@ -73,7 +73,19 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
     }
     for (i, h) in desc.hair.iter().enumerate() {
         let mut strands = match &h.source {
-            HairSource::File(path) => io::cem_hair::read_hair(path)?,
+            HairSource::File(path) => {
+                let strands = io::cem_hair::read_hair(path)?;
+                // A warning, not an error: a frame of a hair cache can be empty (hair that
+                // grows in later), and the rest of the scene still renders.
+                if strands.strand_count() == 0 {
+                    warnings.push(format!(
+                        "{}: the file holds no strands; hair {} renders nothing",
+                        path.display(),
+                        i + 1
+                    ));
+                }
+                strands
+            }
             HairSource::Inline(s) => taken.get_mut(i).and_then(Option::take).unwrap_or_else(|| s.clone()),
         };
         strands.transform(&h.transform);

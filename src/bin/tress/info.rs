@@ -1,6 +1,6 @@
 //! `tress info`: the counts and memory of a scene, by part, and its levels of detail.
 
-use crate::options::{load, pool, Overrides};
+use crate::options::{in_scene, load, pool, Overrides};
 use anyhow::Result;
 use std::path::PathBuf;
 use tress::accel::Shape;
@@ -23,7 +23,10 @@ pub struct InfoArgs {
 /// Prepares the scene and prints what it holds.
 pub fn run(args: &InfoArgs) -> Result<()> {
     let desc = load(args.scene.as_deref(), &args.overrides, args.frame, false)?;
-    let (world, times) = pool(desc.settings.threads)?.install(|| prepare_owned(desc))?;
+    let scene = args.scene.as_deref();
+    tress::prepare::check_memory(&desc, None).map_err(|e| in_scene(scene, e))?;
+    let (world, times) =
+        pool(desc.settings.threads)?.install(|| prepare_owned(desc)).map_err(|e| in_scene(scene, e))?;
     let m = Memory::of(&world.accel);
     println!("meshes        {} ({} triangles)", m.meshes, m.triangles);
     println!("strand sets   {} ({} strands, {} segments)", m.strand_sets, m.strands, m.segments);

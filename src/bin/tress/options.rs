@@ -94,8 +94,19 @@ pub fn load_with_warnings(
         None => (tress::demo::description(o.demo_strands, 1), Vec::new()),
     };
     apply(&mut desc, o);
-    desc.validate()?;
+    desc.validate().map_err(|e| in_scene(scene, e))?;
     Ok((desc, notes))
+}
+
+/// An error preparing the scene read from `scene`, naming that file when the error is
+/// about what the scene says (settings, camera, fur, hair systems); an error reading
+/// another file already names it.
+pub fn in_scene(scene: Option<&Path>, e: tress::error::PrepareError) -> anyhow::Error {
+    match (scene, e) {
+        (_, tress::error::PrepareError::Load(e)) => e.into(),
+        (Some(path), e) => anyhow::anyhow!("{}: {e}", path.display()),
+        (None, e) => anyhow::anyhow!("the demo scene: {e}"),
+    }
 }
 
 fn apply(desc: &mut Description, o: &Overrides) {

@@ -4,7 +4,7 @@
 
 use crate::frames::{parse_frames, Frames};
 use crate::interrupt::Interrupt;
-use crate::options::{load_with_warnings, pool, Overrides};
+use crate::options::{in_scene, load_with_warnings, pool, Overrides};
 use crate::progress::Progress;
 use anyhow::{bail, Result};
 use std::collections::HashSet;
@@ -66,8 +66,9 @@ struct Job {
     #[arg(long, value_name = "MINUTES", default_value_t = 10.0, requires = "checkpoint",
           value_parser = tress::partial::parse_checkpoint_minutes)]
     checkpoint_every: f64,
-    /// Refuse, before loading anything, a scene whose estimated memory (grown fur
-    /// included) exceeds this (bytes, or with a K, M, G or T suffix: powers of 1024).
+    /// Refuse, before loading anything, a scene whose estimated memory (grown fur and
+    /// hair systems included) exceeds this (bytes, or with a K, M, G or T suffix: powers of
+    /// 1024). [default: the memory the machine has available]
     #[arg(long, value_name = "SIZE", value_parser = tress::prepare::parse_memory_size)]
     memory_limit: Option<u64>,
 }
@@ -200,6 +201,7 @@ fn render_target(
     interrupt: &Interrupt,
     warned: &mut HashSet<String>,
 ) -> Result<Rendered> {
+    interrupt.set_loading(true);
     let (desc, warnings) = load_with_warnings(args.scene.as_deref(), &args.overrides, target.frame)?;
     let mut warn = |w: String| {
         if !args.quiet && warned.insert(w.clone()) {
@@ -207,12 +209,11 @@ fn render_target(
         }
     };
     warnings.into_iter().for_each(&mut warn);
-    if let Some(limit) = args.job.memory_limit {
-        check_memory(&desc, limit)?;
-    }
+    let scene = args.scene.as_deref();
+    tress::prepare::check_memory(&desc, args.job.memory_limit).map_err(|e| in_scene(scene, e))?;
     let pool = pool(desc.settings.threads)?;
     // The description is not needed again: its inline strands move into the world.
-    let (world, times) = pool.install(|| prepare_owned(desc))?;
+    let (world, times) = pool.install(|| prepare_owned(desc)).map_err(|e| in_scene(scene, e))?;
     world.warnings.iter().cloned().for_each(warn);
     let s = &world.settings;
     let region = match args.job.tile {
@@ -232,6 +233,7 @@ fn render_target(
     let checkpointer = target.checkpoint.as_ref().map(|path| {
         Checkpointer::new(path.clone(), Duration::from_secs_f64(args.job.checkpoint_every * 60.0), template.clone())
     });
+    interrupt.set_loading(false);
     if let Some(sig) = interrupt.signal() {
         eprintln!("interrupted by signal {sig} before rendering started; nothing written");
         std::process::exit(128 + sig);
@@ -271,22 +273,6 @@ fn render_target(
     }
     let threads = pool.current_num_threads();
     Ok(Rendered { world, stats, build: (times.load, times.build), threads, region })
-}
-
-/// Refuses a scene whose estimated memory is over `limit`.
-fn check_memory(desc: &tress::scene::Description, limit: u64) -> Result<()> {
-    let e = tress::prepare::estimate_memory(desc)?;
-    if e.total() > limit {
-        bail!(
-            "the scene needs an estimated {} (geometry {}, BVH {}, image {}), more than the memory limit of {}",
-            human_bytes(e.total()),
-            human_bytes(e.geometry),
-            human_bytes(e.bvh),
-            human_bytes(e.image),
-            human_bytes(limit)
-        );
-    }
-    Ok(())
 }
 
 /// The state saved in a checkpoint, if it belongs to this render.

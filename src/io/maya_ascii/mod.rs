@@ -129,13 +129,15 @@ struct Reader<'g> {
     /// World matrices by node, filled lazily; follicle transforms Maya computes are put
     /// here before any curve is read.
     world: HashMap<usize, DAffine3>,
+    /// Whether a node or one of its parents is hidden, by node, filled lazily.
+    hidden: HashMap<usize, bool>,
     /// Mesh index in `out.meshes` and the world-space mesh, by mesh node.
     meshes: HashMap<usize, (usize, TriangleMesh)>,
 }
 
 impl<'g> Reader<'g> {
     fn new(g: &'g Graph) -> Reader<'g> {
-        Reader { g, out: Imported::default(), world: HashMap::new(), meshes: HashMap::new() }
+        Reader { g, out: Imported::default(), world: HashMap::new(), hidden: HashMap::new(), meshes: HashMap::new() }
     }
 
     fn kind(&self, n: usize) -> &str {
@@ -271,7 +273,7 @@ impl<'g> Reader<'g> {
 
     /// The node's world matrix: its local matrix under its parents'.
     fn world(&mut self, n: usize) -> Res<DAffine3> {
-        let mut chain = Vec::new();
+        let (mut chain, mut on_chain) = (Vec::new(), std::collections::HashSet::new());
         let mut cur = Some(n);
         while let Some(c) = cur {
             if let Some(m) = self.world.get(&c) {
@@ -282,8 +284,8 @@ impl<'g> Reader<'g> {
                 }
                 return Ok(m);
             }
-            if chain.len() > self.g.nodes.len() {
-                return Err((self.g.nodes[n].line, format!("{}: its parents form a cycle", self.g.nodes[n].name)));
+            if !on_chain.insert(c) {
+                return Err(self.parent_cycle(&chain, c));
             }
             chain.push(c);
             let inherits = scalar(self.g, c, &["it", "inheritsTransform"], 1.0)? != 0.0;
@@ -297,33 +299,53 @@ impl<'g> Reader<'g> {
         Ok(m)
     }
 
+    /// The error for a chain of parents (`chain`, from a node upwards) that comes back to
+    /// `again`: the cycle named, node by node.
+    fn parent_cycle(&self, chain: &[usize], again: usize) -> (u32, String) {
+        let start = chain.iter().position(|&c| c == again).unwrap_or(0);
+        let cycle = &chain[start..];
+        // A long cycle is named by its first few nodes.
+        let mut names: Vec<&str> = cycle.iter().take(8).map(|&c| self.g.nodes[c].name.as_str()).collect();
+        if cycle.len() > 8 {
+            names.push("...");
+        }
+        names.push(&self.g.nodes[again].name);
+        (self.g.nodes[again].line, format!("parent cycle: {}", names.join(" is a child of ")))
+    }
+
     /// True when the node or a parent is hidden (`.v no`), or the node is an intermediate
     /// object (`.io yes`, e.g. a deformer's original shape).
-    fn hidden(&self, n: usize) -> Res<bool> {
+    fn hidden(&mut self, n: usize) -> Res<bool> {
         if scalar(self.g, n, &["io", "intermediateObject"], 0.0)? != 0.0 {
             return Ok(true);
         }
+        // Up to the first node whose answer is known (memoised like world matrices, so a
+        // deep hierarchy costs its size, not its size times its depth), then down again.
+        let (mut chain, mut on_chain) = (Vec::new(), std::collections::HashSet::new());
         let mut cur = Some(n);
-        let mut steps = 0;
+        let mut above = false;
         while let Some(c) = cur {
-            if scalar(self.g, c, &["v", "visibility"], 1.0)? == 0.0 {
-                return Ok(true);
+            if let Some(&h) = self.hidden.get(&c) {
+                above = h;
+                break;
             }
-            steps += 1;
-            cur = if steps > self.g.nodes.len() { None } else { self.g.parent(c) };
+            if !on_chain.insert(c) {
+                return Err(self.parent_cycle(&chain, c));
+            }
+            chain.push(c);
+            cur = self.g.parent(c);
         }
-        Ok(false)
+        for &c in chain.iter().rev() {
+            above = above || scalar(self.g, c, &["v", "visibility"], 1.0)? == 0.0;
+            self.hidden.insert(c, above);
+        }
+        Ok(above)
     }
 
     /// Sources connected into `n`'s attribute named by one of `attrs` (with or without an
     /// index).
     fn inputs(&self, n: usize, attrs: &[&str]) -> Vec<usize> {
-        self.g
-            .connections
-            .iter()
-            .filter(|c| c.dst == n && attrs.contains(&plug_base(&c.dst_attr)))
-            .map(|c| c.src)
-            .collect()
+        self.g.inputs_of(n).filter(|c| attrs.contains(&plug_base(&c.dst_attr))).map(|c| c.src).collect()
     }
 
     // ----- meshes -----
@@ -403,10 +425,8 @@ impl<'g> Reader<'g> {
     fn mesh_color(&self, n: usize) -> Res<Vec3> {
         let g = self.g;
         let default = Vec3::splat(0.5 * 0.8);
-        let Some(sg) = g.connections.iter().find_map(|c| {
-            (c.src == n
-                && matches!(plug_base(&c.src_attr), "iog" | "instObjGroups")
-                && self.kind(c.dst) == "shadingEngine")
+        let Some(sg) = g.outputs_of(n).find_map(|c| {
+            (matches!(plug_base(&c.src_attr), "iog" | "instObjGroups") && self.kind(c.dst) == "shadingEngine")
                 .then_some(c.dst)
         }) else {
             return Ok(default);
@@ -472,7 +492,8 @@ impl<'g> Reader<'g> {
         let system = hair_attributes(g, n)?;
         system.validate().map_err(|e| (node.line, format!("hair system {}: {e}", node.name)))?;
         let mut follicles: Vec<(usize, usize)> = Vec::new();
-        for c in &g.connections {
+        let mut seen = std::collections::HashSet::new();
+        for c in g.connections_of(n) {
             let (follicle, index) = if c.dst == n && self.kind(c.src) == "follicle" {
                 (c.src, plug_index(&c.dst_attr))
             } else if c.src == n && self.kind(c.dst) == "follicle" {
@@ -480,7 +501,7 @@ impl<'g> Reader<'g> {
             } else {
                 continue;
             };
-            if !follicles.iter().any(|&(_, f)| f == follicle) {
+            if seen.insert(follicle) {
                 follicles.push((index.unwrap_or(usize::MAX), follicle));
             }
         }
@@ -602,7 +623,7 @@ impl<'g> Reader<'g> {
                 }
             }
         };
-        for c in &g.connections {
+        for c in g.connections_of(n) {
             let other = match (c.src == n, c.dst == n) {
                 (true, _) => c.dst,
                 (_, true) => c.src,

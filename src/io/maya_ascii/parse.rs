@@ -235,6 +235,10 @@ pub struct Graph {
     /// Factor from the file's angle unit to radians (`currentUnit -a`).
     pub angle_to_radians: f64,
     by_name: HashMap<String, Vec<usize>>,
+    /// Indices into `connections` by destination node and by source node, in file order,
+    /// so that a node's connections cost their number, not the file's (`inputs_of`).
+    by_dst: Vec<Vec<u32>>,
+    by_src: Vec<Vec<u32>>,
 }
 
 /// Most words one statement may hold (a 50-million-vertex mesh chunk is far beyond what
@@ -275,6 +279,7 @@ pub fn parse(text: &str) -> Result<Graph, (u32, String)> {
             _ => {}
         }
     }
+    g.index_connections();
     Ok(g)
 }
 
@@ -314,6 +319,57 @@ impl Graph {
     /// cannot make this recurse).
     fn find_simple(&self, path: &str) -> Option<usize> {
         self.by_name.get(short_name(path)).and_then(|c| c.last().copied())
+    }
+
+    fn index_connections(&mut self) {
+        self.by_dst = vec![Vec::new(); self.nodes.len()];
+        self.by_src = vec![Vec::new(); self.nodes.len()];
+        for (i, c) in self.connections.iter().enumerate() {
+            self.by_dst[c.dst].push(i as u32);
+            self.by_src[c.src].push(i as u32);
+        }
+    }
+
+    /// The connections into `node`, in file order.
+    pub fn inputs_of(&self, node: usize) -> impl Iterator<Item = &Connection> + '_ {
+        self.by_dst.get(node).into_iter().flatten().map(|&i| &self.connections[i as usize])
+    }
+
+    /// The connections out of `node`, in file order.
+    pub fn outputs_of(&self, node: usize) -> impl Iterator<Item = &Connection> + '_ {
+        self.by_src.get(node).into_iter().flatten().map(|&i| &self.connections[i as usize])
+    }
+
+    /// The connections into and out of `node`, in file order (a connection of the node to
+    /// itself once).
+    pub fn connections_of(&self, node: usize) -> impl Iterator<Item = &Connection> + '_ {
+        let (dst, src) = (
+            self.by_dst.get(node).map_or(&[][..], Vec::as_slice),
+            self.by_src.get(node).map_or(&[][..], Vec::as_slice),
+        );
+        let (mut i, mut j) = (0, 0);
+        std::iter::from_fn(move || {
+            let next = match (dst.get(i), src.get(j)) {
+                (Some(&a), Some(&b)) if a == b => {
+                    (i, j) = (i + 1, j + 1);
+                    a
+                }
+                (Some(&a), Some(&b)) if a < b => {
+                    i += 1;
+                    a
+                }
+                (_, Some(&b)) => {
+                    j += 1;
+                    b
+                }
+                (Some(&a), None) => {
+                    i += 1;
+                    a
+                }
+                (None, None) => return None,
+            };
+            Some(&self.connections[next as usize])
+        })
     }
 
     /// The node's parent, if it has one the file created.

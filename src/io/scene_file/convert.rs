@@ -9,6 +9,7 @@ use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPla
 use crate::geometry::TriangleMesh;
 use crate::hair_system::ramp::RampValue;
 use crate::hair_system::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
+use crate::io::raster::Encoding;
 use crate::light::Light;
 use crate::math::Color;
 use crate::scene::{FurEntry, GuideSource, HairSource, HairSystemEntry};
@@ -83,7 +84,12 @@ pub(super) fn ramp<U: Copy, T: RampValue>(
     Ramp::new(out).map_err(|e| format!("`{name}` {e}"))
 }
 
-pub(super) fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Result<HairSystemEntry, String> {
+pub(super) fn hair_system(
+    h: &HairSystemToml,
+    base: &Path,
+    meshes: usize,
+    textures: &mut Textures,
+) -> Result<HairSystemEntry, String> {
     let mut s = HairSystem::default();
     macro_rules! set {
         ($($field:ident),*) => { $( if let Some(v) = h.$field { s.$field = v; } )* };
@@ -151,7 +157,7 @@ pub(super) fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Res
         _ => return Err("give exactly one of `file` and `follicles`".into()),
     };
     let material = match &h.material {
-        Some(m) => material(m, base)?,
+        Some(m) => material(m, base, textures)?,
         None => Material::Tube(s.tube()),
     };
     let transform = match &h.transform {
@@ -329,15 +335,24 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<Light, String> {
     })
 }
 
-pub(super) fn material(m: &MaterialToml, base: &Path) -> Result<Material, String> {
+/// Textures decoded so far, by file and encoding: a file that several materials name is
+/// decoded once and its pixels shared.
+pub(super) type Textures = std::collections::HashMap<(std::path::PathBuf, Encoding), Texture>;
+
+pub(super) fn material(m: &MaterialToml, base: &Path, textures: &mut Textures) -> Result<Material, String> {
     Ok(match *m {
         MaterialToml::Textured { ref color, tint, ref roughness, specular } => {
             check("tint", &tint, 0.0)?;
-            let texture = |file: &Path, encoding| -> Result<Texture, String> {
+            let mut texture = |file: &Path, encoding| -> Result<Texture, String> {
                 let path = base.join(file);
+                if let Some(t) = textures.get(&(path.clone(), encoding)) {
+                    return Ok(t.clone());
+                }
                 let image = crate::io::raster::read_rgb(&path, encoding).map_err(|e| e.to_string())?;
-                Texture::from_pixels(image.width, image.height, &image.rgb)
-                    .map_err(|m| format!("{}: {m}", path.display()))
+                let t = Texture::from_pixels(image.width, image.height, &image.rgb)
+                    .map_err(|m| format!("{}: {m}", path.display()))?;
+                textures.insert((path, encoding), t.clone());
+                Ok(t)
             };
             let roughness = match roughness {
                 None => None,
@@ -345,14 +360,12 @@ pub(super) fn material(m: &MaterialToml, base: &Path) -> Result<Material, String
                     Some(Roughness::Constant(*r))
                 }
                 Some(RoughnessToml::Constant(_)) => return Err("`roughness` must be in (0, 1]".into()),
-                Some(RoughnessToml::Map(file)) => {
-                    Some(Roughness::Map(texture(file, crate::io::raster::Encoding::Linear)?))
-                }
+                Some(RoughnessToml::Map(file)) => Some(Roughness::Map(texture(file, Encoding::Linear)?)),
             };
             let specular = specular.unwrap_or(if roughness.is_some() { 0.04 } else { 0.0 });
             check("specular", &[specular], 0.0)?;
             Material::Textured(Textured {
-                color: texture(color, crate::io::raster::Encoding::Srgb)?,
+                color: texture(color, Encoding::Srgb)?,
                 tint: tint.into(),
                 roughness,
                 specular: Color::splat(specular),

@@ -89,7 +89,9 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         (frame, _) => frame.unwrap_or(0),
     };
     let (eye, target, vfov) = camera_at(c, frame).map_err(|m| invalid(format!("camera: {m}")))?;
-    finite("camera", &[eye, target, c.up, [vfov, 0.0, 0.0]].concat())?;
+    for (key, v) in [("eye", &eye[..]), ("target", &target[..]), ("up", &c.up[..]), ("vfov", &[vfov][..])] {
+        finite(&format!("camera `{key}`"), v)?;
+    }
     let r = &scene.render;
     let defaults = RenderSettings::default();
     let integrator = match r.integrator.as_deref() {
@@ -134,6 +136,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
     for (i, l) in scene.light.iter().enumerate() {
         lights.push(light(l, base).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
     }
+    let mut textures = convert::Textures::new();
     let mut meshes = Vec::new();
     for (i, m) in scene.mesh.iter().enumerate() {
         let what = |m: String| invalid(format!("mesh {}: {m}", i + 1));
@@ -144,7 +147,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         };
         meshes.push(MeshEntry {
             source,
-            material: material(&m.material, base).map_err(what)?,
+            material: material(&m.material, base, &mut textures).map_err(what)?,
             transform: transform(&m.transform).map_err(what)?,
         });
     }
@@ -153,7 +156,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         let what = |m: String| invalid(format!("hair {}: {m}", i + 1));
         hair.push(HairEntry {
             source: HairSource::File(base.join(at_frame(&h.file, frame))),
-            material: material(&h.material, base).map_err(what)?,
+            material: material(&h.material, base, &mut textures).map_err(what)?,
             transform: transform(&h.transform).map_err(what)?,
             radius_scale: h.radius_scale,
             file_colors: h.file_colors,
@@ -162,7 +165,8 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
     }
     let mut hair_systems = Vec::new();
     for (i, h) in scene.hair_system.iter().enumerate() {
-        let entry = hair_system(h, base, meshes.len()).map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
+        let entry = hair_system(h, base, meshes.len(), &mut textures)
+            .map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
         hair_systems.push(entry);
     }
     let mut furs = Vec::new();

@@ -6,11 +6,42 @@ use crate::scene::CameraDesc;
 use crate::shading::hair_bsdf::HairParams;
 use crate::shading::{tube::Tube, Material};
 use crate::world::RenderSettings;
-use serde::Deserialize;
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer};
 use std::path::PathBuf;
 
 /// Three floats: a point, a direction or a colour.
 pub(super) type V3 = [f32; 3];
+
+/// An array of exactly `N` items. Serde reads a fixed-size array by taking its first `N`
+/// items and ignoring the rest, so `resolution = [64, 48, 3]` would pass as 64x48: every
+/// fixed-size array of the schema is read through this instead, and a wrong length is an
+/// error at the key's line.
+fn exact<'de, D: Deserializer<'de>, T: Deserialize<'de>, const N: usize>(d: D) -> Result<[T; N], D::Error> {
+    let items = Vec::<T>::deserialize(d)?;
+    let len = items.len();
+    items.try_into().map_err(|_| D::Error::invalid_length(len, &Items(N)))
+}
+
+/// [`exact`] for an optional key.
+fn exact_opt<'de, D: Deserializer<'de>, T: Deserialize<'de>, const N: usize>(d: D) -> Result<Option<[T; N]>, D::Error> {
+    match Option::<Vec<T>>::deserialize(d)? {
+        None => Ok(None),
+        Some(items) => {
+            let len = items.len();
+            items.try_into().map(Some).map_err(|_| D::Error::invalid_length(len, &Items(N)))
+        }
+    }
+}
+
+/// What [`exact`] expected, for its message.
+struct Items(usize);
+
+impl serde::de::Expected for Items {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(f, "an array of exactly {} items", self.0)
+    }
+}
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -48,10 +79,12 @@ pub(super) struct ImportToml {
 #[serde(deny_unknown_fields)]
 pub(super) struct CameraToml {
     /// Required unless there are keys.
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) eye: Option<V3>,
     /// Required unless there are keys.
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) target: Option<V3>,
-    #[serde(default = "default_up")]
+    #[serde(default = "default_up", deserialize_with = "exact")]
     pub(super) up: V3,
     #[serde(default = "default_vfov")]
     pub(super) vfov: f32,
@@ -70,7 +103,9 @@ fn default_vfov() -> f32 {
 #[serde(deny_unknown_fields)]
 pub(super) struct CameraKeyToml {
     pub(super) frame: u32,
+    #[serde(deserialize_with = "exact")]
     pub(super) eye: V3,
+    #[serde(deserialize_with = "exact")]
     pub(super) target: V3,
     /// Defaults to the camera's `vfov`.
     pub(super) vfov: Option<f32>,
@@ -80,6 +115,7 @@ pub(super) struct CameraKeyToml {
 #[derive(Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub(super) struct RenderToml {
+    #[serde(deserialize_with = "exact")]
     pub(super) resolution: [u32; 2],
     pub(super) spp: u32,
     pub(super) seed: u32,
@@ -168,19 +204,26 @@ fn default_threshold() -> f32 {
 #[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
 pub(super) enum LightToml {
     Distant {
+        #[serde(deserialize_with = "exact")]
         direction: V3,
+        #[serde(deserialize_with = "exact")]
         irradiance: V3,
         /// Degrees; 0 is a sharp light.
         #[serde(default)]
         angular_diameter: f32,
     },
     Point {
+        #[serde(deserialize_with = "exact")]
         position: V3,
+        #[serde(deserialize_with = "exact")]
         intensity: V3,
     },
     Spot {
+        #[serde(deserialize_with = "exact")]
         position: V3,
+        #[serde(deserialize_with = "exact")]
         target: V3,
+        #[serde(deserialize_with = "exact")]
         intensity: V3,
         #[serde(default = "default_inner")]
         inner_angle: f32,
@@ -188,18 +231,25 @@ pub(super) enum LightToml {
         outer_angle: f32,
     },
     Quad {
+        #[serde(deserialize_with = "exact")]
         corner: V3,
+        #[serde(deserialize_with = "exact")]
         edge_u: V3,
+        #[serde(deserialize_with = "exact")]
         edge_v: V3,
+        #[serde(deserialize_with = "exact")]
         radiance: V3,
     },
     Sphere {
+        #[serde(deserialize_with = "exact")]
         center: V3,
         radius: f32,
+        #[serde(deserialize_with = "exact")]
         radiance: V3,
     },
     /// Exactly one of `radiance` (constant) and `file` (an equirectangular map).
     Environment {
+        #[serde(default, deserialize_with = "exact_opt")]
         radiance: Option<V3>,
         file: Option<PathBuf>,
         /// Degrees about +y.
@@ -239,42 +289,43 @@ fn default_outer() -> f32 {
 #[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
 pub(super) enum MaterialToml {
     Diffuse {
-        #[serde(default = "default_color")]
+        #[serde(default = "default_color", deserialize_with = "exact")]
         color: V3,
     },
     /// Diffuse colour from an image by UV, optionally glossy.
     Textured {
         color: PathBuf,
-        #[serde(default = "one3")]
+        #[serde(default = "one3", deserialize_with = "exact")]
         tint: V3,
         roughness: Option<RoughnessToml>,
         /// Defaults to 0.04 with a roughness, else 0.
         specular: Option<f32>,
     },
     Phong {
-        #[serde(default = "default_color")]
+        #[serde(default = "default_color", deserialize_with = "exact")]
         diffuse: V3,
-        #[serde(default = "default_phong_specular")]
+        #[serde(default = "default_phong_specular", deserialize_with = "exact")]
         specular: V3,
         #[serde(default = "default_phong_exponent")]
         exponent: f32,
     },
     Mirror {
-        #[serde(default = "one3")]
+        #[serde(default = "one3", deserialize_with = "exact")]
         color: V3,
     },
     Glass {
         #[serde(default = "default_ior")]
         ior: f32,
-        #[serde(default = "one3")]
+        #[serde(default = "one3", deserialize_with = "exact")]
         color: V3,
     },
     Tube {
         /// Defaults to the diffuse colour.
+        #[serde(default, deserialize_with = "exact_opt")]
         ambient: Option<V3>,
-        #[serde(default = "default_tube_diffuse")]
+        #[serde(default = "default_tube_diffuse", deserialize_with = "exact")]
         diffuse: V3,
-        #[serde(default = "default_tube_specular")]
+        #[serde(default = "default_tube_specular", deserialize_with = "exact")]
         specular: V3,
         #[serde(default = "default_specular_power")]
         specular_power: f32,
@@ -284,6 +335,7 @@ pub(super) enum MaterialToml {
     Physical {
         eumelanin: Option<f32>,
         pheomelanin: Option<f32>,
+        #[serde(default, deserialize_with = "exact_opt")]
         color: Option<V3>,
         #[serde(default)]
         from_file: bool,
@@ -338,10 +390,10 @@ fn default_hair_eta() -> f32 {
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub(super) struct TransformToml {
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) translate: Option<V3>,
     /// Axis (x, y, z) and angle in degrees.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) rotate: Option<[f32; 4]>,
     #[serde(default)]
     pub(super) scale: Option<ScaleToml>,
@@ -351,7 +403,7 @@ pub(super) struct TransformToml {
 #[serde(untagged)]
 pub(super) enum ScaleToml {
     Uniform(f32),
-    Axes(V3),
+    Axes(#[serde(deserialize_with = "exact")] V3),
 }
 
 #[derive(Deserialize)]
@@ -479,10 +531,12 @@ pub(super) struct HairSystemToml {
     pub(super) noise_frequency_u: Option<f32>,
     pub(super) noise_frequency_v: Option<f32>,
     pub(super) noise_frequency_w: Option<f32>,
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) hair_color: Option<V3>,
     pub(super) hair_color_scale: Option<RampToml<V3>>,
     pub(super) opacity: Option<f32>,
     pub(super) translucence: Option<f32>,
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) specular_color: Option<V3>,
     pub(super) specular_power: Option<f32>,
     pub(super) diffuse_rand: Option<f32>,
@@ -504,10 +558,12 @@ pub(super) struct FolliclesToml {
     pub(super) v: Option<u32>,
     pub(super) count: Option<u32>,
     pub(super) randomization: Option<f32>,
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) uv_range: Option<[[f32; 2]; 2]>,
     pub(super) points_per_hair: Option<u32>,
     pub(super) length: Option<f32>,
     pub(super) droop: Option<f32>,
+    #[serde(default, deserialize_with = "exact_opt")]
     pub(super) gravity: Option<V3>,
 }
 
