@@ -478,3 +478,34 @@ fn image_maps_are_opened_and_decoded_within_limits() {
     assert_eq!(tress::prepare::estimate_memory(&desc).unwrap().maps, once);
     tress::prepare::prepare(&desc).unwrap();
 }
+
+/// Maya `file -r` references were dropped silently: each is a warning naming the file.
+#[test]
+fn maya_references_are_named_in_a_warning() {
+    let text = "file -rdi 1 -ns \"prop\" -rfn \"propRN\" -typ \"mayaAscii\" \"/assets/prop.ma\";\n\
+                file -r -ns \"prop\" -dr 1 -rfn \"propRN\" -typ \"mayaAscii\" \"/assets/prop.ma\";\n\
+                createNode transform -n \"t\";\n";
+    let imported = parse_maya_timed(text).0.unwrap();
+    let named: Vec<&String> = imported.warnings.iter().filter(|w| w.contains("/assets/prop.ma")).collect();
+    assert_eq!(named.len(), 1, "{:?}", imported.warnings);
+    assert!(named[0].contains("does not load"), "{named:?}");
+}
+
+/// USD layers, the scene's own and those it composes, are input files: a FIFO is refused
+/// at once instead of blocking (as the scene, an error; as a sublayer, the composition
+/// problem every unreadable sublayer is, a warning naming it).
+#[test]
+fn usd_layers_are_opened_as_input_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    mkfifo(&d.join("fifo.usda"));
+    let limit = Duration::from_secs(10);
+    assert_refused(&tress_within(&["render", "fifo.usda", "-o", "x.png"], d, limit), &["fifo.usda: is a FIFO"]);
+    std::fs::write(d.join("top.usda"), "#usda 1.0\n(\n    subLayers = [@./fifo.usda@]\n)\n").unwrap();
+    let out = tress_within(&["render", "top.usda", "-o", "x.png", "-r", "8x6", "-s", "1"], d, limit);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("warning: top.usda: composition problem") && stderr.contains("fifo.usda: is a FIFO"),
+        "{stderr}"
+    );
+}

@@ -95,7 +95,7 @@ impl Notes {
 /// Reads a USD file (`.usda`, `.usdc`, `.usdz` or `.usd`, and the layers it composes) at
 /// the options' frame, with the options' camera.
 pub fn read_usd(path: &Path, options: &ImportOptions) -> Result<Imported, LoadError> {
-    let bytes = std::fs::read(path).map_err(|e| LoadError::io(path, "read the file", e))?;
+    let bytes = crate::input_file::read(path, crate::input_file::Kind::ImportedScene)?;
     let (kind, prepared) = layer::prepare_layer(bytes).map_err(|m| LoadError::format(path, m))?;
     let name = path.to_str().ok_or_else(|| LoadError::format(path, "the path is not UTF-8"))?;
     if kind == layer::LayerKind::Text {

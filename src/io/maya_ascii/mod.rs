@@ -191,6 +191,9 @@ impl<'g> Reader<'g> {
             }
             self.out.resolution = Some([w as u32, h as u32]);
         }
+        for r in &g.references {
+            self.out.warnings.push(format!("references {r}, which tress does not load: nothing of it is rendered"));
+        }
         let mut unknown: BTreeMap<&str, usize> = BTreeMap::new();
         for n in &g.nodes {
             if !KNOWN.contains(&n.kind.as_str()) {

@@ -239,6 +239,8 @@ pub struct Graph {
     /// so that a node's connections cost their number, not the file's (`inputs_of`).
     by_dst: Vec<Vec<u32>>,
     by_src: Vec<Vec<u32>>,
+    /// Files referenced with `file -r`, in file order.
+    pub references: Vec<String>,
 }
 
 /// Most words one statement may hold (a 50-million-vertex mesh chunk is far beyond what
@@ -259,6 +261,12 @@ pub fn parse(text: &str) -> Result<Graph, (u32, String)> {
             "createNode" => current = Some(g.create_node(&words)?),
             "setAttr" => g.set_attr(&words, current)?,
             "connectAttr" => g.connect(&words)?,
+            // `file -r ... "path";` references another scene; the file names it last.
+            "file" if words.iter().any(|w| !w.quoted && matches!(w.text, "-r" | "-reference")) => {
+                if let Some(path) = words[1..].iter().rev().find(|w| w.quoted) {
+                    g.references.push(path.unescaped());
+                }
+            }
             "select" => {
                 // `select -ne NAME` picks an existing (often a default) node for the setAttrs
                 // that follow.

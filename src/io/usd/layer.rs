@@ -354,7 +354,13 @@ impl ar::Resolver for GuardedResolver {
         self.inner.resolve_for_new_asset(asset_path)
     }
     fn open_asset(&self, resolved: &ar::ResolvedPath) -> io::Result<Box<dyn ar::Asset>> {
-        let bytes = self.inner.open_asset(resolved)?.read_all()?;
+        // A layer on disk is opened as every input file is (a regular file, at most the
+        // cap of an imported scene); a layer inside a package is the resolver's to read.
+        let bytes = match std::fs::metadata(&**resolved) {
+            Ok(_) => crate::input_file::read(resolved, crate::input_file::Kind::ImportedScene)
+                .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e.to_string()))?,
+            Err(_) => self.inner.open_asset(resolved)?.read_all()?,
+        };
         let (_, bytes) = prepare_layer(bytes)
             .map_err(|m| io::Error::new(io::ErrorKind::InvalidData, format!("{}: {m}", resolved.display())))?;
         Ok(Box::new(io::Cursor::new(bytes)))
