@@ -187,3 +187,99 @@ def test_without_the_module_the_engine_runs_the_command_line(addon, tmp_path, tr
         images.append(pixels)
     assert images[0].max() > 0
     assert np.array_equal(images[0], images[1])
+
+
+def uv_environment(scene, width=256, height=128, strength=1.0):
+    """A world whose equirectangular Environment Texture holds its own image coordinates:
+    red = u and green = v (Blender's, v from the bottom row), so a pixel's colour says
+    which part of the image is seen there."""
+    img = bpy.data.images.new("uv", width, height, float_buffer=True)
+    u = (np.arange(width) + 0.5) / width
+    v = (np.arange(height) + 0.5) / height
+    px = np.zeros((height, width, 4), np.float32)
+    px[..., 0], px[..., 1], px[..., 3] = u[None, :], v[:, None], 1.0
+    img.pixels.foreach_set(px.ravel())
+    world = bpy.data.worlds.new("uv")
+    scene.world = world
+    world.use_nodes = True
+    tree = world.node_tree
+    bg = tree.nodes["Background"]
+    bg.inputs["Strength"].default_value = strength
+    tex = tree.nodes.new("ShaderNodeTexEnvironment")
+    tex.image = img
+    tex.interpolation = "Closest"
+    tree.links.new(tex.outputs[0], bg.inputs["Color"])
+    return img
+
+
+def render_pixels(scene, path):
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+    image = bpy.data.images.load(str(path))
+    pixels = np.empty(len(image.pixels), np.float32)
+    image.pixels.foreach_get(pixels)
+    bpy.data.images.remove(image)
+    return pixels.reshape(scene.render.resolution_y, scene.render.resolution_x, 4)
+
+
+def test_world_environment_texture_is_seen_where_cycles_sees_it(addon, tmp_path):
+    """An equirectangular world image is exported as an environment map that tress shows
+    in the same directions as Blender's own Cycles: every pixel of two wide views agrees
+    on which part of the image it sees."""
+    import mathutils
+
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.resolution_x, scene.render.resolution_y = 8, 6
+    scene.view_settings.view_transform = "Standard"
+    uv_environment(scene, strength=2.0)
+    cam_data = bpy.data.cameras.new("cam")
+    cam_data.lens_unit = "FOV"
+    cam_data.angle = math.radians(60.0)
+    cam = bpy.data.objects.new("cam", cam_data)
+    scene.collection.objects.link(cam)
+    scene.camera = cam
+    scene.cycles.samples = 16
+    scene.cycles.device = "CPU"
+    scene.tress.spp = 16
+    doc, _ = export.build(bpy.context.evaluated_depsgraph_get())
+    (env,) = doc.lights
+    assert env == {"type": "environment", "file": export.ENVIRONMENT_FILE, "intensity": 2.0}
+    # Views away from the image's seam (behind -X) and its poles.
+    for i, d in enumerate([(1.0, 0.3, 0.1), (-0.4, -0.8, 0.5)]):
+        cam.rotation_euler = mathutils.Vector(d).normalized().to_track_quat("-Z", "Y").to_euler()
+        seen = {}
+        for engine in ("CYCLES", "TRESS"):
+            scene.render.engine = engine
+            seen[engine] = render_pixels(scene, tmp_path / f"{engine}_{i}.exr")[..., :2] / 2.0
+        assert np.abs(seen["TRESS"] - seen["CYCLES"]).max() < 0.02, (d, seen)
+
+
+def test_render_passes_equal_the_command_lines_aovs(addon, tmp_path, tress_cli):
+    scene, _, _, _ = make_scene()
+    layer = scene.view_layers[0]
+    layer.use_pass_z = layer.use_pass_normal = layer.use_pass_object_index = True
+    scene.tress.hair_passes = True
+    scene.render.image_settings.file_format = "OPEN_EXR_MULTILAYER"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.image_settings.exr_codec = "ZIP"
+    scene.render.filepath = str(tmp_path / "passes.exr")
+    bpy.ops.render.render(write_still=True)
+    from tress_addon import exr
+
+    blender = exr.read_channels(str(tmp_path / "passes.exr"))
+    folder = tmp_path / "folder"
+    bpy.ops.export_scene.tress(directory=str(folder))
+    out = tmp_path / "cli.exr"
+    run_cli(tress_cli, "render", folder / "scene.toml", "-o", out, "--quiet")
+    cli = exr.read_channels(str(out))
+    prefix = f"{layer.name}."
+    pairs = {"Depth.Z": "Z", "Normal.X": "N.X", "Normal.Z": "N.Z", "IndexOB.X": "objectId",
+             "strandId.X": "strandId", "strandAlong.X": "strandAlong", "rootUV.U": "rootUV.U",
+             "rootUV.V": "rootUV.V", "clumpId.X": "clumpId", "strandRandom.X": "strandRandom"}
+    for name, channel in pairs.items():
+        assert prefix + name in blender, sorted(blender)
+        assert np.array_equal(blender[prefix + name], cli[channel]), name
+    assert cli["strandAlong"].max() > 0.5, "hair is in view"

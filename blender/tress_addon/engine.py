@@ -17,6 +17,7 @@ import time
 import bpy
 
 from . import exr, export
+from .scene_folder import ImageData, write_pfm
 
 try:
     import numpy as np
@@ -61,10 +62,18 @@ def cli_path(context) -> str | None:
     return shutil.which("tress")
 
 
-def to_native(doc, tress):
-    """A :class:`SceneDoc` as a ``tress.Scene`` (same tables, geometry as arrays)."""
+def to_native(doc, tress, folder):
+    """A :class:`SceneDoc` as a ``tress.Scene`` (same tables, geometry as arrays). Images
+    (the world's environment map) are written into ``folder``, which must outlive the
+    render, and named by their absolute paths."""
     scene = tress.Scene(doc.camera, doc.render)
     for entry in doc.lights:
+        entry = dict(entry)
+        data = doc.files.get(entry.get("file"))
+        if isinstance(data, ImageData):
+            path = os.path.join(folder, entry["file"])
+            write_pfm(path, data)
+            entry["file"] = path
         scene.add_light(**entry)
     for entry in doc.meshes:
         entry = dict(entry)
@@ -83,6 +92,36 @@ def to_native(doc, tress):
         else:
             scene.add_hair(**entry)
     return scene
+
+
+def _flip(image):
+    """An (h, w[, c]) top-row-first array as the flat bottom-row-first float32 values a
+    render pass holds."""
+    return np.ascontiguousarray(image[::-1], dtype=np.float32).ravel()
+
+
+def _layer_flag(name):
+    return lambda scene, layer: bool(getattr(layer, name, False))
+
+
+def _hair_passes(scene, layer):
+    return bool(scene.tress.hair_passes)
+
+
+# The render passes tress fills: (pass name, tress AOV channels, Blender channel ids, kind,
+# whether the view layer asks for it). Depth, Normal and Object Index are Blender's own
+# passes (View Layer properties); the hair passes are tress's, switched on together in the
+# tress panel.
+PASSES = (
+    ("Depth", ("Z",), "Z", "VALUE", _layer_flag("use_pass_z")),
+    ("Normal", ("N.X", "N.Y", "N.Z"), "XYZ", "VECTOR", _layer_flag("use_pass_normal")),
+    ("IndexOB", ("objectId",), "X", "VALUE", _layer_flag("use_pass_object_index")),
+    ("strandId", ("strandId",), "X", "VALUE", _hair_passes),
+    ("strandAlong", ("strandAlong",), "X", "VALUE", _hair_passes),
+    ("rootUV", ("rootUV.U", "rootUV.V", "A"), "UVA", "VECTOR", _hair_passes),
+    ("clumpId", ("clumpId",), "X", "VALUE", _hair_passes),
+    ("strandRandom", ("strandRandom",), "X", "VALUE", _hair_passes),
+)
 
 
 class TressRenderEngine(bpy.types.RenderEngine):
@@ -107,24 +146,41 @@ class TressRenderEngine(bpy.types.RenderEngine):
         else:
             self._render_cli(doc, width, height)
 
-    def _put(self, rgba, width, height, result=None):
-        """Writes an (h, w, 4) top-row-first array into the render result."""
+    def update_render_passes(self, scene=None, renderlayer=None):
+        """The passes of :data:`PASSES` the view layer asks for, beside Combined."""
+        self.register_pass(scene, renderlayer, "Combined", 4, "RGBA", "COLOR")
+        for name, _, chan_id, kind, enabled in PASSES:
+            if enabled(scene, renderlayer):
+                self.register_pass(scene, renderlayer, name, len(chan_id), chan_id, kind)
+
+    def _put(self, rgba, width, height, result=None, aovs=None):
+        """Writes an (h, w, 4) top-row-first array into the render result, and each pass
+        of :data:`PASSES` the result has from ``aovs`` (channel name -> (h, w) array)."""
         own = result is None
         if own:
             result = self.begin_result(0, 0, width, height)
-        flipped = np.ascontiguousarray(rgba[::-1].reshape(-1, 4), dtype=np.float32)
-        result.layers[0].passes["Combined"].rect.foreach_set(flipped.ravel())
+        passes = result.layers[0].passes
+        passes["Combined"].rect.foreach_set(_flip(rgba))
+        for name, channels, _, _, _ in PASSES:
+            target = passes.find_by_name(name, "")
+            if target is None or aovs is None or any(c not in aovs for c in channels):
+                continue
+            target.rect.foreach_set(_flip(np.stack([aovs[c] for c in channels], axis=-1)))
         if own:
             self.end_result(result)
         else:
             self.update_result(result)
 
     def _render_module(self, tress, doc, width, height):
-        try:
-            scene = to_native(doc, tress)
-        except (ValueError, tress.TressError) as e:
-            self.report({"ERROR"}, f"tress: {e}")
-            return
+        with tempfile.TemporaryDirectory(prefix="tress-blender-") as folder:
+            try:
+                scene = to_native(doc, tress, folder)
+            except (ValueError, tress.TressError) as e:
+                self.report({"ERROR"}, f"tress: {e}")
+                return
+            self._render_native(tress, scene, width, height)
+
+    def _render_native(self, tress, scene, width, height):
         result = self.begin_result(0, 0, width, height)
 
         def progress(done, total):
@@ -141,7 +197,7 @@ class TressRenderEngine(bpy.types.RenderEngine):
             self.end_result(result, cancel=True)
             self.report({"ERROR"}, f"tress: {e}")
             return
-        self._put(np.asarray(image), width, height, result)
+        self._put(np.asarray(image), width, height, result, image.aovs())
         self.end_result(result)
 
     def _render_cli(self, doc, width, height):
@@ -167,11 +223,11 @@ class TressRenderEngine(bpy.types.RenderEngine):
                 self.report({"ERROR"}, f"tress: {err.strip()}")
                 return
             try:
-                rgba = exr.read_rgba(out)
+                channels = exr.read_channels(out)
             except (OSError, ValueError) as e:
                 self.report({"ERROR"}, f"tress: {e}")
                 return
-            self._put(rgba, width, height)
+            self._put(np.stack([channels[c] for c in "RGBA"], axis=-1), width, height, aovs=channels)
 
 
 def compatible_panels():

@@ -20,7 +20,9 @@ camera's own Y axis, so no axis conversion is needed.
   Blender's watts are turned into intensity as ``power / 4π`` (point, spot) and into
   radiance as ``power / (π · area)`` (area, sphere).
 - World: the Background colour times strength as an ``environment`` light; an
-  Environment Texture's mean colour (warned: tress has no environment map here).
+  equirectangular Environment Texture linked to it as an environment map (resampled to
+  tress's lat-long convention, :func:`environment_pixels`) with the strength as intensity;
+  other projections as their mean colour (warned).
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ from __future__ import annotations
 import math
 
 from . import materials
-from .scene_folder import MeshData, SceneDoc, StrandData
+from .scene_folder import ImageData, MeshData, SceneDoc, StrandData
 
 try:
     import numpy as np
@@ -145,8 +147,52 @@ def light(obj, warnings):
     return None
 
 
-def world(scene, warnings):
-    """The ``environment`` light of the world, or None when it is black."""
+# Environment maps are resampled to at most this width (and half of it in height).
+MAX_ENVIRONMENT_WIDTH = 4096
+
+
+def environment_pixels(pixels):
+    """An equirectangular image in Blender's convention (``pixels``: height x width x
+    channels, bottom row first, as ``Image.pixels`` holds it) resampled to tress's
+    (top row first), both in Blender's world axes, which the export keeps.
+
+    Blender's Environment Texture looks up direction ``d`` at ``u = 1/2 - atan2(d.y,
+    d.x) / 2π``, ``v = 1/2 + asin(d.z) / π`` (v from the bottom row: +X at the image centre,
+    +Z at the top). tress's environment light maps ``(u, v)`` (v from the top row) to
+    ``θ = π v``, ``φ = 2π (u + 1/4)``, ``d = (sin θ cos φ, cos θ, sin θ sin φ)``
+    (docs/scene-format.md). Each tress pixel takes the bilinear value of the Blender image
+    in its direction."""
+    src = np.asarray(pixels, dtype=np.float32)[..., :3]
+    sh, sw = src.shape[:2]
+    w = max(2, min(sw, MAX_ENVIRONMENT_WIDTH))
+    h = max(1, min(sh, w // 2 if sw > MAX_ENVIRONMENT_WIDTH else sh))
+    u = (np.arange(w) + 0.5) / w
+    v = (np.arange(h) + 0.5) / h
+    theta = np.pi * v[:, None]
+    phi = 2.0 * np.pi * (u[None, :] + 0.25)
+    dx, dy, dz = np.sin(theta) * np.cos(phi), np.cos(theta) * np.ones_like(phi), np.sin(theta) * np.sin(phi)
+    ub = (0.5 - np.arctan2(dy, dx) / (2.0 * np.pi)) % 1.0
+    vb = 0.5 + np.arcsin(np.clip(dz, -1.0, 1.0)) / np.pi
+    x = ub * sw - 0.5
+    y = np.clip(vb * sh - 0.5, 0.0, sh - 1)
+    x0 = np.floor(x).astype(np.int64)
+    y0 = np.floor(y).astype(np.int64)
+    fx = (x - x0)[..., None]
+    fy = (y - y0)[..., None]
+    x1, y1 = (x0 + 1) % sw, np.minimum(y0 + 1, sh - 1)
+    x0 %= sw
+    top = src[y0, x0] * (1 - fx) + src[y0, x1] * fx
+    bottom = src[y1, x0] * (1 - fx) + src[y1, x1] * fx
+    return (top * (1 - fy) + bottom * fy).astype(np.float32)
+
+
+ENVIRONMENT_FILE = "world.pfm"
+
+
+def world(scene, doc: SceneDoc, warnings):
+    """The ``environment`` light of the world, or None when it is black: the Background
+    colour times strength, or an equirectangular Environment Texture linked to it, resampled
+    into ``doc.files`` as :data:`ENVIRONMENT_FILE`."""
     w = scene.world
     if w is None:
         return None
@@ -160,11 +206,22 @@ def world(scene, warnings):
             if socket.is_linked:
                 source = socket.links[0].from_node
                 image = getattr(source, "image", None)
-                if source.bl_idname == "ShaderNodeTexEnvironment" and image is not None:
+                if source.bl_idname == "ShaderNodeTexEnvironment" and image is not None and image.size[0] > 0:
                     pixels = np.empty(len(image.pixels), dtype=np.float32)
                     image.pixels.foreach_get(pixels)
-                    color = pixels.reshape(-1, image.channels)[:, :3].mean(axis=0).astype(np.float64) * strength
-                    warnings.append(f"world: the environment image {image.name} is lit as its mean colour")
+                    pixels = pixels.reshape(image.size[1], image.size[0], image.channels)
+                    if source.projection != "EQUIRECTANGULAR":
+                        warnings.append(f"world: the {source.projection.lower()} environment image {image.name} "
+                                        "is lit as its mean colour")
+                        color = pixels[..., :3].reshape(-1, 3).mean(axis=0).astype(np.float64) * strength
+                    else:
+                        if source.inputs["Vector"].is_linked:
+                            warnings.append(f"world: the texture coordinates of {image.name} are not mapped "
+                                            "(the image is placed as with none)")
+                        if strength <= 0:
+                            return None
+                        doc.files[ENVIRONMENT_FILE] = ImageData(environment_pixels(pixels))
+                        return {"type": "environment", "file": ENVIRONMENT_FILE, "intensity": strength}
                 else:
                     warnings.append(f"world: {source.bl_idname} linked to the background colour is not mapped")
     if not np.any(color > 0):
@@ -296,7 +353,7 @@ def build(depsgraph, settings=None):
     w, h = resolution(scene)
     doc = SceneDoc(render={"resolution": [w, h], **(settings or {})})
     doc.camera = camera(scene.camera.evaluated_get(depsgraph), scene, warnings)
-    env = world(scene, warnings)
+    env = world(scene, doc, warnings)
     for inst in depsgraph.object_instances:
         obj = inst.object
         original = obj.original

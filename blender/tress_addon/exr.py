@@ -53,9 +53,8 @@ def _unzip(raw: bytes) -> bytes:
     return out.tobytes()
 
 
-def read_rgba(path: str) -> np.ndarray:
-    """The R, G, B and A channels of a tress EXR as float32 (height, width, 4), top row
-    first."""
+def read_channels(path: str) -> dict[str, np.ndarray]:
+    """Every channel of a tress EXR by name, each float32 (height, width), top row first."""
     with open(path, "rb") as f:
         data = f.read()
     attrs, at = _header(data)
@@ -80,4 +79,4 @@ def read_rgba(path: str) -> np.ndarray:
             block = _unzip(block)
         values = np.frombuffer(block, dtype="<f4").reshape(n, len(names), width)
         image[y - y0:y - y0 + n] = values.transpose(0, 2, 1)
-    return np.stack([image[..., names.index(c)] for c in "RGBA"], axis=-1)
+    return {name: image[..., i] for i, name in enumerate(names)}

@@ -31,6 +31,12 @@ class TressSettings(bpy.types.PropertyGroup):
     )
     max_depth: IntProperty(name="Max Depth", description="Mirror and glass bounces", default=5, min=0, max=64)
     threads: IntProperty(name="Threads", description="Worker threads, 0 for every core", default=0, min=0)
+    hair_passes: BoolProperty(
+        name="Hair Passes",
+        description="Render passes strandId, strandAlong (0 root to 1 tip), rootUV, clumpId and strandRandom, "
+        "beside Blender's Depth, Normal and Object Index passes of the view layer",
+        default=False,
+    )
     use_module: BoolProperty(
         name="Use Python Module", default=True,
         description="Render in Blender's process with the tress Python module when it is installed, "
@@ -53,7 +59,7 @@ class TRESS_PT_settings(bpy.types.Panel):
         t = context.scene.tress
         layout = self.layout
         layout.use_property_split = True
-        for name in ("spp", "integrator", "lod", "transparency_layers", "max_depth", "seed", "threads", "use_module"):
+        for name in ("spp", "integrator", "lod", "transparency_layers", "max_depth", "seed", "threads", "hair_passes", "use_module"):
             layout.prop(t, name)
 
 

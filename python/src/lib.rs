@@ -180,7 +180,7 @@ fn pool(threads: usize) -> PyResult<rayon::ThreadPool> {
 struct TileCounter(AtomicU64);
 
 impl tress::render::Progress for TileCounter {
-    fn advance(&self, tiles: u64) {
+    fn advance(&self, tiles: u64, _rays: u64) {
         self.0.fetch_add(tiles, Ordering::Relaxed);
     }
 }
@@ -305,34 +305,21 @@ fn info<'py>(py: Python<'py>, scene: &PyDescription) -> PyResult<Bound<'py, PyDi
     let estimate = tress::prepare::check_memory(&desc, None).map_err(error)?;
     let pool = pool(desc.settings.threads)?;
     let (world, _) = py.detach(|| pool.install(|| tress::prepare::prepare_owned(desc))).map_err(error)?;
-    let (mut meshes, mut triangles, mut sets, mut strands, mut segments) = (0usize, 0usize, 0usize, 0usize, 0usize);
-    for o in &world.accel.objects {
-        match &o.shape {
-            Shape::Mesh(m) => {
-                meshes += 1;
-                triangles += m.indices.len();
-            }
-            Shape::Strands(s) => {
-                sets += 1;
-                strands += s.strand_count();
-                segments += s.segment_count();
-            }
-        }
-    }
-    let memory = tress::bench::Memory::of(&world.accel);
+    let memory = tress::stats::Memory::of(&world.accel);
     let d = PyDict::new(py);
-    d.set_item("meshes", meshes)?;
-    d.set_item("triangles", triangles)?;
-    d.set_item("strand_sets", sets)?;
-    d.set_item("strands", strands)?;
-    d.set_item("segments", segments)?;
+    d.set_item("meshes", memory.meshes)?;
+    d.set_item("triangles", memory.triangles)?;
+    d.set_item("strand_sets", memory.strand_sets)?;
+    d.set_item("strands", memory.strands)?;
+    d.set_item("segments", memory.segments)?;
     d.set_item("lights", world.lights.len())?;
     let m = PyDict::new(py);
     m.set_item("mesh_data", memory.mesh)?;
+    m.set_item("mesh_bvh", memory.mesh_bvh)?;
     m.set_item("strand_data", memory.strand_points)?;
     m.set_item("strand_bvh", memory.strand_bvh)?;
-    m.set_item("other_bvh", memory.other_bvh)?;
-    m.set_item("total", memory.mesh + memory.strand_points + memory.strand_bvh + memory.other_bvh)?;
+    m.set_item("top_bvh", memory.top_bvh)?;
+    m.set_item("total", memory.mesh + memory.mesh_bvh + memory.strand_points + memory.strand_bvh + memory.top_bvh)?;
     d.set_item("memory", m)?;
     let e = PyDict::new(py);
     e.set_item("geometry", estimate.geometry)?;

@@ -20,7 +20,7 @@ import tempfile
 from array import array
 from typing import Any, Iterable, Mapping, Sequence
 
-__all__ = ["MeshData", "StrandData", "SceneDoc", "dumps", "write_hair", "write_obj", "write_atomically"]
+__all__ = ["MeshData", "StrandData", "ImageData", "SceneDoc", "dumps", "write_hair", "write_obj", "write_pfm", "write_atomically"]
 
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
 
@@ -55,6 +55,14 @@ class StrandData:
     @property
     def strand_count(self) -> int:
         return len(self.offsets) - 1
+
+
+class ImageData:
+    """A linear RGB float image, such as an environment map: ``pixels`` (height x width x
+    3), top row first. Written as a PFM file (``.pfm``), which tress reads as it reads EXR."""
+
+    def __init__(self, pixels):
+        self.pixels = pixels
 
 
 class SceneDoc:
@@ -101,6 +109,8 @@ class SceneDoc:
             os.makedirs(os.path.dirname(path) or folder, exist_ok=True)
             if isinstance(data, MeshData) or _has(data, "triangles"):
                 write_obj(path, data)
+            elif isinstance(data, ImageData):
+                write_pfm(path, data)
             else:
                 write_hair(path, data)
         scene = os.path.join(folder, name)
@@ -340,3 +350,29 @@ def obj_text(mesh: Any) -> str:
 def write_obj(path: str, mesh: Any) -> None:
     """Writes a triangle mesh to an OBJ file, atomically."""
     write_atomically(path, obj_text(mesh).encode("ascii"))
+
+
+def pfm_bytes(image: Any) -> bytes:
+    """The bytes of a colour PFM file holding ``image`` (an :class:`ImageData`, or anything
+    with its ``pixels``): the ``PF`` header, then little-endian float32 RGB rows from the
+    bottom row up, as the format orders them."""
+    pixels = image.pixels
+    if hasattr(pixels, "shape"):
+        if len(pixels.shape) != 3 or pixels.shape[2] != 3:
+            raise ValueError(f"image pixels must be height x width x 3, not {tuple(pixels.shape)}")
+        height, width = int(pixels.shape[0]), int(pixels.shape[1])
+        body = _f32(pixels[::-1].reshape(-1, 3), 3, "pixels")
+    else:
+        rows = [list(r) for r in pixels]
+        height, width = len(rows), len(rows[0]) if rows else 0
+        if any(len(r) != width for r in rows):
+            raise ValueError("image rows must all have the same width")
+        body = _f32([px for r in reversed(rows) for px in r], 3, "pixels")
+    if width == 0 or height == 0:
+        raise ValueError("an image needs at least one pixel")
+    return f"PF\n{width} {height}\n-1.0\n".encode("ascii") + body
+
+
+def write_pfm(path: str, image: Any) -> None:
+    """Writes an RGB image to a PFM file, atomically."""
+    write_atomically(path, pfm_bytes(image))
