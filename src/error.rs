@@ -83,6 +83,25 @@ pub enum PrepareError {
     Invalid(String),
 }
 
+/// The error and its causes, joined by `: `, leaving out a cause whose text the message
+/// already holds (errors that name their file often include their source's text): what
+/// the command line prints after `error: ` and what the Python package raises.
+pub fn message(e: &(dyn std::error::Error + 'static)) -> String {
+    let mut text = String::new();
+    let mut cause = Some(e);
+    while let Some(c) = cause {
+        let part = c.to_string();
+        if !text.contains(&part) {
+            if !text.is_empty() {
+                text.push_str(": ");
+            }
+            text.push_str(&part);
+        }
+        cause = c.source();
+    }
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -97,5 +116,8 @@ mod tests {
         let msg = e.to_string();
         assert!(msg.starts_with("dir/fur.hair: could not read the file: "), "{msg}");
         assert!(std::error::Error::source(&e).is_some());
+        // The OS error is in the message once, though it is also the source.
+        assert_eq!(message(&e), msg);
+        assert_eq!(msg.matches("(os error").count(), 1, "{msg}");
     }
 }

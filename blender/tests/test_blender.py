@@ -241,7 +241,10 @@ def test_world_environment_texture_is_seen_where_cycles_sees_it(addon, tmp_path)
     cam = bpy.data.objects.new("cam", cam_data)
     scene.collection.objects.link(cam)
     scene.camera = cam
-    scene.cycles.samples = 16
+    # Cycles' denoiser blurs the image's coordinates; without it 64 samples agree to 0.001.
+    scene.cycles.samples = 64
+    scene.cycles.use_denoising = False
+    scene.cycles.use_adaptive_sampling = False
     scene.cycles.device = "CPU"
     scene.tress.spp = 16
     doc, _ = export.build(bpy.context.evaluated_depsgraph_get())
@@ -254,7 +257,7 @@ def test_world_environment_texture_is_seen_where_cycles_sees_it(addon, tmp_path)
         for engine in ("CYCLES", "TRESS"):
             scene.render.engine = engine
             seen[engine] = render_pixels(scene, tmp_path / f"{engine}_{i}.exr")[..., :2] / 2.0
-        assert np.abs(seen["TRESS"] - seen["CYCLES"]).max() < 0.02, (d, seen)
+        assert np.abs(seen["TRESS"] - seen["CYCLES"]).max() < 0.01, (d, seen)
 
 
 def test_render_passes_equal_the_command_lines_aovs(addon, tmp_path, tress_cli):
@@ -262,6 +265,8 @@ def test_render_passes_equal_the_command_lines_aovs(addon, tmp_path, tress_cli):
     layer = scene.view_layers[0]
     layer.use_pass_z = layer.use_pass_normal = layer.use_pass_object_index = True
     scene.tress.hair_passes = True
+    # Blender 5 names the multilayer EXR by its media type.
+    scene.render.image_settings.media_type = "MULTI_LAYER_IMAGE"
     scene.render.image_settings.file_format = "OPEN_EXR_MULTILAYER"
     scene.render.image_settings.color_depth = "32"
     scene.render.image_settings.exr_codec = "ZIP"
@@ -269,7 +274,12 @@ def test_render_passes_equal_the_command_lines_aovs(addon, tmp_path, tress_cli):
     bpy.ops.render.render(write_still=True)
     from tress_addon import exr
 
-    blender = exr.read_channels(str(tmp_path / "passes.exr"))
+    # Blender writes one EXR part a pass; OpenEXR's own Python module reads them.
+    openexr = pytest.importorskip("OpenEXR", reason="OpenEXR's Python module is not installed (pip install OpenEXR)")
+    blender = {}
+    with openexr.File(str(tmp_path / "passes.exr"), separate_channels=True) as f:
+        for part in f.parts:
+            blender.update({name: np.asarray(c.pixels, np.float32) for name, c in part.channels.items()})
     folder = tmp_path / "folder"
     bpy.ops.export_scene.tress(directory=str(folder))
     out = tmp_path / "cli.exr"

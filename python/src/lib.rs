@@ -34,7 +34,7 @@ pyo3::create_exception!(
 /// (`anyhow`'s `{:#}`: the error and its causes), without the line end some parser
 /// messages carry.
 fn error(e: impl Into<anyhow::Error>) -> PyErr {
-    TressError::new_err(format!("{:#}", e.into()).trim_end().to_string())
+    TressError::new_err(tress::error::message(e.into().as_ref()).trim_end().to_string())
 }
 
 /// A scene description: what a scene file (or a scene built in Python) says, before any

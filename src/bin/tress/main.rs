@@ -72,23 +72,7 @@ fn main() {
         Some(Command::Bench(args)) => bench::run(&args),
     };
     if let Err(e) = result {
-        eprintln!("error: {}", message(&e));
+        eprintln!("error: {}", tress::error::message(e.as_ref()));
         std::process::exit(1);
     }
-}
-
-/// The error and its causes, joined by `: `, leaving out a cause whose text the message
-/// already holds (errors that name their file often include their source's text).
-fn message(e: &anyhow::Error) -> String {
-    let mut text = String::new();
-    for cause in e.chain() {
-        let part = cause.to_string();
-        if !text.contains(&part) {
-            if !text.is_empty() {
-                text.push_str(": ");
-            }
-            text.push_str(&part);
-        }
-    }
-    text
 }
