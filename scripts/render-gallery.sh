@@ -28,10 +28,10 @@ CAPTIONS=$OUT/gallery.md
 # name | scene file | integrator | spp | resolution | extra options
 GALLERY=(
     "groom_brown|scenes/groom_brown.toml|path|48|1280x720|"
-    "groom_blonde|scenes/groom_blonde.toml|path|48|1280x720|"
+    "groom_blonde|scenes/groom_blonde.toml|path|96|1280x720|"
     "groom_red|scenes/groom_red.toml|path|48|1280x720|"
-    "rings_of_fur|scenes/rings_of_fur.toml|direct|32|1280x720|"
-    "furry_pillow|scenes/furry_pillow.toml|direct|32|1280x720|"
+    "rings_of_fur|scenes/rings_of_fur.toml|direct|16|1280x720|"
+    "furry_pillow|scenes/furry_pillow.toml|direct|16|1280x720|"
     "hair_system_head|scenes/hair_system_head.toml|direct|16|640x480|"
     "hair_system_torus|scenes/hair_system_torus.toml|direct|16|640x480|"
     "gi_hair_mirror_fur|scenes/gi_hair_mirror_fur.toml|final-gather|16|640x480|"
@@ -52,13 +52,16 @@ for entry in "${GALLERY[@]}"; do
     start=$(date +%s.%N)
     # shellcheck disable=SC2086 # `extra` holds separate options
     "$TRESS" render $scene --integrator "$integrator" --spp "$spp" --resolution "$resolution" \
-        --threads "$THREADS" --quiet $extra -o "$OUT/$name.png" 2>"$log" || { cat "$log"; exit 1; }
+        --threads "$THREADS" --force $extra -o "$OUT/$name.png" 2>"$log" || { cat "$log"; exit 1; }
     end=$(date +%s.%N)
     seconds=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.0f", b - a }')
     time=$(awk -v s="$seconds" 'BEGIN { if (s >= 60) printf "%d min %d s", s / 60, s % 60; else printf "%d s", s }')
     threads=$(grep -o '[0-9]* threads' "$log" | head -1 || true)
+    # The render's own summary: its render time and the scene build before it.
+    render_s=$(awk '/^render / { printf "%.0f", $2 }' "$log")
+    build_s=$(awk '/^scene build / { printf "%.0f", $3 }' "$log")
     rm -f "$log"
-    caption="\`${scene:-built-in demo}\`${extra:+ ($extra)}, \`$integrator\`, $spp spp, $resolution, $time (${threads:-all cores})"
+    caption="\`${scene:-built-in demo}\`${extra:+ ($extra)}, \`$integrator\`, $spp spp, $resolution, $time in all (${render_s:-?} s render after a ${build_s:-?} s scene build; ${threads:-all cores})"
     # One line per image: replace this image's line, keep the others.
     grep -v "^- $name: " "$CAPTIONS" >"$CAPTIONS.tmp" || true
     printf -- '- %s: %s\n' "$name" "$caption" >>"$CAPTIONS.tmp"
