@@ -26,6 +26,10 @@ pub enum Light {
         position: Vec3,
         /// Radiant intensity (irradiance at unit distance).
         intensity: Color,
+        /// How the irradiance falls off with distance `d`: as `1 / d^decay`. 2 is physical
+        /// (the inverse-square law); Maya's lights also have 0 (no decay, its default), 1
+        /// (linear) and 3 (cubic).
+        decay: u8,
     },
     /// A point emitting in a cone, with a smooth falloff between two angles.
     Spot {
@@ -39,6 +43,8 @@ pub enum Light {
         cos_inner: f32,
         /// Cosine of the outer cone half-angle (dark outside).
         cos_outer: f32,
+        /// The falloff with distance, as for [`Light::Point`].
+        decay: u8,
     },
     /// A one-sided parallelogram emitting towards `edge_u x edge_v`.
     Quad {
@@ -108,15 +114,15 @@ impl Light {
             Light::Distant { direction, irradiance } => {
                 LightSample { dir: direction, dist: f32::INFINITY, value: irradiance }
             }
-            Light::Point { position, intensity } => {
+            Light::Point { position, intensity, decay } => {
                 let (dir, dist) = towards(p, position)?;
-                LightSample { dir, dist, value: intensity / (dist * dist) }
+                LightSample { dir, dist, value: intensity / dist.powi(i32::from(decay)) }
             }
-            Light::Spot { position, direction, intensity, cos_inner, cos_outer } => {
+            Light::Spot { position, direction, intensity, cos_inner, cos_outer, decay } => {
                 let (dir, dist) = towards(p, position)?;
                 let cos = -dir.dot(direction);
                 let falloff = smoothstep(cos_outer, cos_inner, cos);
-                LightSample { dir, dist, value: intensity * falloff / (dist * dist) }
+                LightSample { dir, dist, value: intensity * falloff / dist.powi(i32::from(decay)) }
             }
             Light::Quad { corner, edge_u, edge_v, radiance } => {
                 let q = corner + edge_u * u + edge_v * v;
@@ -394,6 +400,27 @@ mod tests {
                 assert!((1.0 / pdf - s.value.x).abs() < 2e-3 * s.value.x, "{light:?}: {} vs {}", 1.0 / pdf, s.value.x);
             }
             assert_eq!(light.pdf(Vec3::ZERO, -Vec3::Z), 0.0);
+        }
+    }
+
+    #[test]
+    fn point_and_spot_lights_fall_off_with_their_decay() {
+        let p = Vec3::new(0.0, 0.0, 4.0);
+        for decay in 0..=3u8 {
+            let point = Light::Point { position: p, intensity: Color::splat(8.0), decay };
+            let spot = Light::Spot {
+                position: p,
+                direction: -Vec3::Z,
+                intensity: Color::splat(8.0),
+                cos_inner: 0.9,
+                cos_outer: 0.8,
+                decay,
+            };
+            for light in [point, spot] {
+                let s = light.sample(Vec3::ZERO, Some(Vec3::Z), (0.5, 0.5)).unwrap();
+                assert_eq!((s.dir, s.dist), (Vec3::Z, 4.0));
+                assert!((s.value.x - 8.0 / 4f32.powi(i32::from(decay))).abs() < 1e-5, "{light:?}: {}", s.value.x);
+            }
         }
     }
 

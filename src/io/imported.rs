@@ -4,14 +4,16 @@
 //! every geometry already in memory, ready to become a [`Description`] of its own
 //! (`tress render scene.ma`) or to join a TOML scene (`[[import]]`).
 
-use crate::geometry::StrandSet;
+use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::Light;
 use crate::math::Aabb;
 use crate::scene::{
     CameraDesc, Description, FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
     DEFAULT_SKY_RADIANCE,
 };
-use crate::world::RenderSettings;
+use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
+use crate::shading::Material;
+use crate::world::{Integrator, RenderSettings};
 use glam::{Affine3A, Vec3, Vec3A};
 
 /// What a foreign scene file describes.
@@ -23,8 +25,10 @@ pub struct Imported {
     pub resolution: Option<[u32; 2]>,
     /// Samples per pixel, if the file gives them.
     pub spp: Option<u32>,
-    /// Maximum specular depth, if the file gives one.
+    /// Maximum depth (tress's `max_depth`), if the file gives one.
     pub max_depth: Option<u32>,
+    /// The integrator the file's renderer would use, if it says.
+    pub integrator: Option<Integrator>,
     /// Lights, in world space.
     pub lights: Vec<Light>,
     /// Meshes (inline geometry).
@@ -39,7 +43,100 @@ pub struct Imported {
     pub warnings: Vec<String>,
 }
 
+/// Fraction of a scene's size (its bounding box's diagonal) that strands whose file gives
+/// no width are drawn wide: a head of hair 25 cm across gets 0.25 mm.
+pub const RELATIVE_WIDTH: f32 = 1e-3;
+
+/// The width of strands without one in a scene of bounds `b` ([`RELATIVE_WIDTH`] of its
+/// diagonal; 1e-3 for an empty or degenerate scene).
+pub fn relative_width(b: &Aabb) -> f32 {
+    let diagonal = if b.is_empty() { 0.0 } else { Vec3::from(b.max - b.min).length() };
+    match diagonal.is_finite() && diagonal > 0.0 {
+        true => RELATIVE_WIDTH * diagonal,
+        false => RELATIVE_WIDTH,
+    }
+}
+
+/// A scene of one strand set: the physical hair material, coloured by the strands' own
+/// colours when they have them (pbrt's default brown otherwise).
+pub fn raw_strands(strands: StrandSet) -> Imported {
+    let absorption = match strands.colors {
+        Some(_) => Absorption::FromStrands,
+        None => HairParams::default().absorption,
+    };
+    let material = Material::Physical(PhysicalHair::new(HairParams { absorption, ..HairParams::default() }));
+    let hair = HairEntry {
+        source: HairSource::Inline(strands),
+        material,
+        transform: Affine3A::IDENTITY,
+        radius_scale: 1.0,
+        file_colors: true,
+        lod: None,
+    };
+    Imported { hair: vec![hair], ..Imported::default() }
+}
+
+/// A scene of one mesh, diffuse grey.
+pub fn raw_mesh(mesh: TriangleMesh) -> Imported {
+    let material = Material::Diffuse { color: Vec3::splat(0.5) };
+    let mesh = MeshEntry { source: MeshSource::Inline(mesh), material, transform: Affine3A::IDENTITY };
+    Imported { meshes: vec![mesh], ..Imported::default() }
+}
+
 impl Imported {
+    /// Gives the strand sets whose points all have radius 0 (their file gives no widths)
+    /// [`RELATIVE_WIDTH`] of the scene's size, with one warning.
+    pub fn give_widths(&mut self) {
+        let widthless =
+            |e: &HairEntry| matches!(&e.source, HairSource::Inline(s) if s.points.iter().all(|p| p[3] == 0.0));
+        let count: usize = self
+            .hair
+            .iter()
+            .filter(|e| widthless(e))
+            .map(|e| match &e.source {
+                HairSource::Inline(s) => s.strand_count(),
+                HairSource::File(_) => 0,
+            })
+            .sum();
+        if count == 0 {
+            return;
+        }
+        let width = relative_width(&self.bounds());
+        for e in self.hair.iter_mut().filter(|e| widthless(e)) {
+            if let HairSource::Inline(s) = &mut e.source {
+                s.points.iter_mut().for_each(|p| p[3] = 0.5 * width);
+            }
+        }
+        self.warnings.push(format!(
+            "{count} strand(s) have no width: drawn {width:.3e} wide ({RELATIVE_WIDTH} of the scene's size; \
+             set one with --hair-width or `width`)"
+        ));
+    }
+
+    /// Draws every strand `width` wide: the strand sets' points, and the hairs of hair
+    /// systems (their `hair_width`).
+    pub fn set_hair_width(&mut self, width: f32) {
+        for e in &mut self.hair {
+            if let HairSource::Inline(s) = &mut e.source {
+                s.points.iter_mut().for_each(|p| p[3] = 0.5 * width);
+            }
+            e.radius_scale = 1.0;
+        }
+        for e in &mut self.hair_systems {
+            e.system.hair_width = width;
+        }
+    }
+
+    /// Multiplies every strand's radius by `k` (strand sets and hair systems alike).
+    pub fn scale_hair_radius(&mut self, k: f32) {
+        for e in &mut self.hair {
+            e.radius_scale *= k;
+        }
+        for e in &mut self.hair_systems {
+            e.system.hair_width *= k;
+        }
+    }
+
     /// Applies `m` on top of every entry's and light's own transform (a TOML
     /// `[[import]]`'s `transform`).
     pub fn transform(&mut self, m: &Affine3A) {
@@ -102,6 +199,7 @@ impl Imported {
         }
         settings.spp = self.spp.unwrap_or(settings.spp);
         settings.max_depth = self.max_depth.unwrap_or(settings.max_depth);
+        settings.integrator = self.integrator.unwrap_or(settings.integrator);
         let camera = match self.camera.take() {
             Some(c) => c,
             None => {
@@ -130,7 +228,7 @@ impl Imported {
 }
 
 /// A camera looking at the centre of `b` along −z from far enough to see all of it.
-fn framing_camera(b: &Aabb) -> CameraDesc {
+pub fn framing_camera(b: &Aabb) -> CameraDesc {
     let vfov = 35.0f32;
     let (center, radius) = match b.is_empty() {
         true => (Vec3::ZERO, 1.0),
@@ -147,13 +245,16 @@ fn transform_light(l: &Light, m: &Affine3A) -> Light {
     match *l {
         Light::Distant { direction, irradiance } => Light::Distant { direction: dir(direction), irradiance },
         Light::Sun { direction, radiance, cos_max } => Light::Sun { direction: dir(direction), radiance, cos_max },
-        Light::Point { position, intensity } => Light::Point { position: m.transform_point3(position), intensity },
-        Light::Spot { position, direction, intensity, cos_inner, cos_outer } => Light::Spot {
+        Light::Point { position, intensity, decay } => {
+            Light::Point { position: m.transform_point3(position), intensity, decay }
+        }
+        Light::Spot { position, direction, intensity, cos_inner, cos_outer, decay } => Light::Spot {
             position: m.transform_point3(position),
             direction: dir(direction),
             intensity,
             cos_inner,
             cos_outer,
+            decay,
         },
         Light::Quad { corner, edge_u, edge_v, radiance } => Light::Quad {
             corner: m.transform_point3(corner),

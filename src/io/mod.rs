@@ -5,6 +5,7 @@
 //! imports another.
 
 pub mod cem_hair;
+pub mod gzip;
 pub mod imported;
 pub mod maya_ascii;
 pub mod obj;
@@ -16,7 +17,10 @@ pub mod scene_file;
 pub mod usd;
 
 use crate::error::LoadError;
-use crate::geometry::TriangleMesh;
+use crate::geometry::{StrandSet, TriangleMesh};
+use crate::math::Aabb;
+use crate::scene::{Description, GuideSource, HairSource, MeshSource};
+use glam::{Affine3A, Vec3, Vec3A};
 use std::path::Path;
 
 /// Reads a mesh, choosing the format by the file extension (`.obj` or `.ply`).
@@ -28,8 +32,9 @@ pub fn read_mesh(path: &Path) -> Result<TriangleMesh, LoadError> {
     }
 }
 
-/// The scene formats [`read_imported`] reads, by extension.
-pub const IMPORTED_EXTENSIONS: [&str; 6] = ["ma", "pbrt", "usda", "usdc", "usdz", "usd"];
+/// The formats [`read_imported`] reads, by extension: other tools' scenes, and raw
+/// geometry (`.hair` strands, `.ply` and `.obj` meshes or polyline strands).
+pub const IMPORTED_EXTENSIONS: [&str; 9] = ["ma", "pbrt", "usda", "usdc", "usdz", "usd", "hair", "ply", "obj"];
 
 /// What to read of a file that holds more than one frame or camera.
 #[derive(Clone, Debug, Default)]
@@ -50,23 +55,92 @@ fn extension(path: &Path) -> Option<String> {
     path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase)
 }
 
-/// Reads a Maya ASCII (`.ma`), pbrt-v4 (`.pbrt`) or USD (`.usda`, `.usdc`, `.usdz`,
-/// `.usd`) scene, choosing the reader by the file's extension.
+/// Reads a Maya ASCII (`.ma`), pbrt (`.pbrt`) or USD (`.usda`, `.usdc`, `.usdz`, `.usd`)
+/// scene, or a raw geometry file (`.hair`, `.ply`, `.obj`) as a scene holding just that
+/// geometry, choosing the reader by the file's extension. Strands without widths are given
+/// [`imported::RELATIVE_WIDTH`] of the scene's size, reported once.
 pub fn read_imported(path: &Path) -> Result<imported::Imported, LoadError> {
     read_imported_with(path, &ImportOptions::default())
 }
 
 /// [`read_imported`] at a frame and through a camera of the file's.
 pub fn read_imported_with(path: &Path, options: &ImportOptions) -> Result<imported::Imported, LoadError> {
-    match extension(path).as_deref() {
-        Some("ma") => maya_ascii::read_maya(path),
-        Some("pbrt") => pbrt::read_pbrt(path),
-        Some("usda" | "usdc" | "usdz" | "usd") => usd::read_usd(path, options),
-        _ => Err(LoadError::format(
-            path,
-            "unknown scene format: expected a .ma, .pbrt, .usda, .usdc, .usdz or .usd file",
-        )),
+    use imported::{raw_mesh, raw_strands};
+    let mut imported = match extension(path).as_deref() {
+        Some("ma") => maya_ascii::read_maya(path)?,
+        Some("pbrt") => pbrt::read_pbrt(path)?,
+        Some("usda" | "usdc" | "usdz" | "usd") => usd::read_usd(path, options)?,
+        Some("hair") => raw_strands(cem_hair::read_hair(path)?),
+        Some("ply") => match ply::read_ply_geometry(path)? {
+            ply::PlyGeometry::Mesh(m) => raw_mesh(m),
+            ply::PlyGeometry::Strands { strands, .. } => raw_strands(strands),
+        },
+        Some("obj") => match obj::read_obj_geometry(path)? {
+            obj::ObjGeometry::Mesh(m) => raw_mesh(m),
+            obj::ObjGeometry::Strands(s) => raw_strands(s),
+        },
+        _ => {
+            return Err(LoadError::format(
+                path,
+                "unknown scene format: expected a .ma, .pbrt, .usda, .usdc, .usdz, .usd, .hair, .ply or .obj file",
+            ))
+        }
+    };
+    imported.give_widths();
+    Ok(imported)
+}
+
+/// The bounds of a description's meshes, strand sets and guides in world space, reading
+/// the files they name (fur and hair grown from follicles add what they grow on).
+pub fn description_bounds(desc: &Description) -> Result<Aabb, LoadError> {
+    let mut b = Aabb::EMPTY;
+    let mut grow = |p: Vec3| b = b.grow(Vec3A::from(p));
+    for e in &desc.meshes {
+        let read;
+        let mesh = match &e.source {
+            MeshSource::Inline(m) => m,
+            MeshSource::File(path) => {
+                read = read_mesh(path)?;
+                &read
+            }
+        };
+        mesh.positions.iter().for_each(|p| grow(e.transform.transform_point3(*p)));
     }
+    let strands = |s: &StrandSet, t: &Affine3A, grow: &mut dyn FnMut(Vec3)| {
+        s.points.iter().for_each(|p| grow(t.transform_point3(Vec3::new(p[0], p[1], p[2]))))
+    };
+    for e in &desc.hair {
+        match &e.source {
+            HairSource::Inline(s) => strands(s, &e.transform, &mut grow),
+            HairSource::File(path) => strands(&cem_hair::read_hair(path)?, &e.transform, &mut grow),
+        }
+    }
+    for e in &desc.hair_systems {
+        match &e.guides {
+            GuideSource::Inline(g) => strands(&g.curves, &e.transform, &mut grow),
+            GuideSource::File(path) => strands(&cem_hair::read_hair(path)?, &e.transform, &mut grow),
+            GuideSource::Follicles { .. } => {}
+        }
+    }
+    Ok(b)
+}
+
+/// Draws every strand of a description `width` wide (`--hair-width`): strand sets, read
+/// from their files if need be, and hair systems.
+pub fn override_hair_width(desc: &mut Description, width: f32) -> Result<(), LoadError> {
+    for e in &mut desc.hair {
+        if let HairSource::File(path) = &e.source {
+            e.source = HairSource::Inline(cem_hair::read_hair(path)?);
+        }
+    }
+    let mut all = imported::Imported {
+        hair: std::mem::take(&mut desc.hair),
+        hair_systems: std::mem::take(&mut desc.hair_systems),
+        ..imported::Imported::default()
+    };
+    all.set_hair_width(width);
+    (desc.hair, desc.hair_systems) = (all.hair, all.hair_systems);
+    Ok(())
 }
 
 /// Why [`read_scene`] cannot read a scene.

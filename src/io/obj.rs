@@ -7,6 +7,12 @@
 //! two vertices). Normals and texture coordinates are kept only if every vertex of every
 //! object has them, because the mesh stores them for all vertices or none. Materials
 //! (`mtllib`, `usemtl`) are ignored: shading comes from the scene description.
+//!
+//! A file with line elements (`l`) and no faces holds strands ([`read_obj_geometry`]):
+//! each `l` line is a polyline through its vertices (1-based, or negative relative
+//! indices), and a line starting at the vertex the previous one ended at continues it, as
+//! exporters that write one `l` per segment produce. Vertex colours (`v x y z r g b`, an
+//! extension many tools write) become strand colours. OBJ has no widths.
 
 use std::io::{BufRead, BufReader};
 use std::path::Path;
@@ -14,7 +20,7 @@ use std::path::Path;
 use glam::Vec3;
 
 use crate::error::LoadError;
-use crate::geometry::TriangleMesh;
+use crate::geometry::{StrandSet, TriangleMesh};
 
 /// Reads an OBJ file into a single validated triangle mesh.
 ///
@@ -29,6 +35,92 @@ pub fn read_obj(path: &Path) -> Result<TriangleMesh, LoadError> {
         Ok(bytes) => not_utf8(&bytes),
     };
     load(&mut BufReader::new(file), path, cause)
+}
+
+/// What an OBJ file holds: a mesh, or polyline strands (without widths: every radius is 0).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ObjGeometry {
+    /// Triangles.
+    Mesh(TriangleMesh),
+    /// The `l` polylines.
+    Strands(StrandSet),
+}
+
+/// Reads an OBJ file of either kind: its faces as [`read_obj`] does, or, when it has line
+/// elements and no faces, its polylines as strands.
+pub fn read_obj_geometry(path: &Path) -> Result<ObjGeometry, LoadError> {
+    let bytes = crate::input_file::read(path, crate::input_file::Kind::Geometry)?;
+    parse_obj_geometry(&bytes, path)
+}
+
+/// Decodes the bytes of an OBJ file like [`read_obj_geometry`]; `path` names it in messages.
+pub fn parse_obj_geometry(bytes: &[u8], path: &Path) -> Result<ObjGeometry, LoadError> {
+    let has = |tag: &[u8]| bytes.split(|&b| b == b'\n').any(|l| l.trim_ascii_start().starts_with(tag));
+    match has(b"l ") && !has(b"f ") {
+        true => polylines(bytes, path).map(ObjGeometry::Strands),
+        false => parse_obj(bytes, path).map(ObjGeometry::Mesh),
+    }
+}
+
+/// The `l` polylines of OBJ text, over its `v` vertices.
+fn polylines(bytes: &[u8], path: &Path) -> Result<StrandSet, LoadError> {
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        LoadError::format(path, format!("it is not utf-8 text (invalid byte at offset {})", e.valid_up_to()))
+    })?;
+    let at = |line: usize, m: String| LoadError::format(path, format!("line {}: {m}", line + 1));
+    let mut positions: Vec<Vec3> = Vec::new();
+    let mut colors: Vec<[f32; 3]> = Vec::new();
+    let mut chains: Vec<Vec<usize>> = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => {
+                let v: Vec<f32> = words
+                    .map(|w| w.parse::<f32>().ok().filter(|x| x.is_finite()))
+                    .collect::<Option<_>>()
+                    .ok_or_else(|| at(n, "a vertex coordinate is not a finite number".into()))?;
+                match v.len() {
+                    3 | 4 => colors.push([1.0; 3]),
+                    6 | 7 => colors.push([v[3], v[4], v[5]]),
+                    k => return Err(at(n, format!("a vertex needs 3 coordinates (and optionally r g b), not {k}"))),
+                }
+                positions.push(Vec3::new(v[0], v[1], v[2]));
+            }
+            Some("l") => {
+                let count = positions.len() as i64;
+                let chain: Vec<usize> = words
+                    .map(|w| {
+                        // `l v/vt`: the vertex is the first number.
+                        let i: i64 = w.split('/').next().and_then(|i| i.parse().ok()).unwrap_or(0);
+                        let i = if i < 0 { count + i } else { i - 1 };
+                        (0..count)
+                            .contains(&i)
+                            .then_some(i as usize)
+                            .ok_or_else(|| at(n, format!("`{w}` is not one of the {count} vertices before this line")))
+                    })
+                    .collect::<Result<_, _>>()?;
+                match chains.last_mut() {
+                    Some(last) if last.last() == chain.first() && chain.len() > 1 => last.extend(&chain[1..]),
+                    _ => chains.push(chain),
+                }
+            }
+            _ => {}
+        }
+    }
+    let mut set = StrandSet::new();
+    for c in &chains {
+        set.push_strand(c.iter().map(|&i| (positions[i], 0.0)));
+    }
+    if colors.iter().any(|c| *c != [1.0; 3]) {
+        set.colors = Some(chains.iter().flatten().map(|&i| colors[i]).collect());
+        if set.colors.iter().flatten().flatten().any(|c| *c < 0.0) {
+            return Err(LoadError::invalid(path, "vertex colours must not be negative"));
+        }
+    }
+    if set.segment_count() == 0 {
+        return Err(LoadError::invalid(path, "the obj file's lines hold no segment"));
+    }
+    Ok(set)
 }
 
 /// Counts the vertices (`v` lines) and the triangles the faces (`f` lines) make, without
@@ -250,5 +342,27 @@ mod tests {
     fn missing_material_library_is_ignored() {
         let (_dir, path) = temp_obj("mat.obj", "mtllib absent.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert_eq!(read_obj(&path).unwrap().indices, vec![[0, 1, 2]]);
+    }
+
+    #[test]
+    fn line_elements_are_strands_and_segments_chain() {
+        let text = "# hair\nv 0 0 0 1 0 0\nv 0 1 0 1 0 0\nv 0 2 0 0 1 0\nv 1 0 0 0 0 1\nv 1 1 0 0 0 1\n\
+                    l 1 2\nl 2 3\nl -2 -1\n";
+        let ObjGeometry::Strands(s) = parse_obj_geometry(text.as_bytes(), Path::new("c.obj")).unwrap() else {
+            panic!("not strands")
+        };
+        // `l 1 2` and `l 2 3` share vertex 2: one strand of three points; `l -2 -1` another.
+        assert_eq!(s.offsets, vec![0, 3, 5]);
+        assert_eq!(s.points[2], [0.0, 2.0, 0.0, 0.0]);
+        assert_eq!(s.colors.as_ref().unwrap()[2], [0.0, 1.0, 0.0]);
+        // Faces make it a mesh, lines or not.
+        let mesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\n";
+        assert!(matches!(parse_obj_geometry(mesh.as_bytes(), Path::new("m.obj")).unwrap(), ObjGeometry::Mesh(_)));
+        for (text, needle) in
+            [("v 0 0 0\nl 1 2\n", "line 2"), ("v 0 0 nan\nl 1 1\n", "line 1"), ("v 0 0 0\nl 1\n", "no segment")]
+        {
+            let e = parse_obj_geometry(text.as_bytes(), Path::new("c.obj")).unwrap_err().to_string();
+            assert!(e.starts_with("c.obj: ") && e.contains(needle), "{text:?}: {e}");
+        }
     }
 }

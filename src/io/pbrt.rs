@@ -1,16 +1,29 @@
-//! pbrt-v4 scenes, the part hair scenes use (the pbrt-v4 file format; Pharr, Jakob and
-//! Humphreys, *Physically Based Rendering*, 4th edition, appendix C and the format's online
-//! reference).
+//! pbrt-v4 and pbrt-v3 scenes, the part hair scenes use (the pbrt-v4 file format; Pharr,
+//! Jakob and Humphreys, *Physically Based Rendering*, 4th edition, appendix C and the
+//! format's online reference; pbrt-v3's, 3rd edition, appendix B).
 //!
 //! Read: `LookAt`, `Translate`, `Scale`, `Rotate`, `Transform`, `ConcatTransform`,
 //! `Identity`, `CoordinateSystem`/`CoordSysTransform`, `ReverseOrientation`,
 //! `AttributeBegin`/`End` (and the older `TransformBegin`/`End`), `Include`/`Import`
 //! (paths relative to the first file's directory, as pbrt resolves them), `Camera
 //! "perspective"` (`fov`, on the shorter image side), `Film` (`xresolution`,
-//! `yresolution`), `Sampler` (`pixelsamples`), `Integrator` (`maxdepth`), `LightSource`
-//! `distant`, `infinite` (constant `L`), `point` and `spot`, `Material` and
-//! `MakeNamedMaterial`/`NamedMaterial` (`hair`, `diffuse`, `dielectric`, `conductor`), and
-//! `Shape` `curve`, `trianglemesh`, `plymesh` and `sphere`.
+//! `yresolution`), `Sampler` (`pixelsamples`), `Integrator`, `LightSource` `distant`,
+//! `infinite`, `point` and `spot`, `Material` and `MakeNamedMaterial`/`NamedMaterial`,
+//! and `Shape` `curve`, `trianglemesh`, `plymesh` and `sphere`.
+//!
+//! **Compressed files.** Any file read (the scene, its includes, PLY meshes) may be gzip
+//! data, recognised by its magic bytes as pbrt does (`geometry/hair.pbrt.gz`).
+//!
+//! **Integrator.** pbrt's path tracers (`path`, `volpath`, `bdpt`, `mlt`, `sppm`,
+//! `simplepath`, ...; `volpath` is pbrt's default) become tress's `path` integrator, whose
+//! depth is pbrt's `maxdepth` (default 5) less one: pbrt counts the first scattering event,
+//! tress the bounces after it. `directlighting` and `whitted` become `direct`; any other
+//! is rendered by path tracing with a warning.
+//!
+//! **Exposure.** pbrt-v4 scales the image by its imaging ratio, exposure time × ISO / 100
+//! (the camera's `shutterclose` − `shutteropen`, default 1, and Film `iso`, default 100);
+//! pbrt-v3 by Film `scale`. Pixel values are linear in the lights' emission, so the import
+//! multiplies every light by that factor.
 //!
 //! **Curves.** Each `Shape "curve"` (`bezier` or `bspline` basis, degree 2 or 3, types
 //! `flat`, `cylinder` and `ribbon` alike) becomes one strand: every segment is sampled at
@@ -20,10 +33,22 @@
 //!
 //! **Hair material.** pbrt's `hair` is the model of Chiang et al. 2016, as is tress's
 //! `physical` material, which takes its parameters: `beta_m`, `beta_n`, `alpha`, `eta`,
-//! and the absorption from `sigma_a` (as the colour Chiang et al. §4.2 maps to it, which
-//! tress maps back), `reflectance` (that colour) or `eumelanin` and `pheomelanin` (1.3 and
-//! 0 when nothing is given, pbrt's default). The melanin concentrations are taken as they
-//! are: both renderers turn them into absorption with the same RGB coefficients.
+//! and the absorption from, in pbrt's order of precedence, `sigma_a` (as the colour
+//! Chiang et al. §4.2 maps to it, which tress maps back), the colour (`reflectance` in v4,
+//! `color` in v3), or `eumelanin` and `pheomelanin` (1.3 and 0 when nothing is given,
+//! pbrt's default). The melanin concentrations are taken as they are: both renderers turn
+//! them into absorption with the same RGB coefficients.
+//!
+//! **Other materials.** pbrt-v4 `diffuse` (`reflectance`) and pbrt-v3 `matte` (`Kd`) are
+//! tress's diffuse material; `dielectric`, `thindielectric` and v3 `glass` (`eta` or
+//! `index`) glass; `conductor`, v3 `mirror` (`Kr`) and `metal` a mirror; layered materials
+//! (`coateddiffuse`, v3 `plastic`, `uber`, `substrate`, ...) their diffuse colour, with a
+//! warning.
+//!
+//! **Lights.** `distant` (`L`, or v4's `illuminance`), `infinite` (constant `L`, or v4's
+//! `illuminance`: E = π L), `point` and `spot` (`I`, or v4's `power`), each times
+//! `scale`. Image-based infinite lights (`filename` in v4, `mapname` in v3) are rendered
+//! as a constant sky, with a warning.
 //!
 //! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
 //! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the
@@ -31,7 +56,9 @@
 //!
 //! Everything else (textures, media, area lights, object instances, other shapes and
 //! cameras) is skipped with one warning per kind; spectra other than `rgb` become grey of
-//! the same scale.
+//! the same scale. Every parameter the import does not read is reported once per
+//! directive and name, with the file and line of its first use and how often it recurs,
+//! as pbrt reports unused parameters.
 
 use super::imported::Imported;
 use crate::error::LoadError;
@@ -41,8 +68,10 @@ use crate::light::Light;
 use crate::scene::{CameraDesc, HairEntry, HairSource, MeshEntry, MeshSource};
 use crate::shading::hair_bsdf::{color_polynomial, Absorption, HairParams, PhysicalHair};
 use crate::shading::Material;
+use crate::world::Integrator;
 use glam::{Affine3A, DMat4, DVec3, Vec3};
-use std::collections::{BTreeSet, HashMap};
+use std::cell::Cell;
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
 
 /// Deepest nesting of `Include`/`Import`.
@@ -67,8 +96,10 @@ pub fn parse_pbrt(text: &str, path: &Path) -> Result<Imported, LoadError> {
     p.finish()
 }
 
+/// The text of a pbrt file, decompressed first when it is gzip data (pbrt reads
+/// `geometry.pbrt.gz` the same way).
 fn read_text(path: &Path) -> Result<String, LoadError> {
-    let bytes = crate::input_file::read(path, crate::input_file::Kind::ImportedScene)?;
+    let bytes = super::gzip::read_file(path, crate::input_file::Kind::ImportedScene)?;
     String::from_utf8(bytes).map_err(|_| LoadError::format(path, "the file is not UTF-8 text"))
 }
 
@@ -184,6 +215,9 @@ struct Param {
     numbers: Vec<f64>,
     strings: Vec<String>,
     line: u32,
+    /// Set when the importer reads the parameter; the others are reported (pbrt itself
+    /// reports parameters nothing used).
+    used: Cell<bool>,
 }
 
 struct Params {
@@ -194,8 +228,25 @@ struct Params {
 type Res<T> = Result<T, (u32, String)>;
 
 impl Params {
+    /// The last parameter called `name`, marked as used.
     fn get(&self, name: &str) -> Option<&Param> {
-        self.list.iter().rev().find(|p| p.name == name)
+        let p = self.list.iter().rev().find(|p| p.name == name)?;
+        p.used.set(true);
+        Some(p)
+    }
+
+    /// True when the list has a parameter `name`, without marking it used.
+    fn has(&self, name: &str) -> bool {
+        self.list.iter().any(|p| p.name == name)
+    }
+
+    /// Marks parameters that change nothing in tress's image as used.
+    fn ignore(&self, names: &[&str]) {
+        for p in &self.list {
+            if names.contains(&p.name.as_str()) {
+                p.used.set(true);
+            }
+        }
     }
 
     fn floats(&self, name: &str) -> Option<&[f64]> {
@@ -264,6 +315,10 @@ impl Params {
                 [v] => Ok(Vec3::splat(*v as f32)),
                 _ => Err((p.line, format!("\"{}\" must be one number", p.name))),
             },
+            "texture" => {
+                warn.insert("textures are not supported: materials use their default values".into());
+                Ok(default)
+            }
             t => Err((p.line, format!("\"{t} {}\" is not a colour", p.name))),
         }
     }
@@ -290,6 +345,14 @@ struct Parser {
     strands: Vec<(usize, StrandSet)>,
     camera_to_world: Option<DMat4>,
     fov: f64,
+    /// pbrt's imaging ratio (Film `iso` / 100 × the camera's exposure time × v3's Film
+    /// `scale`): the factor between scene radiance and pixel values.
+    image_scale: f64,
+    /// The file being read, as messages name it.
+    file_name: String,
+    /// Parameters nothing read, by directive and declaration: where each was first seen
+    /// and how many times.
+    unused: BTreeMap<(String, String), (String, u32, usize)>,
     warnings: BTreeSet<String>,
     /// The files being read, the outermost first, to name an include cycle.
     chain: Vec<PathBuf>,
@@ -315,6 +378,9 @@ impl Parser {
             strands: Vec::new(),
             camera_to_world: None,
             fov: 90.0,
+            image_scale: 1.0,
+            file_name: String::new(),
+            unused: BTreeMap::new(),
             warnings: BTreeSet::new(),
             chain: Vec::new(),
             includes: 0,
@@ -332,6 +398,7 @@ impl Parser {
 
     fn file_body(&mut self, text: &str, path: &Path, depth: usize) -> Result<(), LoadError> {
         let at = |(line, msg): (u32, String)| LoadError::format(path, format!("line {line}: {msg}"));
+        let parent = std::mem::replace(&mut self.file_name, path.display().to_string());
         let mut lex = Lexer::new(text);
         while let Some(t) = lex.next().map_err(at)? {
             if t.kind != Kind::Word {
@@ -370,7 +437,21 @@ impl Parser {
             }
             self.directive(&mut lex, t).map_err(at)?;
         }
+        self.file_name = parent;
         Ok(())
+    }
+
+    /// Notes every parameter of `p` that nothing read, for one warning per directive kind
+    /// and parameter.
+    fn check_used(&mut self, directive: &str, kind: &str, p: &Params) {
+        for q in p.list.iter().filter(|q| !q.used.get()) {
+            let decl = match q.ty.is_empty() {
+                true => q.name.clone(),
+                false => format!("{} {}", q.ty, q.name),
+            };
+            let key = (format!("{directive} \"{kind}\""), decl);
+            self.unused.entry(key).or_insert_with(|| (self.file_name.clone(), q.line, 0)).2 += 1;
+        }
     }
 
     fn directive(&mut self, lex: &mut Lexer, t: Token) -> Res<()> {
@@ -462,37 +543,58 @@ impl Parser {
                 if !(self.fov > 0.0 && self.fov < 180.0) {
                     return Err((line, format!("fov {} is not between 0 and 180", self.fov)));
                 }
+                // pbrt-v4's exposure time is the shutter interval (Pharr et al. 4th ed. §5.4.2).
+                let exposure = p.float("shutterclose", 1.0)? - p.float("shutteropen", 0.0)?;
+                if !(exposure.is_finite() && exposure > 0.0) {
+                    return Err((line, format!("the shutter interval {exposure} must be positive")));
+                }
+                self.image_scale *= exposure;
+                self.check_used("Camera", &kind, &p);
             }
             "Film" => {
-                let (_, p) = named(lex, t)?;
+                let (kind, p) = named(lex, t)?;
                 let (w, h) = (p.int("xresolution", 1280)?, p.int("yresolution", 720)?);
                 if !(1..=65536).contains(&w) || !(1..=65536).contains(&h) {
                     return Err((line, format!("resolution {w}x{h} is out of range")));
                 }
                 self.out.resolution = Some([w as u32, h as u32]);
+                // pbrt-v4's sensor: imaging ratio = exposure time × ISO / 100 (PixelSensor);
+                // pbrt-v3's film multiplies by its `scale`.
+                let (iso, scale) = (p.float("iso", 100.0)?, p.float("scale", 1.0)?);
+                if !(iso.is_finite() && iso > 0.0 && scale.is_finite() && scale > 0.0) {
+                    return Err((line, format!("Film iso {iso} and scale {scale} must be positive")));
+                }
+                self.image_scale *= iso / 100.0 * scale;
+                // Where pbrt writes its image: nothing to do with tress's.
+                p.ignore(&["filename"]);
+                self.check_used("Film", &kind, &p);
             }
             "Sampler" => {
-                let (_, p) = named(lex, t)?;
+                let (kind, p) = named(lex, t)?;
                 if p.get("pixelsamples").is_some() {
                     let n = p.int("pixelsamples", 16)?;
                     self.out.spp = Some(n.clamp(1, 1 << 20) as u32);
                 }
+                // The sampler's seed picks a noise pattern, not a look.
+                p.ignore(&["seed"]);
+                self.check_used("Sampler", &kind, &p);
             }
             "Integrator" => {
-                let (_, p) = named(lex, t)?;
-                if p.get("maxdepth").is_some() {
-                    self.out.max_depth = Some(p.int("maxdepth", 5)?.clamp(0, 64) as u32);
-                }
+                let (kind, p) = named(lex, t)?;
+                self.integrator(&kind, &p)?;
+                self.check_used("Integrator", &kind, &p);
             }
             "Material" => {
                 let (kind, p) = named(lex, t)?;
                 self.state.material = self.material(&kind, &p)?;
+                self.check_used("Material", &kind, &p);
             }
             "MakeNamedMaterial" => {
                 let (name, p) = named(lex, t)?;
                 let kind = p.string("type", "")?;
                 let m = self.material(&kind, &p)?;
                 self.named_materials.insert(name, m);
+                self.check_used("Material", &kind, &p);
             }
             "NamedMaterial" => {
                 let name = string_arg(lex, t)?;
@@ -503,11 +605,15 @@ impl Parser {
             }
             "LightSource" => {
                 let (kind, p) = named(lex, t)?;
-                self.light(&kind, &p)?;
+                if self.light(&kind, &p)? {
+                    self.check_used("LightSource", &kind, &p);
+                }
             }
             "Shape" => {
                 let (kind, p) = named(lex, t)?;
-                self.shape(&kind, &p)?;
+                if self.shape(&kind, &p)? {
+                    self.check_used("Shape", &kind, &p);
+                }
             }
             // Instancing is not supported (an object's shapes are read where they stand),
             // but an object that instances itself, directly or through one it is inside,
@@ -544,28 +650,94 @@ impl Parser {
         self.state.ctm *= m;
     }
 
+    /// The integrator: pbrt's path tracers (`path`, `volpath`, `bdpt`, `mlt`, `sppm`, ...)
+    /// become tress's path tracer, the direct-lighting ones its direct integrator.
+    fn integrator(&mut self, kind: &str, p: &Params) -> Res<()> {
+        let depth = p.int("maxdepth", 5)?.clamp(0, 65) as u32;
+        let integrator = match kind {
+            "path" | "volpath" | "bdpt" | "mlt" | "sppm" | "simplepath" | "simplevolpath" | "lightpath"
+            | "randomwalk" => Integrator::Path,
+            "directlighting" | "whitted" => Integrator::Direct,
+            other => {
+                self.warnings.insert(format!("integrator \"{other}\" is not one tress has: rendered by path tracing"));
+                Integrator::Path
+            }
+        };
+        self.set_integrator(integrator, depth);
+        Ok(())
+    }
+
+    /// pbrt's `maxdepth` counts every scattering event, the first included: a path of
+    /// maxdepth 1 is direct light only, which is tress's path depth 0. For Whitted-style
+    /// integrators both count specular bounces.
+    fn set_integrator(&mut self, integrator: Integrator, maxdepth: u32) {
+        let depth = match integrator {
+            Integrator::Path => {
+                if maxdepth == 0 {
+                    self.warnings
+                        .insert("maxdepth 0 shows only light sources in pbrt: rendered with direct light".into());
+                }
+                maxdepth.saturating_sub(1)
+            }
+            _ => maxdepth,
+        };
+        self.out.integrator = Some(integrator);
+        self.out.max_depth = Some(depth.min(64));
+    }
+
+    /// A material of pbrt-v4 (`diffuse`, `dielectric`, `conductor`, `hair`, ...) or pbrt-v3
+    /// (`matte`, `plastic`, `glass`, `mirror`, `metal`, `hair`, ...): what tress has for it.
     fn material(&mut self, kind: &str, p: &Params) -> Res<usize> {
         let w = &mut self.warnings;
+        let grey = |v: f32| Vec3::splat(v);
+        let approximate = |w: &mut BTreeSet<String>, what: &str| {
+            w.insert(format!("material \"{kind}\" is rendered as {what}"));
+        };
         let m = match kind {
             "hair" => Material::Physical(hair_material(p, w)?),
-            "diffuse" => Material::Diffuse { color: p.color("reflectance", Vec3::splat(0.5), w)? },
-            "dielectric" | "thindielectric" => {
-                let eta = p.float("eta", 1.5)?;
+            "diffuse" => Material::Diffuse { color: p.color("reflectance", grey(0.5), w)? },
+            // pbrt-v3's Lambertian material.
+            "matte" => Material::Diffuse { color: p.color("Kd", grey(0.5), w)? },
+            "coateddiffuse" | "diffusetransmission" => {
+                approximate(w, "its diffuse reflectance");
+                let d = if kind == "coateddiffuse" { 0.5 } else { 0.25 };
+                Material::Diffuse { color: p.color("reflectance", grey(d), w)? }
+            }
+            // pbrt-v3's layered materials: their diffuse part (pbrt-v3's defaults).
+            "plastic" | "uber" | "translucent" | "substrate" | "kdsubsurface" => {
+                approximate(w, "its diffuse colour Kd");
+                let d = if matches!(kind, "substrate" | "kdsubsurface") { 0.5 } else { 0.25 };
+                Material::Diffuse { color: p.color("Kd", grey(d), w)? }
+            }
+            "disney" => {
+                approximate(w, "its diffuse colour");
+                Material::Diffuse { color: p.color("color", grey(0.5), w)? }
+            }
+            "dielectric" | "thindielectric" | "glass" => {
+                // pbrt-v3's glass calls the index of refraction `index`.
+                let eta = match p.has("eta") {
+                    true => p.float("eta", 1.5)?,
+                    false => p.float("index", 1.5)?,
+                };
                 if !(eta.is_finite() && eta >= 1.0) {
                     return Err((p.line, format!("eta {eta} must be at least 1")));
                 }
                 Material::Glass { ior: eta as f32, color: Vec3::ONE }
             }
-            "conductor" => Material::Mirror { color: p.color("reflectance", Vec3::splat(0.9), w)? },
-            "" | "none" | "interface" => Material::Diffuse { color: Vec3::splat(0.5) },
-            other => {
-                w.insert(format!("material \"{other}\" is rendered as its diffuse colour"));
-                Material::Diffuse { color: p.color("reflectance", Vec3::splat(0.5), w)? }
+            "conductor" | "coatedconductor" | "metal" => {
+                if !p.has("reflectance") {
+                    approximate(w, "a grey mirror (tress has no conductor with eta and k)");
+                }
+                Material::Mirror { color: p.color("reflectance", grey(0.9), w)? }
+            }
+            "mirror" => Material::Mirror { color: p.color("Kr", grey(0.9), w)? },
+            "" | "none" | "interface" => Material::Diffuse { color: grey(0.5) },
+            _ => {
+                approximate(w, "its diffuse colour");
+                let name = ["reflectance", "Kd", "color"].into_iter().find(|n| p.has(n)).unwrap_or("reflectance");
+                Material::Diffuse { color: p.color(name, grey(0.5), w)? }
             }
         };
-        if p.list.iter().any(|q| q.ty == "texture") {
-            self.warnings.insert("textures are not supported: materials use their default values".into());
-        }
         let finite = |c: Vec3| c.is_finite() && c.min_element() >= 0.0;
         let ok = match &m {
             Material::Diffuse { color } | Material::Mirror { color } => finite(*color),
@@ -574,11 +746,15 @@ impl Parser {
         if !ok {
             return Err((p.line, format!("material \"{kind}\": colours must be finite and not negative")));
         }
+        // MakeNamedMaterial's `type` is read by the caller.
+        p.ignore(&["type"]);
         self.materials.push(m);
         Ok(self.materials.len() - 1)
     }
 
-    fn light(&mut self, kind: &str, p: &Params) -> Res<()> {
+    /// A light source; false when its kind is skipped (its parameters are then not
+    /// reported one by one).
+    fn light(&mut self, kind: &str, p: &Params) -> Res<bool> {
         let w = &mut self.warnings;
         let scale = p.float("scale", 1.0)? as f32;
         let ctm = self.state.ctm;
@@ -586,42 +762,69 @@ impl Parser {
             let v = p.point3s(name)?.and_then(|v| v.first().copied()).unwrap_or(d);
             Ok(ctm.transform_point3(v).as_vec3())
         };
-        if p.get("power").is_some() || p.get("illuminance").is_some() {
-            w.insert("light `power` and `illuminance` are ignored: lights use L or I times scale".into());
-        }
+        // pbrt-v4's photometric alternatives to `scale` (Pharr et al. 4th ed. §12.1-12.5):
+        // a point light's power spreads over 4π sr, a spot's over its cone, a distant or
+        // infinite light's illuminance is the irradiance it gives a surface facing it.
+        let positive = |name: &str| -> Res<Option<f32>> {
+            match p.has(name) {
+                true => match p.float(name, 0.0)? {
+                    v if v.is_finite() && v > 0.0 => Ok(Some(v as f32)),
+                    v => Err((p.line, format!("light \"{kind}\": {name} {v} must be positive"))),
+                },
+                false => Ok(None),
+            }
+        };
+        // pbrt-v3's lights take `samples` (shadow rays per shading point): noise, not look.
+        p.ignore(&["samples", "nsamples"]);
         let light = match kind {
             "distant" => {
                 let (from, to) = (point("from", DVec3::ZERO)?, point("to", DVec3::Z)?);
                 let direction = (from - to).try_normalize().ok_or((p.line, "distant light: from = to".to_string()))?;
-                Light::Distant { direction, irradiance: p.color("L", Vec3::ONE, w)? * scale }
+                let e = positive("illuminance")?.unwrap_or(1.0);
+                Light::Distant { direction, irradiance: p.color("L", Vec3::ONE, w)? * scale * e }
             }
             "infinite" => {
-                if p.get("filename").is_some() {
+                if p.has("filename") || p.has("mapname") {
+                    p.ignore(&["filename", "mapname"]);
                     w.insert(
                         "image-based infinite lights are rendered as a constant white sky of the same scale".into(),
                     );
                 }
-                Light::Environment { radiance: p.color("L", Vec3::ONE, w)? * scale }
+                // A constant sky of radiance L gives a facing surface E = π L.
+                let e = positive("illuminance")?.map_or(1.0, |e| e / std::f32::consts::PI);
+                Light::Environment { radiance: p.color("L", Vec3::ONE, w)? * scale * e }
             }
             "point" => {
-                Light::Point { position: point("from", DVec3::ZERO)?, intensity: p.color("I", Vec3::ONE, w)? * scale }
+                let k = positive("power")?.map_or(1.0, |phi| phi / (4.0 * std::f32::consts::PI));
+                Light::Point {
+                    position: point("from", DVec3::ZERO)?,
+                    intensity: p.color("I", Vec3::ONE, w)? * scale * k,
+                    decay: 2,
+                }
             }
             "spot" => {
                 let (from, to) = (point("from", DVec3::ZERO)?, point("to", DVec3::Z)?);
                 let direction = (to - from).try_normalize().ok_or((p.line, "spot light: from = to".to_string()))?;
                 let cone = p.float("coneangle", 30.0)?.clamp(0.0, 180.0);
                 let delta = p.float("conedelta", 5.0)?.clamp(0.0, cone);
+                let (cos_inner, cos_outer) =
+                    (((cone - delta) as f32).to_radians().cos(), (cone as f32).to_radians().cos());
+                // pbrt-v4's spot power: I = Φ / (2π (1 − (cos_start + cos_end) / 2)).
+                let k = positive("power")?.map_or(1.0, |phi| {
+                    phi / (2.0 * std::f32::consts::PI * (1.0 - 0.5 * (cos_inner + cos_outer))).max(1e-6)
+                });
                 Light::Spot {
                     position: from,
                     direction,
-                    intensity: p.color("I", Vec3::ONE, w)? * scale,
-                    cos_inner: ((cone - delta) as f32).to_radians().cos(),
-                    cos_outer: (cone as f32).to_radians().cos(),
+                    intensity: p.color("I", Vec3::ONE, w)? * scale * k,
+                    cos_inner,
+                    cos_outer,
+                    decay: 2,
                 }
             }
             other => {
                 w.insert(format!("light \"{other}\" is not supported: skipped"));
-                return Ok(());
+                return Ok(false);
             }
         };
         let bad = match &light {
@@ -635,10 +838,11 @@ impl Parser {
             return Err((p.line, format!("light \"{kind}\": its emission must be finite and not negative")));
         }
         self.out.lights.push(light);
-        Ok(())
+        Ok(true)
     }
 
-    fn shape(&mut self, kind: &str, p: &Params) -> Res<()> {
+    /// A shape; false when its kind is skipped.
+    fn shape(&mut self, kind: &str, p: &Params) -> Res<bool> {
         let ctm = self.state.ctm;
         let transform = Affine3A::from_mat4(ctm.as_mat4());
         if !transform.is_finite() {
@@ -667,7 +871,9 @@ impl Parser {
             "plymesh" => {
                 let file = p.string("filename", "")?;
                 let path = self.dir.join(&file);
-                let mesh = super::ply::read_ply(&path).map_err(|e| (p.line, e.to_string()))?;
+                // pbrt reads `.ply.gz` too.
+                let bytes = super::gzip::read_file(&path, crate::input_file::Kind::Geometry).map_err(|e| (p.line, e.to_string()))?;
+                let mesh = super::ply::parse_ply(&bytes, &path).map_err(|e| (p.line, e.to_string()))?;
                 self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
             }
             "sphere" => {
@@ -680,12 +886,30 @@ impl Parser {
             }
             other => {
                 self.warnings.insert(format!("shape \"{other}\" is not supported: skipped"));
+                return Ok(false);
             }
         }
-        Ok(())
+        Ok(true)
     }
 
     fn finish(mut self) -> Result<Imported, LoadError> {
+        if self.out.integrator.is_none() {
+            // pbrt's default integrator is a path tracer with maxdepth 5.
+            self.set_integrator(Integrator::Path, 5);
+        }
+        if self.image_scale != 1.0 {
+            let k = self.image_scale as f32;
+            for l in &mut self.out.lights {
+                scale_emission(l, k);
+            }
+        }
+        for ((directive, decl), (file, line, count)) in std::mem::take(&mut self.unused) {
+            let more = match count {
+                1 => String::new(),
+                n => format!(" (and {} more times)", n - 1),
+            };
+            self.warnings.insert(format!("{file}: line {line}: {directive}: parameter \"{decl}\" is not used{more}"));
+        }
         for (m, set) in std::mem::take(&mut self.strands) {
             self.out.hair.push(HairEntry {
                 source: HairSource::Inline(set),
@@ -728,6 +952,22 @@ impl Parser {
         }
         self.out.warnings.extend(self.warnings);
         Ok(self.out)
+    }
+}
+
+/// Multiplies a light's emission by `k` (pbrt's imaging ratio: every pixel value is linear
+/// in the emission, so scaling the lights scales the image).
+fn scale_emission(l: &mut Light, k: f32) {
+    match l {
+        Light::Distant { irradiance: c, .. }
+        | Light::Point { intensity: c, .. }
+        | Light::Spot { intensity: c, .. }
+        | Light::Quad { radiance: c, .. }
+        | Light::Sphere { radiance: c, .. }
+        | Light::Sun { radiance: c, .. }
+        | Light::Environment { radiance: c } => *c *= k,
+        // The import makes no map lights: pbrt's maps become constant skies.
+        Light::EnvironmentMap(_) => {}
     }
 }
 
@@ -804,11 +1044,12 @@ fn rest_params(lex: &mut Lexer) -> Res<Params> {
                     numbers: vec![],
                     strings: vec![],
                     line,
+                    used: Cell::new(false),
                 });
                 continue;
             }
         };
-        let mut p = Param { ty, name, numbers: Vec::new(), strings: Vec::new(), line };
+        let mut p = Param { ty, name, numbers: Vec::new(), strings: Vec::new(), line, used: Cell::new(false) };
         let value = |tok: Token, p: &mut Param| -> Res<()> {
             match tok.kind {
                 Kind::Str => p.strings.push(tok.text.to_string()),
@@ -839,6 +1080,8 @@ fn rest_params(lex: &mut Lexer) -> Res<Params> {
 /// A curve's strand in world space: (position, radius) points.
 fn curve(p: &Params, ctm: &DMat4) -> Res<Vec<(Vec3, f32)>> {
     let cps = p.point3s("P")?.ok_or((p.line, "curve without \"point3 P\"".to_string()))?;
+    // Flat, cylinder and ribbon curves are all drawn as tubes.
+    p.ignore(&["type"]);
     let degree = p.int("degree", 3)?;
     let basis = p.string("basis", "bezier")?;
     let split = p.int("splitdepth", 3)?.clamp(0, MAX_SPLIT_DEPTH as i64) as u32;
@@ -961,8 +1204,9 @@ fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
             w.insert("sigma_a beyond what a colour can carry (very dark hair) is clamped".into());
         }
         Absorption::Color(c.clamp(Vec3::ZERO, Vec3::ONE))
-    } else if p.get("reflectance").is_some() {
-        Absorption::Color(p.color("reflectance", Vec3::splat(0.5), w)?.clamp(Vec3::ZERO, Vec3::ONE))
+    } else if let Some(name) = ["reflectance", "color"].into_iter().find(|n| p.has(n)) {
+        // pbrt-v4 calls the colour `reflectance`, pbrt-v3 `color`.
+        Absorption::Color(p.color(name, Vec3::splat(0.5), w)?.clamp(Vec3::ZERO, Vec3::ONE))
     } else {
         let melanin = |name: &str, d: f64| -> Res<f32> { Ok(p.float(name, d)? as f32) };
         let given = p.get("eumelanin").is_some() || p.get("pheomelanin").is_some();

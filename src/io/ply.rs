@@ -1,12 +1,24 @@
-//! Stanford PLY meshes (ascii and binary, either byte order), read with `ply-rs-bw`.
+//! Stanford PLY meshes and polyline strands (ascii and binary, either byte order), read
+//! with `ply-rs-bw`.
 //!
-//! What is read:
+//! What is read for a mesh:
 //! - the `vertex` element's `x`, `y`, `z` (any numeric type; doubles are narrowed to `f32`),
 //!   with optional normals `nx`, `ny`, `nz` and texture coordinates `u`, `v` (also spelled
 //!   `s`, `t`, `texture_u`, `texture_v`, `texture_s`, `texture_t`);
 //! - the `face` element's `vertex_indices` (or `vertex_index`) list of any integer type;
 //!   polygons become triangle fans and faces with fewer than three vertices are skipped,
 //!   like points and lines in OBJ files.
+//!
+//! A file without a `face` element but with one of these is strands, as hair-capture tools
+//! write them ([`read_ply_geometry`]):
+//! - a `strand` element (also `strands`, `curve`, `curves`, `hair`) whose one integer
+//!   property is each strand's vertex count, the strands' vertices following each other in
+//!   the `vertex` element; or whose integer list property lists each strand's vertices;
+//! - an `edge` element of `vertex1`, `vertex2` pairs, chained into polylines (a vertex has
+//!   at most one edge in and one out).
+//!
+//! Strand vertices may carry a `radius` (or a diameter: `width`, `thickness`) and a colour
+//! (`red`, `green`, `blue`: 0..255 as bytes, 0..1 as floats).
 //!
 //! Every other element and property is parsed and dropped. Before any element data is
 //! read, the counts in the header are checked against the bytes that follow it, using the
@@ -26,12 +38,17 @@ use ply_rs_bw::ply::{
 
 use super::obj::check_mesh;
 use crate::error::LoadError;
-use crate::geometry::TriangleMesh;
+use crate::geometry::{StrandSet, TriangleMesh};
 
 /// Pairs of names under which the two texture coordinates appear in the wild.
 const UV_NAMES: [(&str, &str); 4] = [("u", "v"), ("s", "t"), ("texture_u", "texture_v"), ("texture_s", "texture_t")];
 /// Names of the face element's index list.
 const INDEX_NAMES: [&str; 2] = ["vertex_indices", "vertex_index"];
+
+/// Names of the element listing strands.
+const STRAND_NAMES: [&str; 5] = ["strand", "strands", "curve", "curves", "hair"];
+/// Names of a strand vertex's colour channels.
+const COLOR_NAMES: [&str; 3] = ["red", "green", "blue"];
 
 /// One vertex as read from the file: only the properties tress uses.
 #[derive(Clone, Copy, Default)]
@@ -39,6 +56,8 @@ struct PlyVertex {
     position: [f32; 3],
     normal: [f32; 3],
     uv: [f32; 2],
+    radius: f32,
+    color: [f32; 3],
 }
 
 impl PlyVertex {
@@ -47,6 +66,14 @@ impl PlyVertex {
         // then reports as non-finite.
         let value = value as f32;
         let slot = match name {
+            "radius" => &mut self.radius,
+            "width" | "thickness" => {
+                self.radius = 0.5 * value;
+                return PropertyAccessResult::Set;
+            }
+            "red" => &mut self.color[0],
+            "green" => &mut self.color[1],
+            "blue" => &mut self.color[2],
             "x" => &mut self.position[0],
             "y" => &mut self.position[1],
             "z" => &mut self.position[2],
@@ -70,7 +97,11 @@ impl PropertyAccess for PlyVertex {
         self.set(name, value.into())
     }
     fn set_uchar(&mut self, name: &str, value: u8) -> PropertyAccessResult {
-        self.set(name, value.into())
+        // Byte colours run 0..255.
+        match COLOR_NAMES.contains(&name) {
+            true => self.set(name, f64::from(value) / 255.0),
+            false => self.set(name, value.into()),
+        }
     }
     fn set_short(&mut self, name: &str, value: i16) -> PropertyAccessResult {
         self.set(name, value.into())
@@ -89,6 +120,84 @@ impl PropertyAccess for PlyVertex {
     }
     fn set_double(&mut self, name: &str, value: f64) -> PropertyAccessResult {
         self.set(name, value)
+    }
+}
+
+/// One entry of a strand or edge element: its integer scalars in file order (a vertex
+/// count, or an edge's two vertices) and its integer list (a strand's vertices).
+#[derive(Default)]
+struct PlyLink {
+    scalars: Vec<i64>,
+    list: Vec<i64>,
+    /// Set when a value is not an integer.
+    fractional: bool,
+}
+
+impl PlyLink {
+    fn scalar(&mut self, v: i64) -> PropertyAccessResult {
+        self.scalars.push(v);
+        PropertyAccessResult::Set
+    }
+    fn list<T: Copy + Into<i64>>(&mut self, values: &[T]) -> PropertyAccessResult {
+        self.list = values.iter().map(|&v| v.into()).collect();
+        PropertyAccessResult::Set
+    }
+    fn float(&mut self, v: f64) -> PropertyAccessResult {
+        match v.fract() == 0.0 && v.abs() < 1e15 {
+            true => self.scalar(v as i64),
+            false => {
+                self.fractional = true;
+                PropertyAccessResult::Set
+            }
+        }
+    }
+}
+
+impl PropertyAccess for PlyLink {
+    fn new() -> Self {
+        PlyLink::default()
+    }
+    fn set_char(&mut self, _: &str, value: i8) -> PropertyAccessResult {
+        self.scalar(value.into())
+    }
+    fn set_uchar(&mut self, _: &str, value: u8) -> PropertyAccessResult {
+        self.scalar(value.into())
+    }
+    fn set_short(&mut self, _: &str, value: i16) -> PropertyAccessResult {
+        self.scalar(value.into())
+    }
+    fn set_ushort(&mut self, _: &str, value: u16) -> PropertyAccessResult {
+        self.scalar(value.into())
+    }
+    fn set_int(&mut self, _: &str, value: i32) -> PropertyAccessResult {
+        self.scalar(value.into())
+    }
+    fn set_uint(&mut self, _: &str, value: u32) -> PropertyAccessResult {
+        self.scalar(value.into())
+    }
+    fn set_float(&mut self, _: &str, value: f32) -> PropertyAccessResult {
+        self.float(value.into())
+    }
+    fn set_double(&mut self, _: &str, value: f64) -> PropertyAccessResult {
+        self.float(value)
+    }
+    fn set_list_char(&mut self, _: &str, value: Vec<i8>) -> PropertyAccessResult {
+        self.list(&value)
+    }
+    fn set_list_uchar(&mut self, _: &str, value: Vec<u8>) -> PropertyAccessResult {
+        self.list(&value)
+    }
+    fn set_list_short(&mut self, _: &str, value: Vec<i16>) -> PropertyAccessResult {
+        self.list(&value)
+    }
+    fn set_list_ushort(&mut self, _: &str, value: Vec<u16>) -> PropertyAccessResult {
+        self.list(&value)
+    }
+    fn set_list_int(&mut self, _: &str, value: Vec<i32>) -> PropertyAccessResult {
+        self.list(&value)
+    }
+    fn set_list_uint(&mut self, _: &str, value: Vec<u32>) -> PropertyAccessResult {
+        self.list(&value)
     }
 }
 
@@ -161,6 +270,39 @@ impl PropertyAccess for Skip {
 /// element with a vertex index list, if a face refers to a vertex that does not exist, if a
 /// position, normal or texture coordinate is not finite, or if it has no triangles.
 pub fn read_ply(path: &Path) -> Result<TriangleMesh, LoadError> {
+    read_ply_geometry(path)?.into_mesh(path)
+}
+
+/// What a PLY file holds: a mesh, or polyline strands.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PlyGeometry {
+    /// Triangles (polygons fanned).
+    Mesh(TriangleMesh),
+    /// Strands; `widths` tells whether the vertices gave a radius (otherwise every radius
+    /// is 0, for the caller to choose).
+    Strands {
+        /// The strands, in file order.
+        strands: StrandSet,
+        /// True when the vertices carry `radius`, `width` or `thickness`.
+        widths: bool,
+    },
+}
+
+impl PlyGeometry {
+    fn into_mesh(self, path: &Path) -> Result<TriangleMesh, LoadError> {
+        match self {
+            PlyGeometry::Mesh(m) => Ok(m),
+            PlyGeometry::Strands { .. } => {
+                Err(LoadError::invalid(path, "the ply file holds strands, not triangles: use it as hair"))
+            }
+        }
+    }
+}
+
+/// Reads a PLY file of either kind: a mesh as [`read_ply`] does, or polyline strands (see
+/// the module documentation), validated (finite positions, radii and colours; indices and
+/// counts that match the vertices).
+pub fn read_ply_geometry(path: &Path) -> Result<PlyGeometry, LoadError> {
     let file = crate::input_file::open(path, crate::input_file::Kind::Geometry)?;
     let file_len = file.metadata().map_err(|e| LoadError::io(path, "read the file", e))?.len();
     load(Reader::new(BufReader::new(file)), file_len, path)
@@ -184,11 +326,17 @@ pub fn read_ply_counts(path: &Path) -> Result<(u64, u64), LoadError> {
 
 /// Decodes the bytes of a PLY file like [`read_ply`]; `path` is used only in messages.
 pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, LoadError> {
+    parse_ply_geometry(bytes, path)?.into_mesh(path)
+}
+
+/// Decodes the bytes of a PLY file like [`read_ply_geometry`]; `path` is used only in
+/// messages.
+pub fn parse_ply_geometry(bytes: &[u8], path: &Path) -> Result<PlyGeometry, LoadError> {
     load(Reader::new(std::io::Cursor::new(bytes)), bytes.len() as u64, path)
 }
 
-/// Parses a PLY file of `file_len` bytes from `reader` and validates the mesh.
-fn load<R: BufRead + Seek>(mut reader: Reader<R>, file_len: u64, path: &Path) -> Result<TriangleMesh, LoadError> {
+/// Parses a PLY file of `file_len` bytes from `reader` and validates what it holds.
+fn load<R: BufRead + Seek>(mut reader: Reader<R>, file_len: u64, path: &Path) -> Result<PlyGeometry, LoadError> {
     let malformed = |e: ParseError| LoadError::format(path, format!("malformed ply file: {}", tidy(&e)));
 
     // The library's own message for a wrong signature is a parser-state dump; say it plainly.
@@ -201,10 +349,11 @@ fn load<R: BufRead + Seek>(mut reader: Reader<R>, file_len: u64, path: &Path) ->
     // element data starts.
     let header_len = reader.get_mut().stream_position().map_err(|e| LoadError::io(path, "read the file", e))?;
     check_counts(&header, file_len.saturating_sub(header_len)).map_err(|m| LoadError::format(path, m))?;
-    let (has_normals, has_uvs) = check_layout(&header).map_err(|m| LoadError::format(path, m))?;
+    let layout = check_layout(&header).map_err(|m| LoadError::format(path, m))?;
 
     let mut vertices = Vec::new();
     let mut faces = Vec::new();
+    let mut links = Vec::new();
     for (name, def) in &header.elements {
         match name.as_str() {
             "vertex" => {
@@ -215,11 +364,22 @@ fn load<R: BufRead + Seek>(mut reader: Reader<R>, file_len: u64, path: &Path) ->
                 faces =
                     Parser::<PlyFace>::new().read_payload_for_element(&mut reader, def, &header).map_err(malformed)?
             }
+            n if matches!(layout, Layout::Strands { element, .. } if element == n) => {
+                links =
+                    Parser::<PlyLink>::new().read_payload_for_element(&mut reader, def, &header).map_err(malformed)?
+            }
             _ => {
                 Parser::<Skip>::new().read_payload_for_element(&mut reader, def, &header).map_err(malformed)?;
             }
         }
     }
+    let (has_normals, has_uvs) = match layout {
+        Layout::Mesh { normals, uvs } => (normals, uvs),
+        Layout::Strands { element, widths, colors } => {
+            return strands(path, &vertices, &links, element, colors)
+                .map(|strands| PlyGeometry::Strands { strands, widths })
+        }
+    };
 
     let vertex_count = u32::try_from(vertices.len()).map_err(|_| {
         LoadError::invalid(path, format!("{} vertices is more than a mesh can index (2^32)", vertices.len()))
@@ -251,7 +411,96 @@ fn load<R: BufRead + Seek>(mut reader: Reader<R>, file_len: u64, path: &Path) ->
         indices,
     };
     check_mesh(path, &mesh)?;
-    Ok(mesh)
+    Ok(PlyGeometry::Mesh(mesh))
+}
+
+/// The strands of `element`'s entries (`links`) over `vertices`: vertex counts, vertex
+/// lists, or edges chained into polylines.
+fn strands(
+    path: &Path,
+    vertices: &[PlyVertex],
+    links: &[PlyLink],
+    element: &str,
+    colors: bool,
+) -> Result<StrandSet, LoadError> {
+    let bad = |m: String| LoadError::invalid(path, m);
+    let n = vertices.len();
+    let vertex = |i: i64, what: &dyn Fn() -> String| -> Result<usize, LoadError> {
+        usize::try_from(i)
+            .ok()
+            .filter(|&i| i < n)
+            .ok_or_else(|| bad(format!("{} refers to vertex {i}, but there are only {n} vertices", what())))
+    };
+    if let Some(k) = links.iter().position(|l| l.fractional) {
+        return Err(bad(format!("{element} {k} has a value that is not an integer")));
+    }
+    let mut chains: Vec<Vec<usize>> = Vec::new();
+    if element == "edge" {
+        // Each vertex has at most one edge out and one in; chains start where none comes in.
+        let (mut next, mut has_prev) = (vec![usize::MAX; n], vec![false; n]);
+        for (k, l) in links.iter().enumerate() {
+            let [a, b] = l.scalars[..] else {
+                return Err(bad(format!("edge {k} must have two vertex indices (vertex1, vertex2)")));
+            };
+            let what = || format!("edge {k}");
+            let (a, b) = (vertex(a, &what)?, vertex(b, &what)?);
+            if next[a] != usize::MAX || has_prev[b] || a == b {
+                return Err(bad(format!("edge {k} ({a} to {b}) branches or loops: edges must form open polylines")));
+            }
+            (next[a], has_prev[b]) = (b, true);
+        }
+        let mut seen = 0;
+        for start in (0..n).filter(|&v| next[v] != usize::MAX && !has_prev[v]) {
+            let mut chain = vec![start];
+            while let Some(&v) = chain.last().filter(|&&v| next[v] != usize::MAX) {
+                chain.push(next[v]);
+            }
+            seen += chain.len() - 1;
+            chains.push(chain);
+        }
+        if seen != links.len() {
+            return Err(bad("some edges form closed loops: edges must form open polylines".into()));
+        }
+    } else if links.iter().all(|l| l.list.is_empty() && l.scalars.len() == 1) {
+        let mut start = 0usize;
+        for (k, l) in links.iter().enumerate() {
+            let count = usize::try_from(l.scalars[0])
+                .ok()
+                .filter(|&c| c <= n - start)
+                .ok_or_else(|| bad(format!("{element} {k} has {} vertices, past the {n} vertices", l.scalars[0])))?;
+            chains.push((start..start + count).collect());
+            start += count;
+        }
+        if start != n {
+            return Err(bad(format!("the {element} vertex counts add up to {start}, but there are {n} vertices")));
+        }
+    } else {
+        for (k, l) in links.iter().enumerate() {
+            let what = || format!("{element} {k}");
+            chains.push(l.list.iter().map(|&i| vertex(i, &what)).collect::<Result<_, _>>()?);
+        }
+    }
+    let mut set = StrandSet::new();
+    let mut rgb = Vec::new();
+    for chain in &chains {
+        set.push_strand(chain.iter().map(|&i| (Vec3::from(vertices[i].position), vertices[i].radius)));
+        rgb.extend(chain.iter().map(|&i| vertices[i].color));
+    }
+    if let Some(i) = set.points.iter().position(|p| !p.iter().all(|v| v.is_finite()) || p[3] < 0.0) {
+        return Err(bad(format!(
+            "strand point {i} has a coordinate or radius that is not finite, or a negative radius"
+        )));
+    }
+    if colors {
+        if rgb.iter().flatten().any(|c| !(c.is_finite() && *c >= 0.0)) {
+            return Err(bad("strand colours must be finite and not negative".into()));
+        }
+        set.colors = Some(rgb);
+    }
+    if set.segment_count() == 0 {
+        return Err(bad(format!("the ply file's {element} element holds no strand of two or more vertices")));
+    }
+    Ok(set)
 }
 
 /// Flattens a `ply-rs-bw` error onto one line in our style: its messages contain tabs and
@@ -334,9 +583,17 @@ fn check_counts(header: &Header, available: u64) -> Result<(), String> {
     Ok(())
 }
 
-/// Checks the header has the elements and properties a mesh needs; returns whether normals
-/// and texture coordinates are present.
-fn check_layout(header: &Header) -> Result<(bool, bool), String> {
+/// What a header describes.
+#[derive(Clone, Copy)]
+enum Layout<'h> {
+    /// Faces, with or without normals and texture coordinates.
+    Mesh { normals: bool, uvs: bool },
+    /// Strands listed by the element named `element`.
+    Strands { element: &'h str, widths: bool, colors: bool },
+}
+
+/// Checks the header has the elements and properties a mesh or strands need.
+fn check_layout(header: &Header) -> Result<Layout<'_>, String> {
     let vertex = header.elements.get("vertex").ok_or("no 'vertex' element in the header")?;
     let scalar =
         |name: &str| matches!(vertex.properties.get(name), Some(p) if matches!(p.data_type, PropertyType::Scalar(_)));
@@ -348,6 +605,22 @@ fn check_layout(header: &Header) -> Result<(bool, bool), String> {
     let has_normals = ["nx", "ny", "nz"].iter().all(|n| scalar(n));
     let has_uvs = UV_NAMES.iter().any(|(u, v)| scalar(u) && scalar(v));
 
+    if !header.elements.contains_key("face") {
+        let strand = STRAND_NAMES.iter().chain(&["edge"]).find_map(|n| header.elements.get_key_value(*n));
+        if let Some((element, def)) = strand {
+            let integers = def.properties.values().all(|p| match &p.data_type {
+                PropertyType::Scalar(t) | PropertyType::List(_, t) => {
+                    !matches!(t, ScalarType::Float | ScalarType::Double)
+                }
+            });
+            if def.properties.is_empty() || !integers {
+                return Err(format!("the '{element}' element must have integer properties (vertex counts or indices)"));
+            }
+            let widths = ["radius", "width", "thickness"].iter().any(|n| scalar(n));
+            let colors = COLOR_NAMES.iter().all(|n| scalar(n));
+            return Ok(Layout::Strands { element: element.as_str(), widths, colors });
+        }
+    }
     let face = header.elements.get("face").ok_or("no 'face' element in the header, so no triangles")?;
     let list = INDEX_NAMES
         .iter()
@@ -357,7 +630,7 @@ fn check_layout(header: &Header) -> Result<(bool, bool), String> {
         PropertyType::List(_, ScalarType::Float | ScalarType::Double) | PropertyType::Scalar(_) => {
             Err(format!("the face property '{}' must be a list of integers, not {:?}", list.name, list.data_type))
         }
-        PropertyType::List(..) => Ok((has_normals, has_uvs)),
+        PropertyType::List(..) => Ok(Layout::Mesh { normals: has_normals, uvs: has_uvs }),
     }
 }
 
@@ -538,5 +811,66 @@ mod tests {
         let mesh = read_ply(&path).unwrap();
         assert_eq!(mesh.indices, vec![[0, 1, 2]]);
         assert_eq!(mesh.uvs.unwrap()[2], [0.5, 1.0]);
+    }
+
+    fn strands_of(bytes: &[u8]) -> (StrandSet, bool) {
+        match parse_ply_geometry(bytes, Path::new("hair.ply")).unwrap() {
+            PlyGeometry::Strands { strands, widths } => (strands, widths),
+            PlyGeometry::Mesh(_) => panic!("a mesh"),
+        }
+    }
+
+    const STRAND_HEADER: &str = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n\
+                                 property float z\n";
+
+    #[test]
+    fn strands_by_vertex_counts_with_widths_and_byte_colours() {
+        let text = format!(
+            "{STRAND_HEADER}property float thickness\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n\
+             element strand 2\nproperty int nvertices\nend_header\n\
+             0 0 0 0.2 255 0 0\n0 1 0 0.2 255 0 0\n0 2 0 0.1 255 0 0\n1 0 0 0.4 0 0 51\n1 1 0 0.4 0 0 51\n2\n3\n"
+        );
+        // Two vertices then three: counts are in file order, the vertices follow each other.
+        let text = text.replace("2\n3\n", "3\n2\n");
+        let (s, widths) = strands_of(text.as_bytes());
+        assert!(widths);
+        assert_eq!(s.offsets, vec![0, 3, 5]);
+        assert_eq!(s.points[2], [0.0, 2.0, 0.0, 0.05]);
+        assert_eq!(s.points[4], [1.0, 1.0, 0.0, 0.2]);
+        let c = s.colors.as_ref().unwrap();
+        assert_eq!((c[0], c[3]), ([1.0, 0.0, 0.0], [0.0, 0.0, 0.2]));
+        // As a mesh it is refused, plainly.
+        let e = parse_ply(text.as_bytes(), Path::new("hair.ply")).unwrap_err().to_string();
+        assert!(e.contains("strands, not triangles"), "{e}");
+    }
+
+    #[test]
+    fn strands_by_vertex_lists_and_by_chained_edges() {
+        let points = "0 0 0\n0 1 0\n0 2 0\n1 0 0\n1 1 0\n";
+        let lists = format!(
+            "{STRAND_HEADER}element curve 2\nproperty list uchar int vertex_indices\nend_header\n{points}3 0 1 2\n2 4 3\n"
+        );
+        let (s, widths) = strands_of(lists.as_bytes());
+        assert!(!widths && s.points.iter().all(|p| p[3] == 0.0));
+        assert_eq!(s.offsets, vec![0, 3, 5]);
+        assert_eq!(s.points[3][..3], [1.0, 1.0, 0.0]);
+        // Edges in any order chain into polylines from the vertex no edge enters.
+        let edges = format!(
+            "{STRAND_HEADER}element edge 3\nproperty int vertex1\nproperty int vertex2\nend_header\n{points}1 2\n3 4\n0 1\n"
+        );
+        let (s, _) = strands_of(edges.as_bytes());
+        assert_eq!(s.offsets, vec![0, 3, 5]);
+        assert_eq!(s.points[2][..3], [0.0, 2.0, 0.0]);
+        // Broken strand data: errors naming the file and the cause.
+        for (text, needle) in [
+            (lists.replace("3 0 1 2", "3 0 1 9"), "refers to vertex 9"),
+            (edges.replace("3 4\n", "0 4\n"), "branches"),
+            (edges.replace("1 2\n3 4\n0 1\n", "0 1\n1 2\n2 0\n"), "closed loops"),
+            (format!("{STRAND_HEADER}element strand 1\nproperty int n\nend_header\n{points}4\n"), "add up to 4"),
+            (format!("{STRAND_HEADER}element strand 1\nproperty float n\nend_header\n{points}4\n"), "integer"),
+        ] {
+            let e = parse_ply_geometry(text.as_bytes(), Path::new("hair.ply")).unwrap_err().to_string();
+            assert!(e.starts_with("hair.ply: ") && e.contains(needle), "{needle}: {e}");
+        }
     }
 }

@@ -44,6 +44,17 @@ pub struct Overrides {
     /// Render every strand: turn level of detail off (`[render] lod = false`).
     #[arg(long)]
     pub no_lod: bool,
+    /// Draw every strand this wide, in scene units (for files whose strands have no
+    /// width, or the wrong one).
+    #[arg(long, value_name = "WIDTH", value_parser = parse_width)]
+    pub hair_width: Option<f32>,
+}
+
+fn parse_width(s: &str) -> Result<f32, String> {
+    match s.parse::<f32>() {
+        Ok(w) if w.is_finite() && w > 0.0 => Ok(w),
+        _ => Err(format!("`{s}` is not a positive width")),
+    }
 }
 
 fn parse_resolution(s: &str) -> Result<(u32, u32), String> {
@@ -93,6 +104,9 @@ pub fn load_with_warnings(
         Some(path) => tress::io::read_scene(path, frame)?,
         None => (tress::demo::description(o.demo_strands, 1), Vec::new()),
     };
+    if let Some(w) = o.hair_width {
+        tress::io::override_hair_width(&mut desc, w)?;
+    }
     apply(&mut desc, o);
     desc.validate().map_err(|e| in_scene(scene, e))?;
     Ok((desc, notes))

@@ -14,7 +14,9 @@
 //! - **nurbsCurve**: the `.cc` block (degree, spans, form, rational, knots, CVs), sampled
 //!   by de Boor's algorithm at its knots and [`SAMPLES_PER_SPAN`] points per span. A
 //!   follicle's start curve is a guide of its hair system; other open curves are drawn as
-//!   hairs [`FREE_CURVE_WIDTH`] wide; closed curves (rig controls) are skipped.
+//!   hairs as wide as the file's first hair system draws its hairs (`hairWidth`), or,
+//!   without one, [`RELATIVE_WIDTH`] of the scene's size (reported); closed curves (rig
+//!   controls) are skipped.
 //! - **hairSystem** with its **follicles** (`follicle.oha → hairSystem.ih[i]`): the render
 //!   attributes of spec section 5 by short or long name, ramps included, and one guide per
 //!   follicle with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
@@ -26,9 +28,11 @@
 //! - **camera**: the first renderable perspective camera other than the default `persp`
 //!   (else `persp`), field of view from focal length (`.fl`), film aperture (`.cap`) and
 //!   film fit (`.ff`); image size from `defaultResolution`.
-//! - **lights**: directional, point, spot, ambient and area lights, colour × intensity. A
-//!   Maya intensity `I` lights a white Lambert surface facing it to `I` (Maya's shading has
-//!   no 1/π), so tress's irradiance is `π I`.
+//! - **lights**: directional, point, spot, ambient and area lights, colour × intensity
+//!   (× 2^`aiExposure` when Arnold's exposure is set). A Maya intensity `I` lights a white
+//!   Lambert surface facing it to `I` (Maya's shading has no 1/π), so tress's irradiance is
+//!   `π I`. Point and spot lights fall off with their decay rate (`.de`): none (Maya's
+//!   default: the same light at every distance), linear, quadratic or cubic.
 //!
 //! Every other node type is skipped, all of them together in one warning.
 
@@ -36,7 +40,7 @@ pub mod fur_nodes;
 pub mod parse;
 
 use self::parse::{Face, Graph, Value};
-use super::imported::Imported;
+use super::imported::{relative_width, Imported, RELATIVE_WIDTH};
 use crate::error::LoadError;
 use crate::geometry::curve::Nurbs;
 use crate::geometry::{StrandSet, TriangleMesh};
@@ -53,9 +57,6 @@ use std::path::Path;
 
 /// Linear pieces per span when sampling a curve of degree 2 or more.
 pub const SAMPLES_PER_SPAN: usize = 8;
-/// Diameter of the hairs drawn for curves that belong to no hair system: Maya's default
-/// `hairWidth`.
-pub const FREE_CURVE_WIDTH: f32 = 0.01;
 /// Most control points one curve may have.
 const MAX_CVS: usize = 1 << 22;
 
@@ -592,7 +593,29 @@ impl<'g> Reader<'g> {
                 continue;
             }
             if let Some(p) = self.curve_points(n)? {
-                set.push_strand(p.into_iter().map(|q| (q, 0.5 * FREE_CURVE_WIDTH)));
+                set.push_strand(p.into_iter().map(|q| (q, 0.0)));
+            }
+        }
+        if set.strand_count() > 0 {
+            let system = self.of_kind("hairSystem").next().map(|n| hair_attributes(self.g, n)).transpose()?;
+            let width = match system {
+                Some(h) => h.hair_width * h.hair_width_scale.eval(0.0),
+                None => {
+                    let mut b = self.out.bounds();
+                    for p in &set.points {
+                        b = b.grow(glam::Vec3A::new(p[0], p[1], p[2]));
+                    }
+                    let w = relative_width(&b);
+                    self.out.warnings.push(format!(
+                        "{} curve(s) outside hair systems have no width: drawn {w:.3e} wide ({} of the scene's size)",
+                        set.strand_count(),
+                        RELATIVE_WIDTH
+                    ));
+                    w
+                }
+            };
+            for p in &mut set.points {
+                p[3] = 0.5 * width;
             }
         }
         if closed > 0 {
@@ -712,7 +735,9 @@ impl<'g> Reader<'g> {
             }
             let node = &g.nodes[n];
             let color = vec3(g, n, &["cl", "color"], &[["cr", "colorR"], ["cg", "colorG"], ["cb", "colorB"]], 1.0)?;
-            let intensity = scalar(g, n, &["in", "intensity"], 1.0)?;
+            // Arnold's exposure (stops) multiplies Maya's intensity.
+            let exposure = scalar(g, n, &["ai_exposure", "aiExposure"], 0.0)?;
+            let intensity = scalar(g, n, &["in", "intensity"], 1.0)? * exposure.clamp(-64.0, 64.0).exp2();
             let power = (color * intensity).as_vec3();
             if !(power.is_finite() && power.min_element() >= 0.0) {
                 return Err((
@@ -729,14 +754,18 @@ impl<'g> Reader<'g> {
                 "directionalLight" => Light::Distant { direction: -along, irradiance: power * PI },
                 "ambientLight" => Light::Environment { radiance: power },
                 "pointLight" | "spotLight" => {
-                    if scalar(g, n, &["de", "decayRate"], 0.0)? != 2.0 {
-                        self.out.warnings.push(format!(
-                            "light {}: Maya's decay rate is not quadratic; tress's point lights always fall off as 1/d²",
-                            node.name
-                        ));
+                    // Decay rate 0 (No Decay, the default), 1 linear, 2 quadratic, 3 cubic:
+                    // the intensity lights a surface facing the light at distance d to I / d^rate.
+                    let rate = scalar(g, n, &["de", "decayRate"], 0.0)?;
+                    if !(rate.fract() == 0.0 && (0.0..=3.0).contains(&rate)) {
+                        return Err((node.line, format!("light {}: decay rate {rate} is not 0, 1, 2 or 3", node.name)));
                     }
+                    let decay = rate as u8;
+                    // Maya measures the distance in centimetres, its internal unit, whatever
+                    // unit the file is in: I / (c d)^rate = (I c^-rate) / d^rate.
+                    let power = power * (g.centimeters_per_unit as f32).powi(-i32::from(decay));
                     if kind == "pointLight" {
-                        Light::Point { position, intensity: power * PI }
+                        Light::Point { position, intensity: power * PI, decay }
                     } else {
                         let cone = scalar(g, n, &["ca", "coneAngle"], 40.0)?.clamp(0.0, 180.0);
                         let penumbra = scalar(g, n, &["pa", "penumbraAngle"], 0.0)?.clamp(-90.0, 90.0);
@@ -749,6 +778,7 @@ impl<'g> Reader<'g> {
                             intensity: power * PI,
                             cos_inner: (inner as f32).to_radians().cos(),
                             cos_outer: (outer as f32).to_radians().cos(),
+                            decay,
                         }
                     }
                 }

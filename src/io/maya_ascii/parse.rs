@@ -3,9 +3,9 @@
 //! A `.ma` file is a MEL script of a few commands (docs/maya-fur-hair.md section 6):
 //! `createNode TYPE -n NAME -p PARENT;` makes a node and selects it, `setAttr ".attr"
 //! values;` sets an attribute of the selected node (or of `node.attr`), `connectAttr
-//! "a.out" "b.in";` connects two plugs, `select -ne NAME;` selects an existing node and
-//! `currentUnit -a radian;` changes the angle unit. Every other command (`requires`,
-//! `fileInfo`, `relationship`, `rename -uid`, ...) is skipped.
+//! "a.out" "b.in";` connects two plugs, `select -ne NAME;` selects an existing node, and
+//! `currentUnit -a radian -l meter;` sets the angle and linear units. Every other command
+//! (`requires`, `fileInfo`, `relationship`, `rename -uid`, ...) is skipped.
 //!
 //! Statements end with `;`; words are separated by white space; strings are double quoted
 //! with backslash escapes; `//` and `/* */` are comments. Values are kept per `setAttr` and
@@ -234,6 +234,9 @@ pub struct Graph {
     pub connections: Vec<Connection>,
     /// Factor from the file's angle unit to radians (`currentUnit -a`).
     pub angle_to_radians: f64,
+    /// Centimetres (Maya's internal unit) in one of the file's linear units
+    /// (`currentUnit -l`): the file's values are in that unit.
+    pub centimeters_per_unit: f64,
     by_name: HashMap<String, Vec<usize>>,
     /// Indices into `connections` by destination node and by source node, in file order,
     /// so that a node's connections cost their number, not the file's (`inputs_of`).
@@ -249,7 +252,7 @@ const MAX_WORDS: usize = 50_000_000;
 
 /// Reads the whole text; an error carries its line.
 pub fn parse(text: &str) -> Result<Graph, (u32, String)> {
-    let mut g = Graph { angle_to_radians: std::f64::consts::PI / 180.0, ..Graph::default() };
+    let mut g = Graph { angle_to_radians: std::f64::consts::PI / 180.0, centimeters_per_unit: 1.0, ..Graph::default() };
     let mut lexer = Lexer::new(text);
     let mut current: Option<usize> = None;
     while let Some(words) = lexer.statement()? {
@@ -282,6 +285,19 @@ pub fn parse(text: &str) -> Result<Graph, (u32, String)> {
                         Some(u) => return Err((line, format!("unknown angle unit `{u}`"))),
                         None => return Err((line, "`currentUnit -a` without a unit".into())),
                     }
+                }
+                if let Some(i) = words.iter().position(|w| w.text == "-l" || w.text == "-linear") {
+                    g.centimeters_per_unit = match words.get(i + 1).map(|w| w.text) {
+                        Some("millimeter" | "mm") => 0.1,
+                        Some("centimeter" | "cm") => 1.0,
+                        Some("meter" | "m") => 100.0,
+                        Some("kilometer" | "km") => 1e5,
+                        Some("inch" | "in") => 2.54,
+                        Some("foot" | "ft") => 30.48,
+                        Some("yard" | "yd") => 91.44,
+                        Some(u) => return Err((line, format!("unknown linear unit `{u}`"))),
+                        None => return Err((line, "`currentUnit -l` without a unit".into())),
+                    };
                 }
             }
             _ => {}

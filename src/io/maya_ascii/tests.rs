@@ -276,6 +276,76 @@ fn procedural_meshes_maya_default_material_and_shading_groups() {
     assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::new(0.5, 0.0, 0.0) });
 }
 
+/// A point light 4 units above the origin with the given `setAttr`s, and the irradiance it
+/// gives a surface facing it at the origin.
+fn point_light_irradiance(head: &str, attrs: &str) -> f32 {
+    let s = read(&format!(
+        "{head}createNode transform -n l;\nsetAttr \".t\" -type \"double3\" 0 4 0;\ncreateNode pointLight -n ls -p l;\n\
+         setAttr \".in\" 2;\n{attrs}"
+    ))
+    .unwrap();
+    let Light::Point { position, .. } = s.lights[0] else { panic!("{:?}", s.lights) };
+    assert!(close(position, Vec3::new(0.0, 4.0, 0.0)));
+    s.lights[0].sample(Vec3::ZERO, Some(Vec3::Y), (0.5, 0.5)).unwrap().value.x
+}
+
+#[test]
+fn point_and_spot_lights_decay_as_maya_says_no_decay_by_default() {
+    // Maya's intensity 2 lights a facing white Lambert to 2 at any distance without decay
+    // (its default), 2 / d with linear decay, 2 / d² with quadratic (tress: π times that).
+    let e = |attrs: &str| point_light_irradiance("", attrs) / PI;
+    assert!((e("") - 2.0).abs() < 1e-5, "{}", e(""));
+    assert!((e("setAttr \".de\" 1;\n") - 0.5).abs() < 1e-5);
+    assert!((e("setAttr \".de\" 2;\n") - 2.0 / 16.0).abs() < 1e-5);
+    assert!((e("setAttr \".de\" 3;\n") - 2.0 / 64.0).abs() < 1e-6);
+    // Arnold's exposure doubles per stop.
+    assert!((e("setAttr \".ai_exposure\" 2;\n") - 8.0).abs() < 1e-4);
+    let spot =
+        read("createNode transform -n l;\nsetAttr \".t\" -type \"double3\" 0 0 5;\ncreateNode spotLight -n ls -p l;\n")
+            .unwrap();
+    let s = spot.lights[0].sample(Vec3::ZERO, Some(Vec3::Z), (0.5, 0.5)).unwrap();
+    assert!((s.value.x / PI - 1.0).abs() < 1e-5, "{}", s.value.x);
+    let e = read("createNode pointLight -n p;\nsetAttr \".de\" 7;\n").unwrap_err().to_string();
+    assert!(e.contains("line 1") && e.contains("decay rate 7"), "{e}");
+}
+
+#[test]
+fn the_linear_unit_sets_the_distance_maya_decays_light_over() {
+    // Maya measures the decay distance in centimetres: 4 m is 400 cm.
+    let e = |head: &str| point_light_irradiance(head, "setAttr \".de\" 2;\n") / PI;
+    assert!((e("currentUnit -l meter -a degree;\n") - 2.0 / (400.0f32 * 400.0)).abs() < 1e-9);
+    assert!((e("currentUnit -l millimeter;\n") - 2.0 / (0.4f32 * 0.4)).abs() < 1e-4);
+    assert!((e("currentUnit -l centimeter;\n") - 2.0 / 16.0).abs() < 1e-6);
+    // No decay is the same in every unit.
+    assert!((point_light_irradiance("currentUnit -l inch;\n", "") / PI - 2.0).abs() < 1e-5);
+    let e = read("currentUnit -l parsec;\n").unwrap_err().to_string();
+    assert!(e.contains("line 1") && e.contains("parsec"), "{e}");
+}
+
+#[test]
+fn free_curves_take_the_hair_systems_width_or_one_relative_to_the_scene() {
+    let curve = |name: &str, scale: f64| {
+        format!(
+            "createNode transform -n {name};\ncreateNode nurbsCurve -n {name}s -p {name};\n\
+             setAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 {scale} 0;\n"
+        )
+    };
+    let radii = |s: &Imported| {
+        let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
+        set.points.iter().map(|p| p[3]).collect::<Vec<_>>()
+    };
+    // A groom modelled in millimetres (a curve 300 units long): hairs a thousandth of the
+    // scene wide, not an absolute 0.01, and said so.
+    let s = read(&curve("c", 300.0)).unwrap();
+    assert!(radii(&s).iter().all(|r| (r - 0.5 * 0.3).abs() < 1e-4), "{:?}", radii(&s));
+    assert!(s.warnings.iter().any(|w| w.contains("1 curve(s)") && w.contains("no width")), "{:?}", s.warnings);
+    let s = read(&curve("c", 3.0)).unwrap();
+    assert!(radii(&s).iter().all(|r| (r - 0.5 * 0.003).abs() < 1e-6));
+    // With a hair system in the file, its hair width.
+    let s = read(&format!("{}createNode hairSystem -n hs;\nsetAttr \".hwd\" 0.04;\n", curve("c", 300.0))).unwrap();
+    assert!(radii(&s).iter().all(|r| (r - 0.02).abs() < 1e-7), "{:?}", radii(&s));
+}
+
 #[test]
 fn malformed_lines_are_errors_naming_file_and_line() {
     for (text, line) in [

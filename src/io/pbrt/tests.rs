@@ -32,7 +32,9 @@ fn read(text: &str) -> Result<Imported, LoadError> {
 #[test]
 fn a_hair_scene_reads_camera_film_lights_curves_and_meshes() {
     let s = read(SCENE).unwrap();
-    assert_eq!((s.resolution, s.spp, s.max_depth), (Some([64, 48]), Some(4), Some(3)));
+    // volpath with maxdepth 3: path tracing with two bounces after the first hit.
+    assert_eq!((s.resolution, s.spp, s.max_depth), (Some([64, 48]), Some(4), Some(2)));
+    assert_eq!(s.integrator, Some(Integrator::Path));
     let c = s.camera.as_ref().unwrap();
     assert!((c.eye - Vec3::new(0.0, 0.0, 5.0)).length() < 1e-5 && (c.vfov - 30.0).abs() < 1e-5);
     assert_eq!(s.lights.len(), 2);
@@ -142,4 +144,205 @@ fn sigma_a_round_trips_through_the_physical_material() {
     let Material::Physical(h) = &s.hair[0].material else { panic!() };
     let sigma = h.sigma_a(None);
     assert!((sigma - Vec3::new(0.2, 0.5, 1.1)).abs().max_element() < 1e-4, "{sigma}");
+}
+
+fn gzip(bytes: &[u8]) -> Vec<u8> {
+    use std::io::Write;
+    let mut e = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
+    e.write_all(bytes).unwrap();
+    e.finish().unwrap()
+}
+
+#[test]
+fn gzipped_includes_and_ply_meshes_are_read_by_their_magic_bytes() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("geometry")).unwrap();
+    let curves = "Shape \"curve\" \"point3 P\" [0 0 0 0 1 0 0 2 0 0 3 0] \"float width\" 0.1\n".repeat(3);
+    std::fs::write(dir.path().join("geometry/hair.pbrt.gz"), gzip(curves.as_bytes())).unwrap();
+    let ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n\
+               element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    // A gzipped PLY under a name that does not say so.
+    std::fs::write(dir.path().join("geometry/tri.ply"), gzip(ply.as_bytes())).unwrap();
+    let main = dir.path().join("scene.pbrt");
+    std::fs::write(
+        &main,
+        "WorldBegin\nMaterial \"hair\"\nInclude \"geometry/hair.pbrt.gz\"\nShape \"plymesh\" \"string filename\" \"geometry/tri.ply\"\n",
+    )
+    .unwrap();
+    let s = read_pbrt(&main).unwrap();
+    let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
+    assert_eq!(set.strand_count(), 3);
+    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    assert_eq!(m.indices.len(), 1);
+    // A damaged gzip include names the included file.
+    let mut bad = gzip(curves.as_bytes());
+    bad.truncate(bad.len() - 9);
+    std::fs::write(dir.path().join("geometry/hair.pbrt.gz"), bad).unwrap();
+    let e = read_pbrt(&main).unwrap_err().to_string();
+    assert!(e.contains("hair.pbrt.gz") && e.contains("gzip"), "{e}");
+}
+
+#[test]
+fn integrators_map_to_path_tracing_with_pbrt_depth_or_to_direct_light() {
+    let depth = |text: &str| {
+        let s = read(text).unwrap();
+        (s.integrator.unwrap(), s.max_depth.unwrap(), s.warnings)
+    };
+    for kind in ["path", "volpath", "bdpt", "mlt", "sppm", "simplepath"] {
+        let (i, d, w) = depth(&format!("Integrator \"{kind}\" \"integer maxdepth\" 32\n"));
+        assert_eq!((i, d), (Integrator::Path, 31), "{kind}");
+        assert!(w.is_empty(), "{kind}: {w:?}");
+    }
+    // pbrt's default: volpath (v4) or path (v3) with maxdepth 5.
+    assert_eq!(depth("WorldBegin\n").0, Integrator::Path);
+    assert_eq!(depth("WorldBegin\n").1, 4);
+    // maxdepth 1 is direct light only.
+    assert_eq!(depth("Integrator \"path\" \"integer maxdepth\" 1\n").1, 0);
+    assert_eq!(depth("Integrator \"directlighting\"\n").0, Integrator::Direct);
+    assert_eq!(depth("Integrator \"whitted\" \"integer maxdepth\" 3\n").1, 3);
+    let (i, _, w) = depth("Integrator \"ambientocclusion\"\n");
+    assert_eq!(i, Integrator::Path);
+    assert!(w.iter().any(|w| w.contains("\"ambientocclusion\"")), "{w:?}");
+    // The description renders with them.
+    let (d, _) = read("Integrator \"bdpt\" \"integer maxdepth\" 8\n").unwrap().into_description();
+    assert_eq!((d.settings.integrator, d.settings.max_depth), (Integrator::Path, 7));
+}
+
+#[test]
+fn film_iso_shutter_and_v3_scale_scale_every_light_as_pbrt_scales_the_image() {
+    let lights =
+        "WorldBegin\nLightSource \"distant\" \"rgb L\" [1 2 3]\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n\
+                  LightSource \"point\" \"rgb I\" [4 4 4]\n";
+    let at = |head: &str| read(&format!("{head}{lights}")).unwrap().lights;
+    let plain = at("");
+    assert_eq!(plain[0], Light::Distant { direction: -Vec3::Z, irradiance: Vec3::new(1.0, 2.0, 3.0) });
+    // Imaging ratio = exposure time × ISO / 100.
+    for (head, k) in [
+        ("Film \"rgb\" \"float iso\" 400\n", 4.0),
+        ("Camera \"perspective\" \"float shutteropen\" 0 \"float shutterclose\" 0.5\n", 0.5),
+        ("Film \"rgb\" \"float iso\" 200\nCamera \"perspective\" \"float shutterclose\" 0.25\n", 0.5),
+        ("Film \"image\" \"float scale\" 3\n", 3.0),
+    ] {
+        let scaled = at(head);
+        for (a, b) in plain.iter().zip(&scaled) {
+            let (mut a, b) = (a.clone(), b.clone());
+            scale_emission(&mut a, k);
+            assert_eq!(a, b, "{head}");
+        }
+    }
+    let e = read("Film \"rgb\" \"float iso\" -1\n").unwrap_err().to_string();
+    assert!(e.contains("line 1") && e.contains("iso"), "{e}");
+}
+
+#[test]
+fn photometric_light_parameters_follow_pbrt_v4() {
+    let s =
+        read("LightSource \"point\" \"float power\" 100\nLightSource \"distant\" \"float illuminance\" 3\n").unwrap();
+    let Light::Point { intensity, .. } = s.lights[0] else { panic!() };
+    assert!((intensity.x - 100.0 / (4.0 * std::f32::consts::PI)).abs() < 1e-4, "{intensity}");
+    let Light::Distant { irradiance, .. } = s.lights[1] else { panic!() };
+    assert_eq!(irradiance, Vec3::splat(3.0));
+}
+
+fn hair_of(text: &str) -> (HairParams, Vec<String>) {
+    let s = read(&format!("{text}\nShape \"curve\" \"point3 P\" [0 0 0 0 1 0 0 2 0 0 3 0]\n")).unwrap();
+    let Material::Physical(h) = &s.hair[0].material else { panic!("{text}") };
+    (*h.params(), s.warnings)
+}
+
+#[test]
+fn every_hair_parametrization_of_pbrt_v3_and_v4() {
+    // v3 calls the colour `color`, v4 `reflectance`; "color" is v3's synonym of "rgb".
+    for text in [
+        "Material \"hair\" \"rgb color\" [0.6 0.4 0.2]",
+        "Material \"hair\" \"color color\" [0.6 0.4 0.2]",
+        "Material \"hair\" \"rgb reflectance\" [0.6 0.4 0.2]",
+    ] {
+        let (h, w) = hair_of(text);
+        assert_eq!(h.absorption, Absorption::Color(Vec3::new(0.6, 0.4, 0.2)), "{text}");
+        assert!(w.is_empty(), "{text}: {w:?}");
+    }
+    // Melanin: the other concentration defaults to 0; neither given is pbrt's 1.3 brown.
+    let melanin = |text: &str| hair_of(text).0.absorption;
+    assert_eq!(
+        melanin("Material \"hair\" \"float pheomelanin\" 0.8"),
+        Absorption::Melanin { eumelanin: 0.0, pheomelanin: 0.8 }
+    );
+    assert_eq!(
+        melanin("Material \"hair\" \"float eumelanin\" 8"),
+        Absorption::Melanin { eumelanin: 8.0, pheomelanin: 0.0 }
+    );
+    assert_eq!(melanin("Material \"hair\""), Absorption::Melanin { eumelanin: 1.3, pheomelanin: 0.0 });
+    // The roughnesses, tilt and index of refraction, v3 or v4 alike.
+    let (h, _) =
+        hair_of("Material \"hair\" \"float beta_m\" 0.1 \"float beta_n\" 0.7 \"float alpha\" 0 \"float eta\" 1.6");
+    assert_eq!((h.beta_m, h.beta_n, h.alpha_degrees, h.eta), (0.1, 0.7, 0.0, 1.6));
+    // sigma_a wins over a colour, as in pbrt, and the ignored colour is reported.
+    let (h, w) = hair_of("Material \"hair\" \"rgb sigma_a\" [0.3 0.3 0.3] \"rgb color\" [0.9 0.1 0.1]");
+    let Absorption::Color(c) = h.absorption else { panic!() };
+    assert!((c.x - c.y).abs() < 1e-6 && c.x < 0.9, "{c}");
+    assert!(w.iter().any(|w| w.contains("\"rgb color\" is not used")), "{w:?}");
+}
+
+#[test]
+fn diffuse_colours_of_v3_and_v4_materials() {
+    let mesh = "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0]\n";
+    let material = |m: &str| {
+        let s = read(&format!("WorldBegin\n{m}\n{mesh}")).unwrap();
+        (s.meshes[0].material.clone(), s.warnings)
+    };
+    let rgb = Vec3::new(0.1, 0.5, 0.9);
+    for m in [
+        "Material \"matte\" \"rgb Kd\" [0.1 0.5 0.9]",
+        "Material \"matte\" \"color Kd\" [0.1 0.5 0.9]",
+        "Material \"diffuse\" \"rgb reflectance\" [0.1 0.5 0.9]",
+        "MakeNamedMaterial \"m\" \"string type\" \"matte\" \"rgb Kd\" [0.1 0.5 0.9]\nNamedMaterial \"m\"",
+    ] {
+        let (got, w) = material(m);
+        assert_eq!(got, Material::Diffuse { color: rgb }, "{m}");
+        assert!(w.is_empty(), "{m}: {w:?}");
+    }
+    // pbrt-v3's defaults: matte 0.5, plastic 0.25.
+    assert_eq!(material("Material \"matte\"").0, Material::Diffuse { color: Vec3::splat(0.5) });
+    let (plastic, w) = material("Material \"plastic\" \"rgb Kd\" [0.1 0.5 0.9] \"rgb Ks\" [1 1 1]");
+    assert_eq!(plastic, Material::Diffuse { color: rgb });
+    assert!(w.iter().any(|w| w.contains("\"plastic\" is rendered as its diffuse colour Kd")), "{w:?}");
+    assert!(w.iter().any(|w| w.contains("\"rgb Ks\" is not used")), "{w:?}");
+    assert_eq!(material("Material \"glass\" \"float index\" 1.33").0, Material::Glass { ior: 1.33, color: Vec3::ONE });
+    assert_eq!(
+        material("Material \"mirror\" \"rgb Kr\" [0.5 0.5 0.5]").0,
+        Material::Mirror { color: Vec3::splat(0.5) }
+    );
+    // A textured colour falls back to the default, with a warning, not an error.
+    let (m, w) = material("Material \"matte\" \"texture Kd\" \"checks\"");
+    assert_eq!(m, Material::Diffuse { color: Vec3::splat(0.5) });
+    assert!(w.iter().any(|w| w.contains("textures")), "{w:?}");
+}
+
+#[test]
+fn unused_and_unknown_parameters_are_reported_once_with_file_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("spheres.pbrt"),
+        "Shape \"sphere\" \"float radius\" 1 \"float zmin\" -0.5\n\nShape \"sphere\" \"float zmin\" 0 \"float bogus\" 2\n",
+    )
+    .unwrap();
+    let main = dir.path().join("main.pbrt");
+    std::fs::write(
+        &main,
+        "Film \"rgb\" \"string filename\" \"out.exr\" \"float maxcomponentvalue\" 10\nWorldBegin\nInclude \"spheres.pbrt\"\n",
+    )
+    .unwrap();
+    let s = read_pbrt(&main).unwrap();
+    let sub = dir.path().join("spheres.pbrt").display().to_string();
+    let of = |needle: &str| s.warnings.iter().filter(|w| w.contains(needle)).cloned().collect::<Vec<_>>();
+    assert_eq!(
+        of("zmin"),
+        [format!("{sub}: line 1: Shape \"sphere\": parameter \"float zmin\" is not used (and 1 more times)")]
+    );
+    assert_eq!(of("bogus"), [format!("{sub}: line 3: Shape \"sphere\": parameter \"float bogus\" is not used")]);
+    assert_eq!(of("maxcomponentvalue").len(), 1);
+    assert!(of("maxcomponentvalue")[0].starts_with(&format!("{}: line 1: Film \"rgb\"", main.display())));
+    // Parameters tress reads, and the output file name, are not reported.
+    assert!(of("radius").is_empty() && of("filename").is_empty(), "{:?}", s.warnings);
 }

@@ -271,7 +271,7 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<Light, String> {
         LightToml::Point { position, intensity } => {
             check("position", &position, ANY)?;
             check("intensity", &intensity, 0.0)?;
-            Light::Point { position: position.into(), intensity: intensity.into() }
+            Light::Point { position: position.into(), intensity: intensity.into(), decay: 2 }
         }
         LightToml::Spot { position, target, intensity, inner_angle, outer_angle } => {
             check("position", &position, ANY)?;
@@ -288,6 +288,7 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<Light, String> {
                 intensity: intensity.into(),
                 cos_inner: inner_angle.to_radians().cos(),
                 cos_outer: outer_angle.to_radians().cos(),
+                decay: 2,
             }
         }
         LightToml::Quad { corner, edge_u, edge_v, radiance } => {

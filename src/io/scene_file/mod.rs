@@ -70,15 +70,14 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             false => Err(invalid(format!("{name} has a value that is not a finite number"))),
         }
     };
-    let c = &scene.camera;
-    let animated = !c.key.is_empty()
+    let animated = scene.camera.as_ref().is_some_and(|c| !c.key.is_empty())
         || scene
             .mesh
             .iter()
             .filter_map(|m| m.file.as_ref())
             .chain(scene.hair.iter().map(|h| &h.file))
             .any(|f| has_pattern(f));
-    let frame_warning = frame.and_then(|f| frame_warning(c, animated, f));
+    let frame_warning = frame.and_then(|f| scene.camera.as_ref().and_then(|c| frame_warning(c, animated, f)));
     let frame = match (frame, animated) {
         (None, true) => {
             return Err(invalid(
@@ -88,10 +87,16 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         }
         (frame, _) => frame.unwrap_or(0),
     };
-    let (eye, target, vfov) = camera_at(c, frame).map_err(|m| invalid(format!("camera: {m}")))?;
-    for (key, v) in [("eye", &eye[..]), ("target", &target[..]), ("up", &c.up[..]), ("vfov", &[vfov][..])] {
-        finite(&format!("camera `{key}`"), v)?;
-    }
+    let camera = match &scene.camera {
+        Some(c) => {
+            let (eye, target, vfov) = camera_at(c, frame).map_err(|m| invalid(format!("camera: {m}")))?;
+            for (key, v) in [("eye", &eye[..]), ("target", &target[..]), ("up", &c.up[..]), ("vfov", &[vfov][..])] {
+                finite(&format!("camera `{key}`"), v)?;
+            }
+            Some(CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov })
+        }
+        None => None,
+    };
     let r = &scene.render;
     let defaults = RenderSettings::default();
     let integrator = match r.integrator.as_deref() {
@@ -180,6 +185,16 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         let file = base.join(&imp.file);
         let mut imported = crate::io::read_imported(&file).map_err(|e| what(e.to_string()))?;
         imported.transform(&transform(&imp.transform).map_err(what)?);
+        let positive = |name: &str, v: Option<f32>| match v {
+            Some(v) if !(v.is_finite() && v > 0.0) => Err(what(format!("`{name}` must be a positive number"))),
+            _ => Ok(v),
+        };
+        if let Some(w) = positive("width", imp.width)? {
+            imported.set_hair_width(w);
+        }
+        if let Some(k) = positive("radius_scale", imp.radius_scale)? {
+            imported.scale_hair_radius(k);
+        }
         warnings.extend(imported.warnings.iter().map(|w| format!("{}: {w}", file.display())));
         if imp.lights {
             lights.append(&mut imported.lights);
@@ -190,8 +205,8 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         hair.append(&mut imported.hair);
         hair_systems.append(&mut imported.hair_systems);
     }
-    let desc = Description {
-        camera: CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov },
+    let mut desc = Description {
+        camera: camera.clone().unwrap_or_default(),
         settings,
         lights,
         meshes,
@@ -199,6 +214,11 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         hair_systems,
         fur: furs,
     };
+    if camera.is_none() {
+        let bounds = crate::io::description_bounds(&desc).map_err(|e| invalid(e.to_string()))?;
+        desc.camera = crate::io::imported::framing_camera(&bounds);
+        warnings.push("the scene has no [camera]: framing the geometry from the front".into());
+    }
     desc.validate().map_err(|e| invalid(e.to_string()))?;
     Ok((desc, warnings))
 }

@@ -46,7 +46,8 @@ impl serde::de::Expected for Items {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct SceneToml {
-    pub(super) camera: CameraToml,
+    /// Without one, the camera frames the geometry.
+    pub(super) camera: Option<CameraToml>,
     #[serde(default)]
     pub(super) render: RenderToml,
     #[serde(default)]
@@ -73,6 +74,10 @@ pub(super) struct ImportToml {
     pub(super) transform: TransformToml,
     #[serde(default)]
     pub(super) lights: bool,
+    /// Every strand this wide (strand sets and hair systems).
+    pub(super) width: Option<f32>,
+    /// Every strand's radius multiplied by this.
+    pub(super) radius_scale: Option<f32>,
 }
 
 #[derive(Deserialize)]

@@ -75,8 +75,8 @@ fn unknown_key_is_an_error_naming_file_and_key() {
 fn wrong_type_and_missing_field_are_errors() {
     let e = parse("[render]\nspp = \"many\"\n").unwrap_err().to_string();
     assert!(e.contains("dir/test.toml") && e.contains("spp"), "{e}");
-    let e = scene("[render]\nspp = 4\n", Path::new("s.toml")).unwrap_err().to_string();
-    assert!(e.contains("camera"), "{e}");
+    let e = scene("[camera]\neye = [0, 0, 1]\n", Path::new("s.toml")).unwrap_err().to_string();
+    assert!(e.contains("camera") && e.contains("target"), "{e}");
     let e = parse("[[light]]\ntype = \"laser\"\n").unwrap_err().to_string();
     assert!(e.contains("laser"), "{e}");
 }
