@@ -47,8 +47,9 @@
 //!
 //! **Lights.** `distant` (`L`, or v4's `illuminance`), `infinite` (constant `L`, or v4's
 //! `illuminance`: E = π L), `point` and `spot` (`I`, or v4's `power`), each times
-//! `scale`. Image-based infinite lights (`filename` in v4, `mapname` in v3) are rendered
-//! as a constant sky, with a warning.
+//! `scale`. Image-based infinite lights (`filename` in v4, `mapname` in v3; OpenEXR or
+//! PFM) are rendered as a constant sky of the map's mean radiance ([`sky`]), with a
+//! warning.
 //!
 //! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
 //! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the
@@ -784,15 +785,39 @@ impl Parser {
                 Light::Distant { direction, irradiance: p.color("L", Vec3::ONE, w)? * scale * e }
             }
             "infinite" => {
-                if p.has("filename") || p.has("mapname") {
-                    p.ignore(&["filename", "mapname"]);
-                    w.insert(
-                        "image-based infinite lights are rendered as a constant white sky of the same scale".into(),
-                    );
-                }
+                // An image map (v4 `filename`, equal-area; v3 `mapname`, lat-long) stands as
+                // a constant sky of its mean radiance.
+                let map = match (p.has("filename"), p.has("mapname")) {
+                    (true, _) => Some((p.string("filename", "")?, sky::Projection::EqualArea)),
+                    (_, true) => Some((p.string("mapname", "")?, sky::Projection::LatLong)),
+                    _ => None,
+                };
+                let base = match map {
+                    Some((file, projection)) => {
+                        let path = self.dir.join(&file);
+                        match sky::mean_radiance(&path, projection) {
+                            Ok(mean) => {
+                                w.insert(format!(
+                                    "{}: image-based infinite light rendered as a constant sky of the map's mean \
+                                     radiance ({:.3}, {:.3}, {:.3})",
+                                    path.display(),
+                                    mean.x,
+                                    mean.y,
+                                    mean.z
+                                ));
+                                mean
+                            }
+                            Err(e) => {
+                                w.insert(format!("{e}: the infinite light is rendered as a constant white sky"));
+                                Vec3::ONE
+                            }
+                        }
+                    }
+                    None => Vec3::ONE,
+                };
                 // A constant sky of radiance L gives a facing surface E = π L.
                 let e = positive("illuminance")?.map_or(1.0, |e| e / std::f32::consts::PI);
-                Light::Environment { radiance: p.color("L", Vec3::ONE, w)? * scale * e }
+                Light::Environment { radiance: base * p.color("L", Vec3::ONE, w)? * scale * e }
             }
             "point" => {
                 let k = positive("power")?.map_or(1.0, |phi| phi / (4.0 * std::f32::consts::PI));
@@ -872,7 +897,8 @@ impl Parser {
                 let file = p.string("filename", "")?;
                 let path = self.dir.join(&file);
                 // pbrt reads `.ply.gz` too.
-                let bytes = super::gzip::read_file(&path, crate::input_file::Kind::Geometry).map_err(|e| (p.line, e.to_string()))?;
+                let bytes = super::gzip::read_file(&path, crate::input_file::Kind::Geometry)
+                    .map_err(|e| (p.line, e.to_string()))?;
                 let mesh = super::ply::parse_ply(&bytes, &path).map_err(|e| (p.line, e.to_string()))?;
                 self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
             }
@@ -1225,6 +1251,8 @@ fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
     params.validate().map_err(|e| (p.line, format!("hair material: {e}")))?;
     Ok(PhysicalHair::new(params))
 }
+
+mod sky;
 
 #[cfg(test)]
 mod tests;

@@ -346,3 +346,25 @@ fn unused_and_unknown_parameters_are_reported_once_with_file_and_line() {
     // Parameters tress reads, and the output file name, are not reported.
     assert!(of("radius").is_empty() && of("filename").is_empty(), "{:?}", s.warnings);
 }
+
+#[test]
+fn image_infinite_lights_become_a_sky_of_their_maps_mean_radiance() {
+    let dir = tempfile::tempdir().unwrap();
+    // A 2 × 2 PFM map: one pixel (4, 8, 12), the rest black.
+    let mut map = b"PF\n2 2\n-1.0\n".to_vec();
+    for v in [4.0f32, 8.0, 12.0].into_iter().chain([0.0; 9]) {
+        map.extend(v.to_le_bytes());
+    }
+    std::fs::write(dir.path().join("sky.pfm"), map).unwrap();
+    let main = dir.path().join("s.pbrt");
+    std::fs::write(&main, "Film \"rgb\" \"float iso\" 200\nWorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 0.5\n").unwrap();
+    let s = read_pbrt(&main).unwrap();
+    // Mean (1, 2, 3) × scale 0.5 × imaging ratio 2.
+    assert_eq!(s.lights, [Light::Environment { radiance: Vec3::new(1.0, 2.0, 3.0) }]);
+    assert!(s.warnings.iter().any(|w| w.contains("sky.pfm") && w.contains("mean radiance")), "{:?}", s.warnings);
+    // A missing map: a white sky, said so, not an error.
+    std::fs::write(&main, "WorldBegin\nLightSource \"infinite\" \"string mapname\" \"gone.exr\"\n").unwrap();
+    let s = read_pbrt(&main).unwrap();
+    assert_eq!(s.lights, [Light::Environment { radiance: Vec3::ONE }]);
+    assert!(s.warnings.iter().any(|w| w.contains("gone.exr") && w.contains("white sky")), "{:?}", s.warnings);
+}
