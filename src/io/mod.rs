@@ -155,7 +155,7 @@ pub enum ReadSceneError {
 }
 
 /// Reads any scene `tress render` takes: a reference scene directory (`scene.json`), a
-/// Maya ASCII, pbrt-v4 or USD text file (by extension), or a scene TOML at `frame`.
+/// Maya ASCII, pbrt, USD text or raw .hair, .ply or .obj file (by extension), or a scene TOML at `frame`.
 /// Returns the description and the reader's warnings, each prefixed with the file's name.
 pub fn read_scene(path: &Path, frame: Option<u32>) -> Result<(crate::scene::Description, Vec<String>), ReadSceneError> {
     read_scene_with(path, &ImportOptions { frame, camera: None })
