@@ -5,6 +5,7 @@
 //! covering a new format is one file here plus a line in [`ALL`] and a fuzz target.
 
 pub mod exr;
+pub mod gzip;
 pub mod hair;
 pub mod imported;
 pub mod ma;
@@ -38,6 +39,7 @@ pub const ALL: &[Format] = &[
     Format { name: "exr", seeds: exr::SEEDS, check: exr::check },
     Format { name: "ma", seeds: ma::SEEDS, check: ma::check },
     Format { name: "pbrt", seeds: pbrt::SEEDS, check: pbrt::check },
+    Format { name: "gzip", seeds: gzip::SEEDS, check: gzip::check },
     Format { name: "usda", seeds: usda::SEEDS, check: usda::check },
     Format { name: "scene_files", seeds: scene_files::SEEDS, check: scene_files::check },
 ];
