@@ -115,8 +115,9 @@ fn raw_hair_ply_and_obj_files_render_framed_and_lit() {
     assert!((r - 0.5e-3 * diagonal).abs() < 0.05 * r, "{r} vs {}", 0.5e-3 * diagonal);
     // The command line renders and describes them.
     for name in ["g.hair", "g.ply", "g.obj"] {
-        let (ok, _, err) = tress(&["render", name, "-o", "g.png", "--resolution", "24x18", "--spp", "1", "--quiet"], d);
-        assert!(ok, "{name}: {err}");
+        let out = format!("{name}.png");
+        let (ok, _, err) = tress(&["render", name, "-o", &out, "--resolution", "24x18", "--spp", "1", "--quiet"], d);
+        assert!(ok && d.join(&out).exists(), "{name}: {err}");
         let (ok, out, err) = tress(&["info", name], d);
         assert!(ok && out.contains("strands"), "{name}: {out} {err}");
     }

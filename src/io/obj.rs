@@ -100,6 +100,8 @@ fn polylines(bytes: &[u8], path: &Path) -> Result<StrandSet, LoadError> {
                     })
                     .collect::<Result<_, _>>()?;
                 match chains.last_mut() {
+                    // An `l` without vertices is no strand and breaks no chain.
+                    _ if chain.is_empty() => {}
                     Some(last) if last.last() == chain.first() && chain.len() > 1 => last.extend(&chain[1..]),
                     _ => chains.push(chain),
                 }
@@ -353,6 +355,13 @@ mod tests {
         };
         // `l 1 2` and `l 2 3` share vertex 2: one strand of three points; `l -2 -1` another.
         assert_eq!(s.offsets, vec![0, 3, 5]);
+        // An empty `l` adds nothing.
+        let ObjGeometry::Strands(e) =
+            parse_obj_geometry(text.replace("l 2 3\n", "l \nl 2 3\nl \n").as_bytes(), Path::new("c.obj")).unwrap()
+        else {
+            panic!("not strands")
+        };
+        assert_eq!(e.offsets, s.offsets);
         assert_eq!(s.points[2], [0.0, 2.0, 0.0, 0.0]);
         assert_eq!(s.colors.as_ref().unwrap()[2], [0.0, 1.0, 0.0]);
         // Faces make it a mesh, lines or not.

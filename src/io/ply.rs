@@ -482,7 +482,8 @@ fn strands(
     }
     let mut set = StrandSet::new();
     let mut rgb = Vec::new();
-    for chain in &chains {
+    // A strand of no vertices (a count of 0, an empty list) is no strand.
+    for chain in chains.iter().filter(|c| !c.is_empty()) {
         set.push_strand(chain.iter().map(|&i| (Vec3::from(vertices[i].position), vertices[i].radius)));
         rgb.extend(chain.iter().map(|&i| vertices[i].color));
     }
@@ -860,6 +861,11 @@ mod tests {
         );
         let (s, _) = strands_of(edges.as_bytes());
         assert_eq!(s.offsets, vec![0, 3, 5]);
+        // Strands of no vertices (a count of 0, an empty list) are no strands.
+        let counts = format!("{STRAND_HEADER}element strand 4\nproperty int n\nend_header\n{points}0\n3\n0\n2\n");
+        assert_eq!(strands_of(counts.as_bytes()).0.offsets, vec![0, 3, 5]);
+        let empty = lists.replace("element curve 2", "element curve 3").replace("2 4 3\n", "2 4 3\n0\n");
+        assert_eq!(strands_of(empty.as_bytes()).0.offsets, vec![0, 3, 5]);
         assert_eq!(s.points[2][..3], [0.0, 2.0, 0.0]);
         // Broken strand data: errors naming the file and the cause.
         for (text, needle) in [
