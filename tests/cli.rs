@@ -268,3 +268,50 @@ fn help_shows_no_rustdoc_link_syntax() {
         assert!(!help.contains("[`") && !help.contains("`]"), "{command:?} shows rustdoc links: {help}");
     }
 }
+
+#[test]
+fn camera_picks_one_of_a_files_cameras_and_an_unknown_one_lists_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let camera = |name: &str, z: f32| {
+        format!(
+            "def Camera \"{name}\" {{\n    double3 xformOp:translate = (0, 0, {z})\n    \
+             uniform token[] xformOpOrder = [\"xformOp:translate\"]\n}}\n"
+        )
+    };
+    std::fs::write(
+        d.join("two.usda"),
+        format!(
+            "#usda 1.0\ndef Sphere \"Ball\" {{ double radius = 1 }}\ndef Scope \"Cams\" {{\n{}{}}}\n",
+            camera("Near", 4.0),
+            camera("Far", 40.0)
+        ),
+    )
+    .unwrap();
+    let render = |extra: &[&str], out: &str| {
+        let mut args = vec!["render", "two.usda", "-r", "16x16", "-s", "1", "-o", out];
+        args.extend(extra);
+        tress(&args, d)
+    };
+    // Without --camera: the first, with a warning naming the choice.
+    let (ok, stderr) = render(&[], "first.png");
+    assert!(ok, "{stderr}");
+    assert!(stderr.contains("2 cameras: rendering through /Cams/Near"), "{stderr}");
+    let (ok, stderr) = render(&["--camera", "/Cams/Far"], "far.png");
+    assert!(ok && !stderr.contains("2 cameras"), "{stderr}");
+    // The far camera sees the sphere smaller: fewer lit pixels.
+    let covered = |f: &str| {
+        let img = image::open(d.join(f)).unwrap().to_rgb8();
+        let sky = img.get_pixel(0, 0).0;
+        img.pixels().filter(|p| p.0.iter().zip(sky).any(|(&c, s)| c.abs_diff(s) > 8)).count()
+    };
+    assert!(covered("far.png") < covered("first.png"), "{} {}", covered("far.png"), covered("first.png"));
+    assert_clear_error(
+        &["render", "two.usda", "--camera", "/Cams/Side", "-o", "x.png"],
+        d,
+        &["two.usda", "no camera `/Cams/Side`", "/Cams/Near, /Cams/Far"],
+    );
+    // Files without named cameras say so.
+    std::fs::write(d.join("s.toml"), HEAD).unwrap();
+    assert_clear_error(&["render", "s.toml", "--camera", "/Cam", "-o", "y.png"], d, &["s.toml", "--camera"]);
+}

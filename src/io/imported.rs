@@ -240,6 +240,13 @@ pub fn framing_camera(b: &Aabb) -> CameraDesc {
 }
 
 /// `l` moved by `m` (directions keep unit length; radii and intensities stay).
+/// The orthogonal part of an affine map's linear part: its rotation, times the reflection
+/// when it mirrors (glam puts a mirror's sign on the x scale).
+pub fn orthogonal_part(m: &Affine3A) -> glam::Mat3 {
+    let (scale, rotation, _) = m.to_scale_rotation_translation();
+    glam::Mat3::from_quat(rotation) * glam::Mat3::from_diagonal(scale.signum())
+}
+
 fn transform_light(l: &Light, m: &Affine3A) -> Light {
     let dir = |d: Vec3| m.transform_vector3(d).normalize_or(d);
     match *l {
@@ -266,9 +273,8 @@ fn transform_light(l: &Light, m: &Affine3A) -> Light {
             Light::Sphere { center: m.transform_point3(center), radius, radiance }
         }
         Light::Environment { radiance } => Light::Environment { radiance },
-        // Infinitely far: only the transform's rotation turns it.
-        Light::EnvironmentMap(ref map) => {
-            Light::EnvironmentMap(map.rotated(glam::Mat3::from_quat(m.to_scale_rotation_translation().1)))
-        }
+        // Infinitely far: only the transform's orthogonal part turns it, its rotation and,
+        // when the transform mirrors (its determinant is negative), that reflection.
+        Light::EnvironmentMap(ref map) => Light::EnvironmentMap(map.rotated(orthogonal_part(m))),
     }
 }

@@ -41,7 +41,8 @@ pub const IMPORTED_EXTENSIONS: [&str; 9] = ["ma", "pbrt", "usda", "usdc", "usdz"
 pub struct ImportOptions {
     /// The frame (a USD time code); `None` reads the file's start (USD's `startTimeCode`).
     pub frame: Option<u32>,
-    /// The camera to render through, by its path in the file (USD); `None` takes the first.
+    /// The camera to render through, by its prim path (USD) or its transform's or shape's
+    /// name (Maya); `None` takes the file's first (Maya: other than `persp`).
     pub camera: Option<String>,
 }
 
@@ -66,8 +67,12 @@ pub fn read_imported(path: &Path) -> Result<imported::Imported, LoadError> {
 /// [`read_imported`] at a frame and through a camera of the file's.
 pub fn read_imported_with(path: &Path, options: &ImportOptions) -> Result<imported::Imported, LoadError> {
     use imported::{raw_mesh, raw_strands};
-    let mut imported = match extension(path).as_deref() {
-        Some("ma") => maya_ascii::read_maya(path)?,
+    let ext = extension(path);
+    if options.camera.is_some() && !matches!(ext.as_deref(), Some("ma" | "usda" | "usdc" | "usdz" | "usd")) {
+        return Err(no_named_cameras(path));
+    }
+    let mut imported = match ext.as_deref() {
+        Some("ma") => maya_ascii::read_maya(path, options.camera.as_deref())?,
         Some("pbrt") => pbrt::read_pbrt(path)?,
         Some("usda" | "usdc" | "usdz" | "usd") => usd::read_usd(path, options)?,
         Some("hair") => raw_strands(cem_hair::read_hair(path)?),
@@ -143,6 +148,14 @@ pub fn override_hair_width(desc: &mut Description, width: f32) -> Result<(), Loa
     Ok(())
 }
 
+/// The error for a camera asked for by name in a file whose cameras have none.
+fn no_named_cameras(path: &Path) -> LoadError {
+    LoadError::invalid(
+        path,
+        "has no cameras to choose by name (--camera takes a USD camera's prim path or a Maya camera's name)",
+    )
+}
+
 /// Why [`read_scene`] cannot read a scene.
 #[derive(Debug, thiserror::Error)]
 pub enum ReadSceneError {
@@ -167,11 +180,16 @@ pub fn read_scene_with(
     options: &ImportOptions,
 ) -> Result<(crate::scene::Description, Vec<String>), ReadSceneError> {
     let frame = options.frame;
+    if path.is_dir() && options.camera.is_some() {
+        return Err(no_named_cameras(path).into());
+    }
     if path.is_dir() {
         return Ok((reference_scene::read_reference_scene(path)?, Vec::new()));
     }
     let (desc, warnings) = if is_imported(path) {
         read_imported_with(path, options)?.into_description()
+    } else if options.camera.is_some() {
+        return Err(no_named_cameras(path).into());
     } else {
         scene_file::read(path, frame)?
     };

@@ -47,9 +47,11 @@
 //!
 //! **Lights.** `distant` (`L`, or v4's `illuminance`), `infinite` (constant `L`, or v4's
 //! `illuminance`: E = π L), `point` and `spot` (`I`, or v4's `power`), each times
-//! `scale`. Image-based infinite lights (`filename` in v4, `mapname` in v3; OpenEXR or
-//! PFM) are rendered as a constant sky of the map's mean radiance ([`sky`]), with a
-//! warning.
+//! `scale`. Image-based infinite lights (`filename` in v4, an equal-area square;
+//! `mapname` in v3, latitude-longitude; OpenEXR, PFM, Radiance HDR, PNG or JPEG) become
+//! environment maps turned by the light's transform, times `L` and `scale` (or scaled to
+//! v4's `illuminance`): `image_light.rs` has the mappings. A map that cannot be read is a
+//! constant white sky, with a warning naming the file.
 //!
 //! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
 //! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the
@@ -785,39 +787,40 @@ impl Parser {
                 Light::Distant { direction, irradiance: p.color("L", Vec3::ONE, w)? * scale * e }
             }
             "infinite" => {
-                // An image map (v4 `filename`, equal-area; v3 `mapname`, lat-long) stands as
-                // a constant sky of its mean radiance.
+                // An image map: v4 `filename` (equal-area square), v3 `mapname` (lat-long).
                 let map = match (p.has("filename"), p.has("mapname")) {
-                    (true, _) => Some((p.string("filename", "")?, sky::Projection::EqualArea)),
-                    (_, true) => Some((p.string("mapname", "")?, sky::Projection::LatLong)),
+                    (true, _) => Some((p.string("filename", "")?, image_light::Projection::EqualArea)),
+                    (_, true) => Some((p.string("mapname", "")?, image_light::Projection::LatLong)),
                     _ => None,
                 };
-                let base = match map {
+                let colour = p.color("L", Vec3::ONE, w)? * scale;
+                let illuminance = positive("illuminance")?;
+                match map {
                     Some((file, projection)) => {
                         let path = self.dir.join(&file);
-                        match sky::mean_radiance(&path, projection) {
-                            Ok(mean) => {
-                                w.insert(format!(
-                                    "{}: image-based infinite light rendered as a constant sky of the map's mean \
-                                     radiance ({:.3}, {:.3}, {:.3})",
-                                    path.display(),
-                                    mean.x,
-                                    mean.y,
-                                    mean.z
-                                ));
-                                mean
+                        let to_world = super::imported::orthogonal_part(&glam::Affine3A::from_mat4(ctm.as_mat4()));
+                        let made = super::raster::read_rgb(&path, super::raster::Encoding::Srgb).and_then(|image| {
+                            image_light::environment_map(&image, projection, colour, illuminance, to_world)
+                                .map_err(|m| LoadError::invalid(&path, m))
+                        });
+                        match made {
+                            Ok((map, note)) => {
+                                if let Some(note) = note {
+                                    w.insert(format!("{}: {note}", path.display()));
+                                }
+                                Light::EnvironmentMap(map)
                             }
                             Err(e) => {
                                 w.insert(format!("{e}: the infinite light is rendered as a constant white sky"));
-                                Vec3::ONE
+                                Light::Environment { radiance: colour }
                             }
                         }
                     }
-                    None => Vec3::ONE,
-                };
-                // A constant sky of radiance L gives a facing surface E = π L.
-                let e = positive("illuminance")?.map_or(1.0, |e| e / std::f32::consts::PI);
-                Light::Environment { radiance: base * p.color("L", Vec3::ONE, w)? * scale * e }
+                    // A constant sky of radiance L gives a facing surface E = π L.
+                    None => {
+                        Light::Environment { radiance: colour * illuminance.map_or(1.0, |e| e / std::f32::consts::PI) }
+                    }
+                }
             }
             "point" => {
                 let k = positive("power")?.map_or(1.0, |phi| phi / (4.0 * std::f32::consts::PI));
@@ -992,8 +995,7 @@ fn scale_emission(l: &mut Light, k: f32) {
         | Light::Sphere { radiance: c, .. }
         | Light::Sun { radiance: c, .. }
         | Light::Environment { radiance: c } => *c *= k,
-        // The import makes no map lights: pbrt's maps become constant skies.
-        Light::EnvironmentMap(_) => {}
+        Light::EnvironmentMap(map) => *map = map.scaled(k),
     }
 }
 
@@ -1252,7 +1254,7 @@ fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
     Ok(PhysicalHair::new(params))
 }
 
-mod sky;
+mod image_light;
 
 #[cfg(test)]
 mod tests;

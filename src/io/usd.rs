@@ -19,10 +19,14 @@
 //!
 //! Every layer passes [`layer::prepare_layer`] first: its checks keep hostile text from
 //! overflowing the crate parser's stack, and it rewrites the number forms the crate's
-//! tokenizer refuses. Composition arcs that lead back to their own prim are an error
-//! naming the chain ([`check_arc_cycles`]).
+//! tokenizer refuses; binary layers pass [`crate_file::check`], and the stage is read inside
+//! `catch_unwind`, so a damaged layer is an error, never an abort. Composition arcs that
+//! lead back to their own prim, in one layer or through the files it names, are an error
+//! naming the chain ([`arcs::check_cycles`]).
 
+pub mod arcs;
 pub mod camera;
+pub mod crate_file;
 pub mod curves;
 mod export;
 pub mod layer;
@@ -99,13 +103,27 @@ pub fn read_usd(path: &Path, options: &ImportOptions) -> Result<Imported, LoadEr
     let (kind, prepared) = layer::prepare_layer(bytes).map_err(|m| LoadError::format(path, m))?;
     let name = path.to_str().ok_or_else(|| LoadError::format(path, "the path is not UTF-8"))?;
     if kind == layer::LayerKind::Text {
-        check_arc_cycles(&String::from_utf8_lossy(&prepared)).map_err(|m| LoadError::format(path, m))?;
+        arcs::check_cycles(path, &String::from_utf8_lossy(&prepared)).map_err(|m| LoadError::format(path, m))?;
     }
+    // The layers passed their checks; a panic of the crate's reader past them is an error
+    // naming the file, not the end of the process.
+    crate_file::without_panicking(|| read_composed(path, name, kind, &prepared, options))
+        .map_err(|m| LoadError::format(path, format!("the USD reader failed on this stage (a damaged layer?): {m}")))?
+}
+
+/// The stage of the checked root layer `prepared` (of kind `kind`), composed and read.
+fn read_composed(
+    path: &Path,
+    name: &str,
+    kind: layer::LayerKind,
+    prepared: &[u8],
+    options: &ImportOptions,
+) -> Result<Imported, LoadError> {
     let resolver = layer::GuardedResolver::default();
     let missing = resolver.missing();
     let stage = Stage::builder().resolver(resolver).open(name).map_err(|e| {
         // The crate's stage errors do not carry the line; its parser does.
-        let text = String::from_utf8_lossy(&prepared);
+        let text = String::from_utf8_lossy(prepared);
         let mut parser = openusd::usda::parser::Parser::new(&text);
         match (kind, parser.parse(), parser.last_error_highlight()) {
             (layer::LayerKind::Text, Err(_), Some(h)) => LoadError::format(path, format!("line {}: {e:#}", h.line)),
@@ -124,7 +142,7 @@ pub fn read_usd(path: &Path, options: &ImportOptions) -> Result<Imported, LoadEr
     if kind == layer::LayerKind::Text {
         let dir = path.parent().unwrap_or(Path::new("."));
         missing.extend(
-            arc_assets(&String::from_utf8_lossy(&prepared))
+            arcs::file_assets(&String::from_utf8_lossy(prepared))
                 .into_iter()
                 .map(|a| dir.join(a))
                 .filter(|p| !p.exists())
@@ -142,140 +160,6 @@ pub fn read_usd(path: &Path, options: &ImportOptions) -> Result<Imported, LoadEr
     read_stage(&stage, options, &mut out, &mut notes).map_err(|e| LoadError::invalid(path, format!("{e:#}")))?;
     out.warnings.extend(notes.lines());
     Ok(out)
-}
-
-/// Refuses a layer whose `inherits`, `specializes` or `references` to prims of the same
-/// layer (`</Path>` without an asset) lead from a prim back to itself or its ancestors:
-/// the crate's composition follows such chains without end. The error names the chain.
-pub fn check_arc_cycles(text: &str) -> Result<(), String> {
-    // Prim paths by nesting (`def`/`over`/`class` … `{`), and each prim's internal arcs.
-    let mut arcs: BTreeMap<String, Vec<String>> = BTreeMap::new();
-    let mut stack: Vec<(String, usize)> = Vec::new();
-    let mut depth = 0usize;
-    let mut pending: Option<String> = None;
-    let mut current = String::new();
-    for line in text.lines() {
-        let words = line.trim_start();
-        if let Some(rest) = ["def ", "over ", "class "].iter().find_map(|k| words.strip_prefix(k)) {
-            if let Some(name) = rest.split('"').nth(1) {
-                let parent = stack.last().map_or(String::new(), |(p, _)| p.clone());
-                pending = Some(format!("{parent}/{name}"));
-                current = pending.clone().unwrap_or_default();
-            }
-        }
-        if !current.is_empty() {
-            arcs.entry(current.clone()).or_default().extend(internal_arc_targets(line));
-        }
-        for c in line.bytes() {
-            match c {
-                b'{' => {
-                    depth += 1;
-                    if let Some(p) = pending.take() {
-                        stack.push((p, depth));
-                    }
-                }
-                b'}' => {
-                    if stack.last().is_some_and(|(_, d)| *d == depth) {
-                        stack.pop();
-                        current = stack.last().map_or(String::new(), |(p, _)| p.clone());
-                    }
-                    depth = depth.saturating_sub(1);
-                }
-                _ => {}
-            }
-        }
-    }
-    // Depth-first search for a chain back to a prim or one of its ancestors.
-    let inside = |a: &str, b: &str| a == b || a.starts_with(&format!("{b}/"));
-    for start in arcs.keys() {
-        let mut chain = vec![start.clone()];
-        let mut seen = std::collections::BTreeSet::new();
-        if let Some(c) = cycle_from(&arcs, &mut chain, &mut seen, &inside) {
-            return Err(format!("composition arcs form a cycle: {}", c.join(" -> ")));
-        }
-    }
-    Ok(())
-}
-
-/// The relative asset paths (`@./file.usda@`, not `@/abs@` nor search paths with a
-/// scheme) that a layer's `references` and `payload` arcs name.
-fn arc_assets(text: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    for line in text.lines() {
-        if !["references", "payload"].iter().any(|k| line.contains(k)) {
-            continue;
-        }
-        for (k, part) in line.split('@').enumerate() {
-            if k % 2 == 1 && !part.is_empty() && !part.contains("://") && !part.contains('$') {
-                out.push(part.to_string());
-            }
-        }
-    }
-    out
-}
-
-/// The prim paths (`</Path>` with no asset before them) that the `inherits`,
-/// `specializes`, `references` and `payload` arcs of one line name, except deleted ones.
-fn internal_arc_targets(line: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    for key in ["inherits", "specializes", "references", "payload"] {
-        let mut from = 0;
-        while let Some(at) = line[from..].find(key).map(|k| k + from) {
-            from = at + key.len();
-            let whole = !line[..at].ends_with(|c: char| c.is_ascii_alphanumeric() || c == '_' || c == ':');
-            let assigns = line[from..].trim_start().starts_with('=');
-            if !whole || !assigns || line[..at].trim_end().ends_with("delete") {
-                continue;
-            }
-            // The arc's value runs to the closing `]`, or to the end of a single target.
-            let value = &line[from..];
-            let value = match value.trim_start()[1..].trim_start().starts_with('[') {
-                true => value.split(']').next().unwrap_or(value),
-                false => value.split('>').next().map_or(value, |v| &value[..(v.len() + 1).min(value.len())]),
-            };
-            let mut rest = value;
-            while let Some(open) = rest.find('<') {
-                let before = rest[..open].trim_end();
-                let after = &rest[open + 1..];
-                let Some(close) = after.find('>') else { break };
-                if !before.ends_with('@') && after[..close].starts_with('/') {
-                    out.push(after[..close].to_string());
-                }
-                rest = &after[close + 1..];
-            }
-        }
-    }
-    out
-}
-
-/// Follows `arcs` from the last prim of `chain`; the chain when it comes back inside one of
-/// its prims.
-fn cycle_from(
-    arcs: &BTreeMap<String, Vec<String>>,
-    chain: &mut Vec<String>,
-    seen: &mut std::collections::BTreeSet<String>,
-    inside: &dyn Fn(&str, &str) -> bool,
-) -> Option<Vec<String>> {
-    let last = chain.last()?.clone();
-    // A prim's arcs and those of its ancestors both compose into it.
-    let sources: Vec<&String> = arcs.keys().filter(|k| inside(&last, k)).collect();
-    for src in sources {
-        for target in &arcs[src] {
-            if chain.iter().any(|c| inside(c, target) || inside(target, c)) {
-                let mut c = chain.clone();
-                c.push(target.clone());
-                return Some(c);
-            }
-            if seen.insert(target.clone()) {
-                chain.push(target.clone());
-                if let Some(c) = cycle_from(arcs, chain, seen, inside) {
-                    return Some(c);
-                }
-                chain.pop();
-            }
-        }
-    }
-    None
 }
 
 /// Any prim seen as transformable, to evaluate the transform ops of ancestors whatever
@@ -389,7 +273,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                 let mesh = shapes::read_gprim(&prim, k, time).map_err(what)?;
                 push_mesh(out, mesh, shapes::surface_color(&prim, time, notes).map_err(what)?, transform);
             }
-            light => out.lights.push(lights::read_light(&prim, light, &transform, time, notes).map_err(what)?),
+            light => out.lights.push(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?),
         }
     }
     let chosen = match &options.camera {

@@ -109,9 +109,15 @@ impl EnvironmentMap {
         Ok(EnvironmentMap { image, to_map: Mat3::from_rotation_y(-rotation.to_radians()), scale: intensity })
     }
 
-    /// The same map turned by `rotation` (a rotation matrix applied after its own).
+    /// The same map turned by `rotation`, applied after its own: an orthogonal matrix, a
+    /// rotation or one with a reflection (a mirrored world mirrors its sky too).
     pub fn rotated(&self, rotation: Mat3) -> EnvironmentMap {
         EnvironmentMap { to_map: self.to_map * rotation.transpose(), ..self.clone() }
+    }
+
+    /// The same map with its radiance multiplied by `k` (finite, not negative).
+    pub fn scaled(&self, k: f32) -> EnvironmentMap {
+        EnvironmentMap { scale: self.scale * k, ..self.clone() }
     }
 
     /// Width and height in pixels.

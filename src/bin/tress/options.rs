@@ -48,6 +48,10 @@ pub struct Overrides {
     /// width, or the wrong one).
     #[arg(long, value_name = "WIDTH", value_parser = parse_width)]
     pub hair_width: Option<f32>,
+    /// Render through this camera of the file: a USD camera's prim path (`/World/Cam`) or a
+    /// Maya camera's transform or shape name. Without it, the file's first camera.
+    #[arg(long, value_name = "PATH")]
+    pub camera: Option<String>,
 }
 
 fn parse_width(s: &str) -> Result<f32, String> {
@@ -98,10 +102,13 @@ pub fn load_with_warnings(
     o: &Overrides,
     frame: Option<u32>,
 ) -> Result<(Description, Vec<String>)> {
+    if o.camera.is_some() && scene.is_none() {
+        anyhow::bail!("--camera chooses among a scene file's cameras: give a USD or Maya file");
+    }
     let (mut desc, notes) = match scene {
         // A file or a reference scene directory of scripts/gen_scenes.py (scene.json);
         // the warnings name the file.
-        Some(path) => tress::io::read_scene(path, frame)?,
+        Some(path) => tress::io::read_scene_with(path, &tress::io::ImportOptions { frame, camera: o.camera.clone() })?,
         None => (tress::demo::description(o.demo_strands, 1), Vec::new()),
     };
     if let Some(w) = o.hair_width {

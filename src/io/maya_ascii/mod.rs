@@ -25,7 +25,8 @@
 //! - **FurDescription**: its attributes (node defaults for those the file omits) become a
 //!   fur description grown on each mesh it is attached to (through a `FurFeedback`), see
 //!   [`fur_nodes`].
-//! - **camera**: the first renderable perspective camera other than the default `persp`
+//! - **camera**: the one asked for by name (`--camera`: its transform's or its shape's
+//!   name), else the first renderable perspective camera other than the default `persp`
 //!   (else `persp`), field of view from focal length (`.fl`), film aperture (`.cap`) and
 //!   film fit (`.ff`); image size from `defaultResolution`.
 //! - **lights**: directional, point, spot, ambient and area lights, colour × intensity
@@ -60,19 +61,31 @@ pub const SAMPLES_PER_SPAN: usize = 8;
 /// Most control points one curve may have.
 const MAX_CVS: usize = 1 << 22;
 
-/// Reads a `.ma` file.
-pub fn read_maya(path: &Path) -> Result<Imported, LoadError> {
+/// Reads a `.ma` file, through the camera named `camera` (its transform's or its shape's
+/// name) when one is given.
+pub fn read_maya(path: &Path, camera: Option<&str>) -> Result<Imported, LoadError> {
     let bytes = crate::input_file::read(path, crate::input_file::Kind::ImportedScene)?;
     // Maya writes files in the system code page; anything not UTF-8 is replaced, which can
     // only touch names and strings.
-    parse_maya(&String::from_utf8_lossy(&bytes), path)
+    parse_maya_with(&String::from_utf8_lossy(&bytes), path, camera)
 }
 
 /// Reads `.ma` text; `path` names the file in messages.
 pub fn parse_maya(text: &str, path: &Path) -> Result<Imported, LoadError> {
-    let at = |(line, msg): (u32, String)| LoadError::format(path, format!("line {line}: {msg}"));
+    parse_maya_with(text, path, None)
+}
+
+/// [`parse_maya`] through the camera named `camera`.
+pub fn parse_maya_with(text: &str, path: &Path, camera: Option<&str>) -> Result<Imported, LoadError> {
+    // Line 0: a problem of the whole file (a camera asked for that it does not have).
+    let at = |(line, msg): (u32, String)| match line {
+        0 => LoadError::invalid(path, msg),
+        _ => LoadError::format(path, format!("line {line}: {msg}")),
+    };
     let g = parse::parse(text).map_err(at)?;
-    Reader::new(&g).read().map_err(at)
+    let mut reader = Reader::new(&g);
+    reader.wanted_camera = camera.map(str::to_string);
+    reader.read().map_err(at)
 }
 
 type Res<T> = Result<T, (u32, String)>;
@@ -134,11 +147,20 @@ struct Reader<'g> {
     hidden: HashMap<usize, bool>,
     /// Mesh index in `out.meshes` and the world-space mesh, by mesh node.
     meshes: HashMap<usize, (usize, TriangleMesh)>,
+    /// The camera asked for by name (`--camera`), if any.
+    wanted_camera: Option<String>,
 }
 
 impl<'g> Reader<'g> {
     fn new(g: &'g Graph) -> Reader<'g> {
-        Reader { g, out: Imported::default(), world: HashMap::new(), hidden: HashMap::new(), meshes: HashMap::new() }
+        Reader {
+            g,
+            out: Imported::default(),
+            world: HashMap::new(),
+            hidden: HashMap::new(),
+            meshes: HashMap::new(),
+            wanted_camera: None,
+        }
     }
 
     fn kind(&self, n: usize) -> &str {
@@ -679,8 +701,31 @@ impl<'g> Reader<'g> {
                     && scalar(g, c, &["rnd", "renderable"], 1.0).is_ok_and(|r| r != 0.0)
             })
             .collect();
-        let Some(&cam) = cameras.iter().find(|&&c| g.nodes[c].name != "perspShape").or(cameras.first()) else {
-            return Ok(());
+        let cam = match &self.wanted_camera {
+            // By its transform's name (what Maya's outliner shows) or its shape's.
+            Some(want) => {
+                let every: Vec<usize> = self.of_kind("camera").collect();
+                let transform = |c: usize| g.nodes[c].parent.as_deref().map(|p| p.rsplit('|').next().unwrap_or(p));
+                let named = every.iter().find(|&&c| g.nodes[c].name == *want || transform(c) == Some(want.as_str()));
+                match named {
+                    Some(&c) => c,
+                    None => {
+                        let names: Vec<&str> =
+                            every.iter().map(|&c| transform(c).unwrap_or(&g.nodes[c].name)).collect();
+                        return Err((
+                            0,
+                            format!(
+                                "no camera `{want}` in the file (its cameras: {})",
+                                if names.is_empty() { "none".to_string() } else { names.join(", ") }
+                            ),
+                        ));
+                    }
+                }
+            }
+            None => match cameras.iter().find(|&&c| g.nodes[c].name != "perspShape").or(cameras.first()) {
+                Some(&c) => c,
+                None => return Ok(()),
+            },
         };
         let m = self.world(cam)?;
         finite_affine(g, cam, &m)?;

@@ -375,3 +375,18 @@ fn the_example_scene_imports() {
     assert_eq!(s.fur.len(), 1);
     assert!(s.camera.is_some() && !s.lights.is_empty());
 }
+
+#[test]
+fn a_camera_is_chosen_by_its_transform_or_shape_name() {
+    let two = "createNode transform -n \"near\";\n\tsetAttr \".t\" -type \"double3\" 0 0 4 ;\n\
+               createNode camera -n \"nearShape\" -p \"near\";\n\
+               createNode transform -n \"far\";\n\tsetAttr \".t\" -type \"double3\" 0 0 40 ;\n\
+               createNode camera -n \"farShape\" -p \"far\";\n";
+    let eye =
+        |camera: Option<&str>| parse_maya_with(two, Path::new("dir/two.ma"), camera).map(|s| s.camera.unwrap().eye.z);
+    assert_eq!(eye(None).unwrap(), 4.0);
+    assert_eq!(eye(Some("far")).unwrap(), 40.0);
+    assert_eq!(eye(Some("farShape")).unwrap(), 40.0);
+    let e = eye(Some("side")).unwrap_err().to_string();
+    assert!(e.starts_with("dir/two.ma") && e.contains("no camera `side`") && e.contains("near, far"), "{e}");
+}

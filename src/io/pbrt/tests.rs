@@ -348,20 +348,25 @@ fn unused_and_unknown_parameters_are_reported_once_with_file_and_line() {
 }
 
 #[test]
-fn image_infinite_lights_become_a_sky_of_their_maps_mean_radiance() {
+fn image_infinite_lights_become_environment_maps_scaled_like_every_light() {
     let dir = tempfile::tempdir().unwrap();
-    // A 2 × 2 PFM map: one pixel (4, 8, 12), the rest black.
+    // A 2 × 2 square PFM map of one colour (PFM rows run from the bottom up).
     let mut map = b"PF\n2 2\n-1.0\n".to_vec();
-    for v in [4.0f32, 8.0, 12.0].into_iter().chain([0.0; 9]) {
-        map.extend(v.to_le_bytes());
+    for _ in 0..4 {
+        for v in [4.0f32, 8.0, 12.0] {
+            map.extend(v.to_le_bytes());
+        }
     }
     std::fs::write(dir.path().join("sky.pfm"), map).unwrap();
     let main = dir.path().join("s.pbrt");
     std::fs::write(&main, "Film \"rgb\" \"float iso\" 200\nWorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 0.5\n").unwrap();
     let s = read_pbrt(&main).unwrap();
-    // Mean (1, 2, 3) × scale 0.5 × imaging ratio 2.
-    assert_eq!(s.lights, [Light::Environment { radiance: Vec3::new(1.0, 2.0, 3.0) }]);
-    assert!(s.warnings.iter().any(|w| w.contains("sky.pfm") && w.contains("mean radiance")), "{:?}", s.warnings);
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    let [Light::EnvironmentMap(m)] = &s.lights[..] else { panic!("{:?}", s.lights) };
+    // (4, 8, 12) × scale 0.5 × imaging ratio 2, from every direction.
+    for d in [Vec3::X, Vec3::Y, -Vec3::Z, Vec3::new(1.0, -2.0, 3.0).normalize()] {
+        assert!((m.radiance(d) - Vec3::new(4.0, 8.0, 12.0)).abs().max_element() < 1e-4, "{d}: {}", m.radiance(d));
+    }
     // A missing map: a white sky, said so, not an error.
     std::fs::write(&main, "WorldBegin\nLightSource \"infinite\" \"string mapname\" \"gone.exr\"\n").unwrap();
     let s = read_pbrt(&main).unwrap();

@@ -27,10 +27,11 @@ pub enum LayerKind {
 
 /// Checks a layer's bytes and returns them as the crate should read them: text layers
 /// with their numbers rewritten by [`normalize_numbers`] (line numbers unchanged), binary
-/// crate files and packages as they are (a package's text layers checked by
-/// `check_package`).
+/// crate files (their sizes checked by [`super::crate_file::check`]) and packages as they
+/// are (a package's layers checked by `check_package`).
 pub fn prepare_layer(bytes: Vec<u8>) -> Result<(LayerKind, Vec<u8>), String> {
     if bytes.starts_with(USDC_MAGIC) {
+        super::crate_file::check(&bytes)?;
         return Ok((LayerKind::Crate, bytes));
     }
     if bytes.starts_with(ZIP_MAGIC) {
@@ -302,7 +303,9 @@ fn check_package(bytes: &[u8]) -> Result<(), String> {
         if method != 0 {
             return Err(format!("package entry `{name}` is compressed (.usdz entries must be stored)"));
         }
-        if !data.starts_with(USDC_MAGIC) && (name.ends_with(".usda") || name.ends_with(".usd")) {
+        if data.starts_with(USDC_MAGIC) {
+            super::crate_file::check(data).map_err(|m| format!("package entry `{name}`: {m}"))?;
+        } else if name.ends_with(".usda") || name.ends_with(".usd") {
             let text = std::str::from_utf8(data).map_err(|_| format!("package entry `{name}` is not UTF-8 text"))?;
             if text.trim_start().starts_with("#usda") {
                 check_text(text).map_err(|m| format!("package entry `{name}`: {m}"))?;

@@ -1,4 +1,5 @@
-//! UsdLux lights: `DistantLight`, `SphereLight`, `RectLight`, `DiskLight` and `DomeLight`.
+//! UsdLux lights: `DistantLight`, `SphereLight`, `RectLight`, `DiskLight`, `DomeLight` and
+//! `DomeLight_1`.
 //!
 //! UsdLux gives every light the same emission: `inputs:color × inputs:intensity ×
 //! 2^inputs:exposure` is the radiance of its surface (UsdLux's `LightAPI`), divided by the
@@ -8,15 +9,25 @@
 //! authored `inputs:angle`, a disk of that angular diameter with one. Lights
 //! shine along their local −Z; a rect light is `width × height` in its local XY plane, a
 //! disk light of radius `radius` is drawn as the square of the same area and emission.
+//!
+//! A dome's `inputs:texture:file` (latitude-longitude, `texture:format` `automatic` or
+//! `latlong`) is an environment map times the emission, oriented as UsdLux specifies after
+//! OpenEXR's latitude-longitude maps: the top row is +Y, the image's left edge longitude
+//! +π and its right edge −π, longitude 0 along +Z and π/2 along +X. That is tress's map
+//! layout turned 180° about +Y. `DomeLight_1` first turns its pole from +Y to its
+//! `poleAxis` (`"Z"`, or `"scene"` on a Z-up stage); the dome's own transform turns it
+//! after that.
 
-use super::values::{boolean, number, value, vec3, Res};
+use super::values::{boolean, number, token, value, vec3, Res};
 use super::Notes;
-use crate::light::Light;
-use glam::{Affine3A, Vec3};
+use crate::light::{EnvironmentMap, Light};
+use glam::{Affine3A, Mat3, Vec3};
+use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
 
 /// The light types this module reads.
-pub const LIGHT_TYPES: [&str; 5] = ["DistantLight", "SphereLight", "RectLight", "DiskLight", "DomeLight"];
+pub const LIGHT_TYPES: [&str; 6] =
+    ["DistantLight", "SphereLight", "RectLight", "DiskLight", "DomeLight", "DomeLight_1"];
 
 /// An `inputs:` attribute, or the same name without the prefix as lights authored before
 /// UsdLux took it (USD 21.02) spell it.
@@ -27,8 +38,16 @@ fn input(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<openusd::sdf::Va
     }
 }
 
-/// The light `prim` of type `kind`, placed by `transform` (local to world).
-pub fn read_light(prim: &Prim, kind: &str, transform: &Affine3A, time: TimeCode, notes: &mut Notes) -> Res<Light> {
+/// The light `prim` of type `kind`, placed by `transform` (local to world); `z_up` when the
+/// stage's up axis is Z (for `DomeLight_1`'s `poleAxis = "scene"`).
+pub fn read_light(
+    prim: &Prim,
+    kind: &str,
+    transform: &Affine3A,
+    time: TimeCode,
+    z_up: bool,
+    notes: &mut Notes,
+) -> Res<Light> {
     let num = |name: &str, d: f32| -> Res<f32> {
         let x = number(input(prim, name, time)?, name)?.map_or(d, |x| x as f32);
         anyhow::ensure!(x.is_finite(), "`inputs:{name}` must be finite");
@@ -72,11 +91,19 @@ pub fn read_light(prim: &Prim, kind: &str, transform: &Affine3A, time: TimeCode,
                 _ => Light::Distant { direction, irradiance: emission },
             }
         }
-        "DomeLight" => {
-            if input(prim, "texture:file", time)?.is_some() {
-                notes.note("DomeLight textures: lit by the dome's colour × intensity only".into(), prim);
+        "DomeLight" | "DomeLight_1" => {
+            let pole_z = kind == "DomeLight_1"
+                && match token(input(prim, "poleAxis", time)?, "scene").as_str() {
+                    "Z" => true,
+                    "scene" => z_up,
+                    _ => false,
+                };
+            // +Y to +Z: 90° about +X.
+            let pole = if pole_z { Mat3::from_rotation_x(0.5 * std::f32::consts::PI) } else { Mat3::IDENTITY };
+            match dome_texture(prim, time, emission, notes)? {
+                Some(map) => Light::EnvironmentMap(map.rotated(crate::io::imported::orthogonal_part(transform) * pole)),
+                None => Light::Environment { radiance: emission },
             }
-            Light::Environment { radiance: emission }
         }
         "SphereLight" => {
             let radius = size("radius", 0.5)? * scale;
@@ -103,4 +130,38 @@ pub fn read_light(prim: &Prim, kind: &str, transform: &Affine3A, time: TimeCode,
             Light::Quad { corner, edge_u, edge_v, radiance }
         }
     })
+}
+
+/// A dome's texture as a map in its own frame (before its transform), times `emission`;
+/// `None` when it has none, or one that cannot be used (reported, naming the file).
+fn dome_texture(prim: &Prim, time: TimeCode, emission: Vec3, notes: &mut Notes) -> Res<Option<EnvironmentMap>> {
+    let asset = match input(prim, "texture:file", time)? {
+        Some(sdf::Value::AssetPath(a)) if !a.authored_path.is_empty() => a,
+        _ => return Ok(None),
+    };
+    let format = token(input(prim, "texture:format", time)?, "automatic");
+    if !matches!(format.as_str(), "automatic" | "latlong") {
+        notes.note(format!("dome textures in the `{format}` format: lit by the dome's colour × intensity"), prim);
+        return Ok(None);
+    }
+    let Some(file) = asset.resolved_path().filter(|p| !p.is_empty()).map(std::path::PathBuf::from) else {
+        let what = format!("dome texture `{}` is missing: lit by the dome's colour × intensity", asset.authored_path);
+        notes.note(what, prim);
+        return Ok(None);
+    };
+    let map = crate::io::raster::read_rgb(&file, crate::io::raster::Encoding::Srgb).and_then(|mut image| {
+        for px in image.rgb.chunks_exact_mut(3) {
+            px.iter_mut().zip(emission.to_array()).for_each(|(v, e)| *v *= e);
+        }
+        // OpenEXR's latitude-longitude layout is tress's turned 180° about +Y.
+        EnvironmentMap::from_pixels(image.width, image.height, &image.rgb, 180.0, 1.0)
+            .map_err(|m| crate::error::LoadError::invalid(&file, m))
+    });
+    match map {
+        Ok(map) => Ok(Some(map)),
+        Err(e) => {
+            notes.note(format!("{e}: the dome is lit by its colour × intensity"), prim);
+            Ok(None)
+        }
+    }
 }
