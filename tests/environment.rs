@@ -217,7 +217,7 @@ fn scene_files_name_the_unusable_map() {
     let dir = tempfile::tempdir().unwrap();
     let scene_path = dir.path().join("spot.toml");
     let e = tress::io::scene_file::parse(&spot_scene(0.0), &scene_path, None).map(|d| d.0).unwrap_err().to_string();
-    assert!(e.contains("light 1") && e.contains("spot.pfm: could not read the file"), "{e}");
+    assert!(e.contains("light 1") && e.contains("spot.pfm: could not open the file"), "{e}");
     std::fs::write(dir.path().join("spot.pfm"), b"PF\n2 2\n-1\n\0\0").unwrap();
     let e = tress::io::scene_file::parse(&spot_scene(0.0), &scene_path, None).map(|d| d.0).unwrap_err().to_string();
     assert!(e.contains("spot.pfm: the header announces 2x2 pixels"), "{e}");
