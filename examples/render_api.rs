@@ -17,7 +17,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut fur = tress::fur::presets::preset("Mouse")?;
     fur.density = 40_000;
     let desc = Description {
-        camera: CameraDesc { eye: Vec3::new(0.0, 0.6, 3.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 30.0 },
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 0.6, 3.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov: 30.0,
+            ..Default::default()
+        },
         settings: RenderSettings { width: 320, height: 240, spp: 8, ..RenderSettings::default() },
         lights: vec![
             Light::Distant { direction: Vec3::new(0.4, 0.9, 0.6).normalize(), irradiance: Color::splat(3.0) },

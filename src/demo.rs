@@ -26,6 +26,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
             target: Vec3::new(0.0, -0.05, 0.0),
             up: Vec3::Y,
             vfov: 35.0,
+            ..Default::default()
         },
         settings: RenderSettings::default(),
         lights: vec![

@@ -21,7 +21,7 @@ fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3
         specular_power: 20.0,
     });
     Description {
-        camera: CameraDesc { eye, target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+        camera: CameraDesc { eye, target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0, ..Default::default() },
         settings: RenderSettings { width: 48, height: 36, spp: 2, ..Default::default() },
         lights: vec![
             Light::Distant { direction: Vec3::new(0.3, 1.0, 0.5).normalize(), irradiance: Color::ONE },

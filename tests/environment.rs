@@ -39,7 +39,13 @@ fn scene(light: Light, integrator: Integrator, spp: u32) -> Description {
         ..Default::default()
     }));
     Description {
-        camera: CameraDesc { eye: Vec3::new(0.0, 2.5, 2.5), target: Vec3::new(0.0, 0.2, 0.0), up: Vec3::Y, vfov: 40.0 },
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 2.5, 2.5),
+            target: Vec3::new(0.0, 0.2, 0.0),
+            up: Vec3::Y,
+            vfov: 40.0,
+            ..Default::default()
+        },
         settings: RenderSettings { width: 48, height: 36, spp, integrator, max_depth: 2, ..Default::default() },
         lights: vec![light],
         meshes: vec![
@@ -111,7 +117,13 @@ fn a_constant_map_renders_as_the_constant_environment() {
 fn a_white_map_lights_a_convex_diffuse_body_to_its_albedo() {
     for integrator in [Integrator::Direct, Integrator::Path] {
         let desc = Description {
-            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 3.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 20.0 },
+            camera: CameraDesc {
+                eye: Vec3::new(0.0, 0.0, 3.0),
+                target: Vec3::ZERO,
+                up: Vec3::Y,
+                vfov: 20.0,
+                ..Default::default()
+            },
             settings: RenderSettings { width: 16, height: 16, spp: 64, integrator, max_depth: 4, ..Default::default() },
             lights: vec![constant_map(1.0)],
             meshes: vec![MeshEntry {
@@ -242,7 +254,13 @@ fn the_tube_ambient_term_takes_an_environment_maps_mean_radiance() {
     let tube = tress::shading::tube::Tube { ambient, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
     for integrator in [Integrator::Direct, Integrator::FinalGather] {
         let desc = Description {
-            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+            camera: CameraDesc {
+                eye: Vec3::new(0.0, 0.0, 4.0),
+                target: Vec3::ZERO,
+                up: Vec3::Y,
+                vfov: 40.0,
+                ..Default::default()
+            },
             settings: RenderSettings { width: 16, height: 16, spp: 4, integrator, ..Default::default() },
             lights: vec![Light::EnvironmentMap(map.clone())],
             hair: vec![HairEntry {

@@ -76,7 +76,13 @@ fn path_tracer_white_furnace() {
     // tapered ones (which rays leaving a strand must not hit again where they start).
     for radii in [(0.01, 0.01), (0.02, 0.004)] {
         let desc = Description {
-            camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+            camera: CameraDesc {
+                eye: Vec3::new(0.0, 0.0, 4.0),
+                target: Vec3::ZERO,
+                up: Vec3::Y,
+                vfov: 40.0,
+                ..Default::default()
+            },
             settings: settings(24, 24, 64, 64, Integrator::Path),
             lights: vec![Light::Environment { radiance: Color::ONE }],
             meshes: vec![mesh(
@@ -128,7 +134,13 @@ fn lit_scene(integrator: Integrator, spp: u32, max_depth: u32, environment: bool
         lights.push(Light::Environment { radiance: Color::splat(0.3) });
     }
     Description {
-        camera: CameraDesc { eye: Vec3::new(0.0, 1.5, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 1.5, 4.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov: 40.0,
+            ..Default::default()
+        },
         settings: RenderSettings { gather_rays: 4, ..settings(32, 24, spp, max_depth, integrator) },
         lights,
         meshes: vec![
@@ -190,7 +202,13 @@ fn shadow_scene(layers: u32, a: f32, integrator: Integrator) -> Description {
     strands.opacity = Some(vec![a; strands.points.len()]);
     Description {
         // Looking along the ground from below the strands: only the ground is seen.
-        camera: CameraDesc { eye: Vec3::new(0.0, 0.5, 3.0), target: Vec3::new(0.0, 0.0, 0.0), up: Vec3::Y, vfov: 60.0 },
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 0.5, 3.0),
+            target: Vec3::new(0.0, 0.0, 0.0),
+            up: Vec3::Y,
+            vfov: 60.0,
+            ..Default::default()
+        },
         settings: settings(32, 32, 4, 0, integrator),
         lights: vec![Light::Distant { direction: Vec3::Y, irradiance: Color::ONE }],
         meshes: vec![mesh(TriangleMesh::plane(20.0), Material::Diffuse { color: Color::ONE }, Affine3A::IDENTITY)],
@@ -432,7 +450,13 @@ fn lone_strand(r0: f32, r1: f32, material: Material, integrator: Integrator, max
         (Vec3::new(0.0, -1.0 + 2.0 * f, 0.0), r0 + (r1 - r0) * f)
     }));
     Description {
-        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0 },
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 0.0, 4.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov: 40.0,
+            ..Default::default()
+        },
         settings: RenderSettings { gather_rays: 4, ..settings(8, 8, 1, max_depth, integrator) },
         lights: vec![Light::Environment { radiance: Color::ONE }],
         hair: vec![hair(strands, material)],

@@ -16,7 +16,13 @@ use tress::world::RenderSettings;
 /// A short straight strand across the view, seen from +z, under a constant environment.
 fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Description {
     Description {
-        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 2.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 6.0 },
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 0.0, 2.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov: 6.0,
+            ..Default::default()
+        },
         settings: RenderSettings { width: 24, height: 24, spp: 1024, max_depth: 0, ..Default::default() },
         lights: vec![Light::Environment { radiance: Color::ONE }],
         meshes: vec![],

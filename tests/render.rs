@@ -117,7 +117,13 @@ fn black_strands_on_white(
     use tress::shading::{tube::Tube, Material};
     let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
     Description {
-        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 10.0 },
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 0.0, 5.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov: 10.0,
+            ..Default::default()
+        },
         settings,
         lights: vec![Light::Environment { radiance: Color::ONE }],
         hair: vec![HairEntry {
@@ -197,4 +203,32 @@ fn a_gaussian_filter_widens_edges_and_keeps_coverage() {
     assert!(gauss_edge >= 4, "gaussian: {gauss_edge} partial pixels");
     // Both reconstruct the same strand: the summed coverage is its height in pixels.
     assert!((box_sum - gauss_sum).abs() < 0.05 * box_sum, "{box_sum} vs {gauss_sum}");
+}
+
+/// Camera clipping: a near plane inside a sphere shows its far inside wall, a far plane
+/// before it shows the background, and the depth channel stays the distance from the eye.
+#[test]
+fn camera_clip_planes_cut_what_the_camera_sees() {
+    use std::path::Path;
+    let scene = |clip: &str| {
+        format!(
+            "[camera]\neye = [0.0, 0.0, 5.0]\ntarget = [0.0, 0.0, 0.0]\nvfov = 5.0\n{clip}\n[render]\nresolution = [8, 8]\nspp = 1\n\
+             [[light]]\ntype = \"environment\"\nradiance = [0.5, 0.5, 0.5]\n\
+             [[mesh]]\nshape = {{ type = \"sphere\", radius = 1.0 }}\nmaterial = {{ type = \"diffuse\", color = [0.5, 0.5, 0.5] }}\n"
+        )
+    };
+    let centre_depth = |clip: &str| {
+        let desc = tress::io::scene_file::parse(&scene(clip), Path::new("clip.toml"), None).unwrap().0;
+        let (world, _) = tress::prepare::prepare(&desc).unwrap();
+        let film = tress::render::render(&world, None).0;
+        let p = &film.pixels[4 * 8 + 4];
+        (p.coverage > 0.5).then_some(p.depth)
+    };
+    let front = centre_depth("").expect("the sphere is seen");
+    assert!((front - 4.0).abs() < 0.01, "{front}");
+    let back = centre_depth("clip = [4.5, 100.0]").expect("the far wall is seen");
+    assert!((back - 6.0).abs() < 0.01, "{back}");
+    assert_eq!(centre_depth("clip = [0.1, 3.0]"), None);
+    let err = tress::io::scene_file::parse(&scene("clip = [2.0, 1.0]"), Path::new("clip.toml"), None).unwrap_err();
+    assert!(err.to_string().contains("clip.toml") && err.to_string().contains("`clip`"), "{err}");
 }

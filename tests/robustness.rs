@@ -14,7 +14,7 @@ use tress::world::{RenderSettings, World};
 
 fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> World {
     let desc = Description {
-        camera: CameraDesc { eye, target: Vec3::ZERO, up: Vec3::Y, vfov: 1.0 },
+        camera: CameraDesc { eye, target: Vec3::ZERO, up: Vec3::Y, vfov: 1.0, ..Default::default() },
         settings: RenderSettings { width: 8, height: 8, spp: 1, max_depth: 0, ..Default::default() },
         lights: vec![Light::Distant { direction: light_dir.normalize(), irradiance: Color::ONE }],
         meshes: vec![],

@@ -115,6 +115,7 @@ def test_export_matches_blender(addon, tmp_path):
     view = np.array(doc.camera["target"]) - np.array(doc.camera["eye"])
     axis = -np.array(cam.matrix_world.to_3x3().col[2])
     assert np.allclose(view, axis, atol=1e-6)
+    assert doc.camera["clip"] == [pytest.approx(cam.data.clip_start), pytest.approx(cam.data.clip_end)]
     (distant,) = [light for light in doc.lights if light["type"] == "distant"]
     assert distant["irradiance"] == pytest.approx([3.0, 3.0, 3.0])
     assert np.allclose(distant["direction"], np.array(sun.matrix_world.to_3x3().col[2]), atol=1e-6)

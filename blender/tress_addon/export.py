@@ -14,7 +14,8 @@ camera's own Y axis, so no axis conversion is needed.
 - Meshes: the evaluated mesh in world space, split by material slot, each part with its
   material's nearest tress material (:mod:`.materials`).
 - Camera: position and orientation, vertical field of view from focal length, sensor size
-  and sensor fit; clipping and orthographic cameras are not mapped (warned).
+  and sensor fit, clip start and end; orthographic cameras and lens shift are not mapped
+  (warned).
 - Lights: sun to ``distant`` (strength as irradiance, angle as angular diameter), point
   to ``point`` (or a ``sphere`` light of its radius), spot to ``spot``, area to ``quad``;
   Blender's watts are turned into intensity as ``power / 4π`` (point, spot) and into
@@ -82,12 +83,12 @@ def camera(obj, scene, warnings):
     w, h = resolution(scene)
     if cam.type != "PERSP":
         warnings.append(f"camera {obj.name}: {cam.type.lower()} projection is rendered as perspective")
-    if cam.clip_start > 1e-3 + 0.1 or cam.clip_end < 1000.0 - 1e-3:
-        warnings.append(f"camera {obj.name}: clipping ({cam.clip_start:g} to {cam.clip_end:g}) is not mapped")
     if abs(cam.shift_x) > 1e-6 or abs(cam.shift_y) > 1e-6:
         warnings.append(f"camera {obj.name}: lens shift is not mapped")
     vfov = vertical_fov(cam.lens, cam.sensor_width, cam.sensor_height, cam.sensor_fit, w, h)
-    return {"eye": eye.tolist(), "target": (eye + forward).tolist(), "up": up.tolist(), "vfov": vfov}
+    # Blender's clip distances are along the view axis, as tress's.
+    clip = [float(cam.clip_start), float(cam.clip_end)]
+    return {"eye": eye.tolist(), "target": (eye + forward).tolist(), "up": up.tolist(), "vfov": vfov, "clip": clip}
 
 
 def light(obj, warnings):

@@ -236,7 +236,7 @@ pub fn framing_camera(b: &Aabb) -> CameraDesc {
     };
     let distance = 1.15 * radius / (0.5 * vfov.to_radians()).sin();
     let eye = center + Vec3::new(0.0, 0.3, 1.0).normalize() * distance;
-    CameraDesc { eye, target: center, up: Vec3::Y, vfov }
+    CameraDesc { eye, target: center, up: Vec3::Y, vfov, ..Default::default() }
 }
 
 /// `l` moved by `m` (directions keep unit length; radii and intensities stay).

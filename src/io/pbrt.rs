@@ -965,6 +965,7 @@ impl Parser {
                 target: (eye + forward).as_vec3(),
                 up: up.as_vec3(),
                 vfov: vfov as f32,
+                ..Default::default()
             });
             // pbrt shows camera +x on the right of the image; a right-handed camera shows
             // forward × up there. When the two differ, mirror the world about the plane

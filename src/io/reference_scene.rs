@@ -97,6 +97,7 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
             target: s.camera.target.into(),
             up: s.camera.up.into(),
             vfov: s.camera.vfov_deg,
+            ..Default::default()
         },
         settings: RenderSettings { width: s.film.width, height: s.film.height, spp: s.film.spp, ..Default::default() },
         lights,

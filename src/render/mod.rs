@@ -127,7 +127,7 @@ fn render_pixel(tracer: &mut Tracer, (x, y): (u32, u32), shadows: &mut PixelShad
             keys.push(first.map(|f| (f.object, f.strand)));
             if let Some(f) = first {
                 if hits == 0 {
-                    pixel.depth = f.t;
+                    pixel.depth = f.t + world.camera.clip_start(ray.dir);
                     pixel.normal = f.normal;
                     pixel.object_id = f.object as f32;
                     pixel.strand_id = f.strand.map_or(-1.0, |s| s as f32);

@@ -27,12 +27,22 @@ pub struct CameraDesc {
     pub up: Vec3,
     /// Vertical field of view in degrees.
     pub vfov: f32,
+    /// Near and far clipping distances, measured along the view direction (Blender's Clip
+    /// Start and End, Maya's near and far clip planes): nothing nearer or farther is seen.
+    /// `[0, inf]` clips nothing.
+    pub clip: [f32; 2],
 }
 
 impl Default for CameraDesc {
     /// Looking at the origin from 5 units along +z, y up, 35 degrees.
     fn default() -> Self {
-        CameraDesc { eye: Vec3::new(0.0, 0.0, 5.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 35.0 }
+        CameraDesc {
+            eye: Vec3::new(0.0, 0.0, 5.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov: 35.0,
+            clip: [0.0, f32::INFINITY],
+        }
     }
 }
 

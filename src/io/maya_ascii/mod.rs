@@ -764,7 +764,7 @@ impl<'g> Reader<'g> {
             false => aperture[1] * 25.4 / (2.0 * focal),
         };
         let vfov = (2.0 * half_tan.atan()).to_degrees() as f32;
-        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov });
+        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov, ..Default::default() });
         Ok(())
     }
 

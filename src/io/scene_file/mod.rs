@@ -93,7 +93,14 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             for (key, v) in [("eye", &eye[..]), ("target", &target[..]), ("up", &c.up[..]), ("vfov", &[vfov][..])] {
                 finite(&format!("camera `{key}`"), v)?;
             }
-            Some(CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov })
+            let clip = c.clip.unwrap_or(CameraDesc::default().clip);
+            if !(clip[0] >= 0.0 && clip[0].is_finite() && clip[1] > clip[0]) {
+                return Err(invalid(format!(
+                    "camera `clip` [{}, {}]: give [near, far] with a finite near >= 0 and a larger far (inf for none)",
+                    clip[0], clip[1]
+                )));
+            }
+            Some(CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov, clip })
         }
         None => None,
     };

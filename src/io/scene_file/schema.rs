@@ -93,6 +93,9 @@ pub(super) struct CameraToml {
     pub(super) up: V3,
     #[serde(default = "default_vfov")]
     pub(super) vfov: f32,
+    /// `[near, far]` clipping distances along the view direction.
+    #[serde(default)]
+    pub(super) clip: Option<[f32; 2]>,
     /// A camera path: keys at frames, interpolated linearly between them.
     #[serde(default)]
     pub(super) key: Vec<CameraKeyToml>,

@@ -58,5 +58,5 @@ pub fn read_camera(
         "its transform does not give a view direction and an up direction"
     );
     let target = eye + forward.normalize();
-    Ok((CameraDesc { eye, target, up: up.normalize(), vfov }, [w, h]))
+    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, ..Default::default() }, [w, h]))
 }
