@@ -250,7 +250,14 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
         match kind.as_str() {
             "BasisCurves" | "NurbsCurves" => {
                 let read = if kind == "BasisCurves" { curves::read_basis_curves } else { curves::read_nurbs_curves };
-                if let Some(mut entry) = read(&prim, time, transform, notes).map_err(what)? {
+                let read = match read(&prim, time, transform, notes) {
+                    Ok(read) => read,
+                    Err(e) => {
+                        skip(notes, &prim, e);
+                        continue;
+                    }
+                };
+                if let Some(mut entry) = read {
                     if !has_display_color(&prim, time) {
                         if let (Some(c), Material::Tube(t)) =
                             (shapes::surface_color(&prim, time, notes)?, &mut entry.material)
@@ -263,14 +270,26 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
             }
             "Camera" => cameras.push((prim, transform)),
             "Mesh" => {
-                let mesh = shapes::read_mesh(&prim, time).map_err(what)?;
+                let mesh = match shapes::read_mesh(&prim, time) {
+                    Ok(mesh) => mesh,
+                    Err(e) => {
+                        skip(notes, &prim, e);
+                        continue;
+                    }
+                };
                 if token(values::value(&prim, "subdivisionScheme", time)?, "catmullClark") != "none" {
                     notes.note("subdivision surfaces: drawn as their control cage".into(), &prim);
                 }
                 push_mesh(out, mesh, shapes::surface_color(&prim, time, notes).map_err(what)?, transform);
             }
             k if shapes::GPRIMS.contains(&k) => {
-                let mesh = shapes::read_gprim(&prim, k, time).map_err(what)?;
+                let mesh = match shapes::read_gprim(&prim, k, time) {
+                    Ok(mesh) => mesh,
+                    Err(e) => {
+                        skip(notes, &prim, e);
+                        continue;
+                    }
+                };
                 push_mesh(out, mesh, shapes::surface_color(&prim, time, notes).map_err(what)?, transform);
             }
             light => out.lights.push(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?),
@@ -303,6 +322,14 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
         out.resolution = Some(size);
     }
     Ok(())
+}
+
+/// Counts a curves, mesh or gprim prim whose data is inconsistent (counts that do not add
+/// up to its points, indices out of range, ...) as skipped: the rest of the stage still
+/// renders, as in USD's own renderers. The warning names the first such prim and why.
+fn skip(notes: &mut Notes, prim: &Prim, e: anyhow::Error) {
+    let first = format!("{}: {e:#}", prim.path());
+    notes.0.entry("prims whose data is inconsistent: skipped".into()).or_insert((0, first)).0 += 1;
 }
 
 /// Whether a curves prim authors its own `primvars:displayColor` (which wins over a bound

@@ -191,30 +191,53 @@ fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> HairEnt
 
 /// Checks a primvar's length against what its interpolation needs.
 impl CurveData {
-    /// Checks that widths and colours have the length their interpolation needs
-    /// (`varying_total` values for `varying`, which depends on the curve type), and
-    /// returns the colour when it is constant.
-    fn check_primvars(&self, varying_total: usize) -> Res<Option<Vec3>> {
-        let expect = |i: Interpolation| match i {
-            Interpolation::Constant => 1,
-            Interpolation::Uniform => self.counts.len(),
-            Interpolation::Varying => varying_total,
-            Interpolation::Vertex => self.points.len(),
-        };
-        let check = |what: &str, len: usize, interp: Interpolation| -> Res<()> {
-            anyhow::ensure!(len == expect(interp), "{len} {what} where {interp:?} needs {}", expect(interp));
-            Ok(())
-        };
-        if let Some((w, i)) = &self.widths {
-            check("widths", w.len(), *i)?;
-        }
-        if let Some((c, i)) = &self.colors {
-            check("colours", c.len(), *i)?;
-        }
-        Ok(match &self.colors {
+    /// Fits widths and colours to the length their interpolation needs (`varying_total`
+    /// values for `varying`, which depends on the curve type): a primvar whose length does
+    /// not fit its interpolation is read with the interpolation its length fits (one value
+    /// is constant), else left out, as USD's renderers ignore a primvar of the wrong size;
+    /// both reported. Returns the colour when it is constant.
+    fn check_primvars(&mut self, varying_total: usize, prim: &Prim, notes: &mut Notes) -> Option<Vec3> {
+        let expect = [
+            (Interpolation::Constant, 1),
+            (Interpolation::Vertex, self.points.len()),
+            (Interpolation::Varying, varying_total),
+            (Interpolation::Uniform, self.counts.len()),
+        ];
+        fit(&mut self.widths, "widths", &expect, prim, notes);
+        fit(&mut self.colors, "displayColor", &expect, prim, notes);
+        match &self.colors {
             Some((c, Interpolation::Constant)) => Some(c[0]),
             _ => None,
-        })
+        }
+    }
+}
+
+/// A primvar fitted to the length its interpolation needs (see `check_primvars`).
+fn fit<T>(
+    primvar: &mut Option<(Vec<T>, Interpolation)>,
+    what: &str,
+    expect: &[(Interpolation, usize)],
+    prim: &Prim,
+    notes: &mut Notes,
+) {
+    let Some((values, interp)) = primvar else { return };
+    let needs = expect.iter().find(|(i, _)| i == interp).map_or(0, |e| e.1);
+    if values.len() == needs {
+        return;
+    }
+    let (len, was) = (values.len(), *interp);
+    match expect.iter().find(|(_, n)| *n == len) {
+        Some((i, _)) => {
+            notes.note(format!("{what} whose count does not fit their interpolation: read as {i:?}"), prim);
+            *interp = *i;
+        }
+        None => {
+            notes.note(
+                format!("{what} whose count fits no interpolation ({len} where {was:?} needs {needs}): left out"),
+                prim,
+            );
+            *primvar = None;
+        }
     }
 }
 
@@ -238,9 +261,9 @@ pub fn read_basis_curves(
         }
     };
     let shape = CurveShape { basis, periodic: wrap == "periodic", pinned: wrap == "pinned" };
-    let d = curve_data(prim, time, notes)?;
+    let mut d = curve_data(prim, time, notes)?;
     let varying_total: usize = d.counts.iter().map(|&n| shape.ends(n)).sum();
-    let constant_color = d.check_primvars(varying_total)?;
+    let constant_color = d.check_primvars(varying_total, prim, notes);
     let mut set = StrandSet::new();
     let mut point_colors = Vec::new();
     let (mut offset, mut varying, mut skipped) = (0usize, 0usize, 0usize);
@@ -315,7 +338,7 @@ pub fn read_nurbs_curves(
     transform: Affine3A,
     notes: &mut Notes,
 ) -> Res<Option<HairEntry>> {
-    let d = curve_data(prim, time, notes)?;
+    let mut d = curve_data(prim, time, notes)?;
     let mut orders = ints(value(prim, "order", time)?, "order")?.unwrap_or_default();
     let mut knots = match doubles(value(prim, "knots", time)?, "knots")? {
         Some(k) => k,
@@ -347,7 +370,7 @@ pub fn read_nurbs_curves(
         anyhow::ensure!(w.len() == d.points.len(), "{} pointWeights for {} points", w.len(), d.points.len());
     }
     let varying_total: usize = d.counts.iter().zip(&orders).map(|(&n, &o)| (n + 2).saturating_sub(o as usize)).sum();
-    let constant_color = d.check_primvars(varying_total)?;
+    let constant_color = d.check_primvars(varying_total, prim, notes);
     let mut set = StrandSet::new();
     let mut point_colors = Vec::new();
     let (mut offset, mut knot_at, mut varying) = (0usize, 0usize, 0usize);

@@ -144,12 +144,16 @@ fn export_then_import_keeps_points_widths_and_colours() {
 fn malformed_files_are_errors_with_lines_and_no_panic() {
     let e = read_text("#usda 1.0\ndef Xform \"A\"\n{\n    float x = \n}\n").unwrap_err().to_string();
     assert!(e.contains("line 5") || e.contains("line 4"), "{e}");
-    let e = read_text(&SCENE.replace("[4]", "[5]")).unwrap_err().to_string();
-    assert!(e.contains("/World/Cubic") && e.contains("curveVertexCounts"), "{e}");
-    let e = read_text(&SCENE.replace("[0.05, 0.03]", "[0.05]")).unwrap_err().to_string();
-    assert!(e.contains("widths"), "{e}");
-    let e = read_text(&SCENE.replace("[0, 1, 2, 3]", "[0, 1, 2, 9]")).unwrap_err().to_string();
-    assert!(e.contains("/World/Ground"), "{e}");
+    // A prim whose data does not add up is skipped, named, and the rest still read.
+    let s = read_text(&SCENE.replace("[4]", "[5]").replace("[0, 1, 2, 3]", "[0, 1, 2, 9]")).unwrap();
+    let skipped: Vec<_> = s.warnings.iter().filter(|w| w.contains("inconsistent: skipped")).collect();
+    assert_eq!(skipped.len(), 1, "{:?}", s.warnings);
+    assert!(
+        skipped[0].contains("(2; first: /World/Cubic: ") && skipped[0].contains("curveVertexCounts"),
+        "{skipped:?}"
+    );
+    assert_eq!((s.hair.len(), s.meshes.len()), (1, 0));
+
     // Deep nesting would overflow the parser's stack: refused up front.
     let deep = format!("#usda 1.0\n{}{}", "def \"A\" {\n".repeat(100_000), "}\n".repeat(100_000));
     let e = read_text(&deep).unwrap_err().to_string();
@@ -671,4 +675,34 @@ fn arcs_through_other_files_back_to_their_prim_are_an_error_naming_the_chain() {
     write("parts.usda", "def Sphere \"Ball\" (references = @fine.usda@</Y>) {}\n");
     let s = read(&a).unwrap();
     assert_eq!(s.meshes.len(), 2, "{:?}", s.warnings);
+}
+
+#[test]
+fn primvars_whose_count_does_not_fit_their_interpolation_are_refitted_or_left_out() {
+    // Two curves of 4 points; widths authored as `constant` with one value per curve (as
+    // Maya's exporter writes batches), and as `varying` with one value.
+    let curves = |widths: &str| {
+        format!(
+            "def BasisCurves \"C\" {{\n    uniform token type = \"linear\"\n    int[] curveVertexCounts = [4, 4]\n    \
+             point3f[] points = [(0,0,0),(0,1,0),(0,2,0),(0,3,0),(1,0,0),(1,1,0),(1,2,0),(1,3,0)]\n    {widths}\n}}\n"
+        )
+    };
+    let radii = |s: &Imported| strands(s, 0).points.iter().map(|p| p[3]).collect::<Vec<_>>();
+    let s = read_body(&curves("float[] widths = [0.2, 0.4] (interpolation = \"constant\")"));
+    assert_eq!(radii(&s), [0.1, 0.1, 0.1, 0.1, 0.2, 0.2, 0.2, 0.2]);
+    assert!(
+        s.warnings.iter().any(|w| w.contains("widths whose count does not fit") && w.contains("Uniform")),
+        "{:?}",
+        s.warnings
+    );
+    let s = read_body(&curves("float[] widths = [0.2] (interpolation = \"varying\")"));
+    assert!(radii(&s).iter().all(|&r| r == 0.1), "{:?}", radii(&s));
+    // Three widths fit nothing: left out (the schema's fallback width), said so.
+    let s = read_body(&curves("float[] widths = [0.2, 0.4, 0.6] (interpolation = \"vertex\")"));
+    assert!(radii(&s).iter().all(|&r| r == 0.5), "{:?}", radii(&s));
+    assert!(
+        s.warnings.iter().any(|w| w.contains("widths whose count fits no interpolation (3 where Vertex needs 8)")),
+        "{:?}",
+        s.warnings
+    );
 }
