@@ -56,33 +56,73 @@ pub fn map_dimensions(path: &Path) -> Result<(u32, u32), LoadError> {
     Ok((w, h))
 }
 
+/// Largest side, in texels, a fur map keeps once decoded. A map is sampled once per hair
+/// root, bilinearly: a 2048 x 2048 map already holds a texel for each of 4 million roots, so
+/// a larger one is averaged down to this size by whole blocks of texels (an 8192 x 8192
+/// map keeps 50 MB of texels instead of 805 MB). The cap is fixed, not derived from the
+/// fur's density, so a root keeps its hair when the density changes.
+pub const MAX_KEPT_SIDE: u32 = 2048;
+
+/// The block of texels (a side, `k`) averaged into one kept texel for a map of `width` by
+/// `height`: 1 up to [`MAX_KEPT_SIDE`], else the smallest whole number that brings both
+/// sides within it.
+pub fn reduction(width: u32, height: u32) -> u32 {
+    width.max(height).div_ceil(MAX_KEPT_SIDE).max(1)
+}
+
 /// Decodes one map image to RGB texels as stored (colour maps stay sRGB-encoded; the fur
-/// linearises them).
+/// linearises them), averaged down by [`reduction`] when the image is larger than
+/// [`MAX_KEPT_SIDE`] a side.
 fn read_map_image(path: &Path) -> Result<MapImage, LoadError> {
     let img = map_reader(path)?.decode().map_err(|e| decode_error(path, e))?;
     let (width, height) = (img.width(), img.height());
     if width == 0 || height == 0 {
         return Err(LoadError::invalid(path, "map image is empty"));
     }
-    let n = width as usize * height as usize;
-    let what = || format!("the map {}", path.display());
-    let mut texels =
-        crate::memory::try_filled([0.0f32; 3], n, &what()).map_err(|e| LoadError::invalid(path, e.to_string()))?;
-    // 8-bit images (the usual maps) convert straight to the texels kept, without a
-    // floating-point copy of the whole image.
-    match img {
+    let what = format!("the map {}", path.display());
+    let texels = match img {
+        // 8-bit images (the usual maps) convert straight to the texels kept, without a
+        // floating-point copy of the whole image.
         img if img.color().bytes_per_pixel() == img.color().channel_count() => {
-            for (t, p) in texels.iter_mut().zip(img.into_rgb8().pixels()) {
-                *t = p.0.map(|v| f32::from(v) / 255.0);
-            }
+            let rgb = img.into_rgb8();
+            reduced(width, height, |x, y| rgb.get_pixel(x, y).0.map(|v| f32::from(v) / 255.0), &what)
         }
         img => {
-            for (t, p) in texels.iter_mut().zip(img.into_rgb32f().pixels()) {
-                *t = p.0;
-            }
+            let rgb = img.into_rgb32f();
+            reduced(width, height, |x, y| rgb.get_pixel(x, y).0, &what)
         }
     }
-    Ok(MapImage { path: path.to_path_buf(), width, height, texels })
+    .map_err(|e| LoadError::invalid(path, e.to_string()))?;
+    let k = reduction(width, height);
+    Ok(MapImage { path: path.to_path_buf(), width: width.div_ceil(k), height: height.div_ceil(k), texels })
+}
+
+/// The texels of a `width` by `height` image whose texel at column `x`, row `y` is
+/// `texel(x, y)`, each block of [`reduction`] texels a side averaged into one (blocks at
+/// the right and bottom edges may be partial: they average what they hold).
+fn reduced(
+    width: u32,
+    height: u32,
+    texel: impl Fn(u32, u32) -> [f32; 3],
+    what: &str,
+) -> Result<Vec<[f32; 3]>, crate::memory::OutOfMemory> {
+    let k = reduction(width, height);
+    let (w, h) = (width.div_ceil(k), height.div_ceil(k));
+    let mut texels = crate::memory::try_filled([0.0f32; 3], w as usize * h as usize, what)?;
+    for (i, t) in texels.iter_mut().enumerate() {
+        let (bx, by) = (i as u32 % w * k, i as u32 / w * k);
+        let (xs, ys) = (bx..(bx + k).min(width), by..(by + k).min(height));
+        let n = (xs.len() * ys.len()) as f32;
+        let mut sum = [0.0f32; 3];
+        for y in ys {
+            for x in xs.clone() {
+                let p = texel(x, y);
+                (0..3).for_each(|c| sum[c] += p[c]);
+            }
+        }
+        *t = sum.map(|v| v / n);
+    }
+    Ok(texels)
 }
 
 #[cfg(test)]
@@ -103,6 +143,25 @@ mod tests {
         let i = &images[0];
         assert_eq!((i.path.as_path(), i.width, i.height), (grey.as_path(), 2, 1));
         assert_eq!(i.texels, [[128.0 / 255.0; 3], [0.0, 0.0, 1.0]], "texels as stored, not linearised");
+    }
+
+    #[test]
+    fn maps_larger_than_kept_are_averaged_down_by_whole_blocks() {
+        assert_eq!((reduction(1, 1), reduction(MAX_KEPT_SIDE, 7), reduction(MAX_KEPT_SIDE + 1, 1)), (1, 1, 2));
+        assert_eq!(reduction(8192, 8192), 4);
+        let dir = tempfile::tempdir().unwrap();
+        // 2049 x 2 texels, a column of 0 then 255 repeating: blocks of 2 x 2 average to
+        // one half, and the last, partial column (index 2048, value 0) stays 0.
+        let (w, h) = (MAX_KEPT_SIDE + 1, 2);
+        let pixels: Vec<u8> = (0..w * h).flat_map(|i| [if i % w % 2 == 1 { 255 } else { 0 }; 3]).collect();
+        let wide = dir.path().join("wide.png");
+        image::save_buffer(&wide, &pixels, w, h, image::ColorType::Rgb8).unwrap();
+        let mut d = FurDescription::default();
+        d[Scalar::Length].map = Some(MapSource::Image(wide));
+        let i = &read_map_images(&d).unwrap()[0];
+        assert_eq!((i.width, i.height), (MAX_KEPT_SIDE / 2 + 1, 1));
+        assert!(i.texels[..i.texels.len() - 1].iter().all(|t| *t == [0.5; 3]), "{:?}", &i.texels[..4]);
+        assert_eq!(i.texels.last(), Some(&[0.0; 3]));
     }
 
     #[test]
