@@ -314,6 +314,25 @@ fn a_hair_file_without_strands_is_named_in_a_warning() {
     assert!(stderr.contains("warning: ") && stderr.contains("empty.hair: the file holds no strands"), "{stderr}");
 }
 
+/// An image named as the scene was read as a scene TOML (an empty `.exr` rendered an empty
+/// scene, exit 0), and a scene with nothing in it rendered its background without a word.
+#[test]
+fn images_are_not_scenes_and_empty_scenes_are_said() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::write(d.join("beauty.exr"), b"").unwrap();
+    assert_refused(
+        &tress(&["render", "beauty.exr", "-o", "x.png"], d),
+        &["beauty.exr: is an OpenEXR image, not a scene"],
+    );
+    assert!(!d.join("x.png").exists());
+    std::fs::write(d.join("empty.toml"), HEAD).unwrap();
+    let out = tress(&["render", "empty.toml", "-o", "x.png"], d);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(stderr.contains("empty.toml: the scene has nothing to render"), "{stderr}");
+}
+
 /// Parses Maya ASCII text in memory, returning the result and the time it took.
 fn parse_maya_timed(text: &str) -> (Result<tress::io::imported::Imported, String>, Duration) {
     let start = Instant::now();

@@ -186,14 +186,36 @@ pub fn read_scene_with(
     if path.is_dir() {
         return Ok((reference_scene::read_reference_scene(path)?, Vec::new()));
     }
-    let (desc, warnings) = if is_imported(path) {
+    let (desc, mut warnings) = if is_imported(path) {
         read_imported_with(path, options)?.into_description()
     } else if options.camera.is_some() {
         return Err(no_named_cameras(path).into());
+    } else if let Some(kind) = image_kind(path) {
+        // Anything else is read as a scene TOML, where an image's bytes (or an empty image
+        // file) would make a parse error about TOML or an empty scene.
+        return Err(LoadError::invalid(path, format!("is {kind} image, not a scene")).into());
     } else {
         scene_file::read(path, frame)?
     };
+    let c = &desc;
+    if c.meshes.is_empty() && c.hair.is_empty() && c.hair_systems.is_empty() && c.fur.is_empty() {
+        warnings.push("the scene has nothing to render (no meshes, hair, hair systems or fur)".into());
+    }
     Ok((desc, warnings.into_iter().map(|w| format!("{}: {w}", path.display())).collect()))
+}
+
+/// The kind of image `path` names by its extension (`"an OpenEXR"`), if it names one.
+fn image_kind(path: &Path) -> Option<&'static str> {
+    let ext = path.extension()?.to_str()?.to_ascii_lowercase();
+    Some(match ext.as_str() {
+        "exr" => "an OpenEXR",
+        "png" => "a PNG",
+        "jpg" | "jpeg" => "a JPEG",
+        "hdr" => "a Radiance HDR",
+        "pfm" => "a PFM",
+        "tif" | "tiff" => "a TIFF",
+        _ => return None,
+    })
 }
 
 /// Writes `bytes` to `path` atomically: to a temporary file in the same directory (so the
