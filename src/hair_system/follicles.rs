@@ -198,16 +198,37 @@ pub fn grow_guides(mesh: &TriangleMesh, params: &FollicleParams, seed: u32) -> R
     Ok(Guides { curves: set, root_uv })
 }
 
-/// The follicle at each of `uvs` on `mesh` (world space, as the mesh is), with the
-/// triangle it lies on; `None` where no triangle covers the UV. Maya's follicles are placed
-/// this way, by `parameterU` and `parameterV` (docs/maya-fur-hair.md section 5.4).
-pub fn follicles_at_uvs(mesh: &TriangleMesh, uvs: &[[f32; 2]]) -> Result<Vec<Option<(Follicle, u32)>>, String> {
+/// Where a follicle placed by UV lands.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UvPlacement {
+    /// The follicle (world space, as the mesh is).
+    pub follicle: Follicle,
+    /// The triangle it lies on.
+    pub triangle: u32,
+    /// How far the UV asked for is from that triangle's UVs: 0 when the triangle covers
+    /// it, else the follicle is at the nearest point of the mesh's UVs.
+    pub uv_distance: f32,
+}
+
+/// The follicle at each of `uvs` on `mesh`. Maya's follicles are placed this way, by
+/// `parameterU` and `parameterV` (docs/maya-fur-hair.md section 5.4); a UV that no triangle
+/// covers (a gap between a sphere's pole triangles, a point off a cut-out layout) takes the
+/// nearest point of the UV layout. `None` only where no triangle has UVs of any area.
+pub fn follicles_at_uvs(mesh: &TriangleMesh, uvs: &[[f32; 2]]) -> Result<Vec<Option<UvPlacement>>, String> {
     let mesh_uvs = mesh.uvs.as_ref().ok_or("placing follicles by UV needs a mesh with UVs")?;
     if mesh.indices.is_empty() {
         return Err("the mesh has no triangles".into());
     }
     let lookup = UvLookup::new(mesh, mesh_uvs);
-    Ok(uvs.iter().map(|&uv| lookup.find(uv).map(|(t, b1, b2)| (follicle_at(mesh, t, b1, b2), t))).collect())
+    let place = |(triangle, b1, b2, uv_distance)| UvPlacement {
+        follicle: follicle_at(mesh, triangle, b1, b2),
+        triangle,
+        uv_distance,
+    };
+    Ok(uvs
+        .iter()
+        .map(|&uv| lookup.find(uv).map(|(t, b1, b2)| (t, b1, b2, 0.0)).or_else(|| lookup.nearest(uv)).map(place))
+        .collect())
 }
 
 fn in_region(uv: [f32; 2], p: &FollicleParams) -> bool {
@@ -333,6 +354,47 @@ impl<'a> UvLookup<'a> {
         (f(0), f(1))
     }
 
+    /// The triangle whose UVs come nearest `uv`, with the barycentrics of the nearest
+    /// point and its distance: the cells in rings around `uv`'s, until no nearer
+    /// triangle can be in the next ring.
+    fn nearest(&self, uv: [f32; 2]) -> Option<(u32, f32, f32, f32)> {
+        let clamped = [0, 1].map(|k| uv[k].clamp(self.min[k], self.min[k] + self.size[k]));
+        // Distance from `uv` to the UV bounds, which every triangle's point is beyond.
+        let outside = ((uv[0] - clamped[0]).powi(2) + (uv[1] - clamped[1]).powi(2)).sqrt();
+        let (cx, cy) = self.cell(clamped);
+        let cell = self.size[0].min(self.size[1]) / self.res as f32;
+        let mut best: Option<(u32, f32, f32, f32)> = None;
+        let mut seen = vec![false; self.mesh.indices.len()];
+        for ring in 0..self.res {
+            // Every point of a cell of this ring is at least this far from `uv`.
+            let reach = outside.max(ring.saturating_sub(1) as f32 * cell);
+            if best.is_some_and(|b| b.3 <= reach) {
+                break;
+            }
+            let (lo_x, hi_x) = (cx.saturating_sub(ring), (cx + ring).min(self.res - 1));
+            let (lo_y, hi_y) = (cy.saturating_sub(ring), (cy + ring).min(self.res - 1));
+            for y in lo_y..=hi_y {
+                for x in lo_x..=hi_x {
+                    if x.abs_diff(cx) != ring && y.abs_diff(cy) != ring {
+                        continue;
+                    }
+                    for &t in &self.cells[y * self.res + x] {
+                        if std::mem::replace(&mut seen[t as usize], true) {
+                            continue;
+                        }
+                        let c = self.mesh.indices[t as usize].map(|i| self.uvs[i as usize]);
+                        if let Some((b1, b2, d)) = closest_in_triangle(uv, c) {
+                            if best.is_none_or(|b| d < b.3) {
+                                best = Some((t, b1, b2, d));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        best
+    }
+
     /// The first triangle (by index) whose UV triangle holds `uv`, with the barycentrics.
     fn find(&self, uv: [f32; 2]) -> Option<(u32, f32, f32)> {
         if !(0..2).all(|k| uv[k] >= self.min[k] && uv[k] <= self.min[k] + self.size[k]) {
@@ -352,6 +414,32 @@ impl<'a> UvLookup<'a> {
             (b1 >= -EPS && b2 >= -EPS && b1 + b2 <= 1.0 + EPS).then_some((t, b1.max(0.0), b2.max(0.0)))
         })
     }
+}
+
+/// The point of the 2-D triangle `c` nearest `p`: its barycentrics (of `c[1]`, `c[2]`) and
+/// distance; `None` for a triangle of no area.
+fn closest_in_triangle(p: [f32; 2], c: [[f32; 2]; 3]) -> Option<(f32, f32, f32)> {
+    let v = |a: [f32; 2], b: [f32; 2]| glam::Vec2::new(b[0] - a[0], b[1] - a[1]);
+    let (e1, e2, q) = (v(c[0], c[1]), v(c[0], c[2]), v(c[0], p));
+    let det = e1.perp_dot(e2);
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let (b1, b2) = (q.perp_dot(e2) / det, e1.perp_dot(q) / det);
+    if b1 >= 0.0 && b2 >= 0.0 && b1 + b2 <= 1.0 {
+        return Some((b1, b2, 0.0));
+    }
+    // Outside: the nearest point is on an edge; (b1, b2) of each edge's end points.
+    let edges = [((0.0, 0.0), (1.0, 0.0)), ((1.0, 0.0), (0.0, 1.0)), ((0.0, 1.0), (0.0, 0.0))];
+    edges
+        .iter()
+        .map(|&((a1, a2), (z1, z2))| {
+            let (a, z) = (e1 * a1 + e2 * a2, e1 * z1 + e2 * z2);
+            let t = ((q - a).dot(z - a) / (z - a).length_squared()).clamp(0.0, 1.0);
+            let (b1, b2) = (a1 + (z1 - a1) * t, a2 + (z2 - a2) * t);
+            (b1, b2, (a + (z - a) * t - q).length())
+        })
+        .min_by(|x, y| x.2.total_cmp(&y.2))
 }
 
 #[cfg(test)]

@@ -153,6 +153,9 @@ impl Imported {
             *l = transform_light(l, m);
         }
         if let Some(c) = &mut self.camera {
+            // The clip distances are along the view: they stretch with it.
+            let stretch = m.transform_vector3((c.target - c.eye).normalize_or(Vec3::NEG_Z)).length();
+            c.clip = c.clip.map(|d| d * stretch);
             c.eye = m.transform_point3(c.eye);
             c.target = m.transform_point3(c.target);
             c.up = m.transform_vector3(c.up).normalize_or(Vec3::Y);

@@ -9,7 +9,8 @@
 //! "perspective"` (`fov`, on the shorter image side), `Film` (`xresolution`,
 //! `yresolution`), `Sampler` (`pixelsamples`), `Integrator`, `LightSource` `distant`,
 //! `infinite`, `point` and `spot`, `Material` and `MakeNamedMaterial`/`NamedMaterial`,
-//! and `Shape` `curve`, `trianglemesh`, `plymesh` and `sphere`.
+//! and `Shape` `curve`, `trianglemesh`, `plymesh`, `sphere`, `disk`, `cylinder` and
+//! `bilinearmesh` (the last three as meshes, `surfaces.rs`).
 //!
 //! **Compressed files.** Any file read (the scene, its includes, PLY meshes) may be gzip
 //! data, recognised by its magic bytes as pbrt does (`geometry/hair.pbrt.gz`).
@@ -552,6 +553,13 @@ impl Parser {
                     return Err((line, format!("the shutter interval {exposure} must be positive")));
                 }
                 self.image_scale *= exposure;
+                // tress's camera is a pinhole, as pbrt's thin lens of radius 0 (its default),
+                // whose focus distance changes nothing; a wider lens is said once, its focus
+                // distance with it.
+                if p.float("lensradius", 0.0)? > 0.0 {
+                    self.warnings.insert("camera `lensradius`: depth of field is not applied (rendered sharp)".into());
+                }
+                p.ignore(&["focaldistance"]);
                 self.check_used("Camera", &kind, &p);
             }
             "Film" => {
@@ -759,7 +767,8 @@ impl Parser {
     /// reported one by one).
     fn light(&mut self, kind: &str, p: &Params) -> Res<bool> {
         let w = &mut self.warnings;
-        let scale = p.float("scale", 1.0)? as f32;
+        // pbrt-v4's `scale` is a number; pbrt-v3's a spectrum (`"color scale" [12 12 12]`).
+        let scale = p.color("scale", Vec3::ONE, w)?;
         let ctm = self.state.ctm;
         let point = |name: &str, d: DVec3| -> Res<Vec3> {
             let v = p.point3s(name)?.and_then(|v| v.first().copied()).unwrap_or(d);
@@ -903,6 +912,14 @@ impl Parser {
                 let bytes = super::gzip::read_file(&path, crate::input_file::Kind::Geometry)
                     .map_err(|e| (p.line, e.to_string()))?;
                 let mesh = super::ply::parse_ply(&bytes, &path).map_err(|e| (p.line, e.to_string()))?;
+                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+            }
+            "disk" | "cylinder" | "bilinearmesh" => {
+                let mesh = match kind {
+                    "disk" => surfaces::disk(p)?,
+                    "cylinder" => surfaces::cylinder(p)?,
+                    _ => surfaces::bilinear_mesh(p)?,
+                };
                 self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
             }
             "sphere" => {
@@ -1256,6 +1273,7 @@ fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
 }
 
 mod image_light;
+mod surfaces;
 
 #[cfg(test)]
 mod tests;

@@ -158,8 +158,37 @@ fn read_composed(
         }
     }
     read_stage(&stage, options, &mut out, &mut notes).map_err(|e| LoadError::invalid(path, format!("{e:#}")))?;
+    note_other_units(&stage, &mut notes);
     out.warnings.extend(notes.lines());
     Ok(out)
+}
+
+/// Notes the composed layers (sublayers, references, payloads: those the traversal
+/// loaded) whose `metersPerUnit` differs from the root layer's. UsdGeom keeps linear units
+/// stage-wide and composition does not rescale: bringing a layer of another unit into the
+/// stage's is the assembler's corrective transform, authored in the stage. So the layer
+/// is read as authored, as USD's renderers draw it, and said.
+fn note_other_units(stage: &Stage, notes: &mut Notes) {
+    let mpu = |l: &sdf::Layer| match l.pseudo_root()?.get::<sdf::Value>("metersPerUnit")? {
+        sdf::Value::Double(x) => Some(x),
+        sdf::Value::Float(x) => Some(f64::from(x)),
+        sdf::Value::Int(x) => Some(f64::from(x)),
+        _ => None,
+    };
+    let root_id = stage.root_layer().identifier().to_owned();
+    // UsdGeom's fallback: centimetres.
+    let root = mpu(&stage.root_layer()).unwrap_or(0.01);
+    for id in stage.layer_identifiers().into_iter().filter(|id| *id != root_id) {
+        let Some(theirs) = stage.layer(&id).and_then(|l| mpu(&l)) else { continue };
+        if (theirs - root).abs() > 1e-5 * theirs.abs().max(root.abs()) {
+            let e = notes.0.entry(format!(
+                "composed layers whose metersPerUnit differs from the stage's {root}: read as authored, \
+                 not rescaled (USD leaves that to a corrective transform in the stage)"
+            ));
+            let first = Path::new(&id).file_name().map_or(id.clone(), |f| f.to_string_lossy().into_owned());
+            e.or_insert((0, format!("{first} at {theirs}"))).0 += 1;
+        }
+    }
 }
 
 /// Any prim seen as transformable, to evaluate the transform ops of ancestors whatever

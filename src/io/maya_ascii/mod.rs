@@ -28,12 +28,14 @@
 //! - **camera**: the one asked for by name (`--camera`: its transform's or its shape's
 //!   name), else the first renderable perspective camera other than the default `persp`
 //!   (else `persp`), field of view from focal length (`.fl`), film aperture (`.cap`) and
-//!   film fit (`.ff`); image size from `defaultResolution`.
+//!   film fit (`.ff`), clipped at its near and far clip planes (`.ncp`, `.fcp`); image
+//!   size from `defaultResolution`.
 //! - **lights**: directional, point, spot, ambient and area lights, colour × intensity
 //!   (× 2^`aiExposure` when Arnold's exposure is set). A Maya intensity `I` lights a white
 //!   Lambert surface facing it to `I` (Maya's shading has no 1/π), so tress's irradiance is
 //!   `π I`. Point and spot lights fall off with their decay rate (`.de`): none (Maya's
-//!   default: the same light at every distance), linear, quadratic or cubic.
+//!   default: the same light at every distance), linear, quadratic or cubic. Arnold's
+//!   `aiSkyDomeLight` is a sky of radiance colour (`.sc`) × intensity × 2^exposure.
 //!
 //! Every other node type is skipped, all of them together in one warning.
 
@@ -92,7 +94,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 42] = [
+const KNOWN: [&str; 43] = [
     "transform",
     "mesh",
     "nurbsCurve",
@@ -104,6 +106,7 @@ const KNOWN: [&str; 42] = [
     "spotLight",
     "ambientLight",
     "areaLight",
+    "aiSkyDomeLight",
     "FurDescription",
     "FurFeedback",
     "FurGlobals",
@@ -149,6 +152,8 @@ struct Reader<'g> {
     meshes: HashMap<usize, (usize, TriangleMesh)>,
     /// The camera asked for by name (`--camera`), if any.
     wanted_camera: Option<String>,
+    /// Follicles whose UV no face covers, placed at the nearest UV: how many, the first.
+    off_uv: Option<(usize, String)>,
 }
 
 impl<'g> Reader<'g> {
@@ -160,6 +165,7 @@ impl<'g> Reader<'g> {
             hidden: HashMap::new(),
             meshes: HashMap::new(),
             wanted_camera: None,
+            off_uv: None,
         }
     }
 
@@ -183,6 +189,11 @@ impl<'g> Reader<'g> {
         }
         for n in self.of_kind("follicle").collect::<Vec<_>>() {
             self.place_follicle(n)?;
+        }
+        if let Some((n, first)) = self.off_uv.take() {
+            self.out.warnings.push(format!(
+                "{n} follicle(s) at UVs no face of their mesh covers: placed at the nearest UV (first: {first})"
+            ));
         }
         let mut used_curves = vec![false; g.nodes.len()];
         for n in self.of_kind("hairSystem").collect::<Vec<_>>() {
@@ -425,10 +436,18 @@ impl<'g> Reader<'g> {
             Ok(scalar(g, src, names, default)?.clamp(3.0, 1000.0) as u32)
         };
         Ok(match self.kind(src) {
-            "polySphere" => Some(TriangleMesh::sphere(
-                check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
-                divisions(&["sh", "subdivisionsHeight"], 20.0)?,
-            )),
+            "polySphere" => {
+                let mut m = poly_sphere(
+                    check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
+                    divisions(&["sa", "subdivisionsAxis"], 20.0)?,
+                    divisions(&["sh", "subdivisionsHeight"], 20.0)?,
+                );
+                let axis = vec3(g, src, &["ax", "axis"], &[["axx", "axisX"], ["axy", "axisY"], ["axz", "axisZ"]], 0.0)?;
+                if let Some(axis) = axis.as_vec3().try_normalize().filter(|_| attr(g, src, &["ax", "axis"]).is_some()) {
+                    m.transform(&Affine3A::from_quat(glam::Quat::from_rotation_arc(Vec3::Y, axis)));
+                }
+                Some(m)
+            }
             "polyTorus" => Some(TriangleMesh::torus(
                 check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
                 check(scalar(g, src, &["sr", "sectionRadius"], 0.5)?, "sectionRadius")?,
@@ -490,12 +509,14 @@ impl<'g> Reader<'g> {
         let uv = [scalar(g, f, &["pu", "parameterU"], 0.0)? as f32, scalar(g, f, &["pv", "parameterV"], 0.0)? as f32];
         let node = &g.nodes[f];
         let found = follicles_at_uvs(mesh, &[uv]).map_err(|e| (node.line, format!("follicle {}: {e}", node.name)))?;
-        let Some((fol, tri)) = found[0] else {
-            return Err((
-                node.line,
-                format!("follicle {}: no face of its mesh has UV ({}, {})", node.name, uv[0], uv[1]),
-            ));
+        let Some(placed) = found[0] else {
+            return Err((node.line, format!("follicle {}: its mesh's UVs cover no area", node.name)));
         };
+        if placed.uv_distance > 0.0 {
+            let e = self.off_uv.get_or_insert_with(|| (0, node.name.clone()));
+            e.0 += 1;
+        }
+        let (fol, tri) = (placed.follicle, placed.triangle);
         // Local X along the normal, Y along the surface's U direction (the follicle's
         // tangent U), Z completing a right-handed frame.
         let x = fol.normal;
@@ -764,7 +785,20 @@ impl<'g> Reader<'g> {
             false => aperture[1] * 25.4 / (2.0 * focal),
         };
         let vfov = (2.0 * half_tan.atan()).to_degrees() as f32;
-        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov, ..Default::default() });
+        // The clip planes, along the view direction: the node's defaults are in Maya's
+        // internal centimetres, set values in the file's unit; the camera's scale
+        // stretches them.
+        let cm = g.centimeters_per_unit;
+        let (near, far) = (
+            scalar(g, cam, &["ncp", "nearClipPlane"], 0.1 / cm)?,
+            scalar(g, cam, &["fcp", "farClipPlane"], 10_000.0 / cm)?,
+        );
+        if !(near.is_finite() && near >= 0.0 && far > near) {
+            return Err((node.line, format!("camera {}: clip planes {near} and {far} are not a range", node.name)));
+        }
+        let stretch = m.transform_vector3(DVec3::NEG_Z).length();
+        let clip = [(near * stretch) as f32, (far * stretch) as f32];
+        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov, clip });
         Ok(())
     }
 
@@ -772,14 +806,23 @@ impl<'g> Reader<'g> {
         let g = self.g;
         for n in 0..g.nodes.len() {
             let kind = g.nodes[n].kind.as_str();
-            if !matches!(kind, "directionalLight" | "pointLight" | "spotLight" | "ambientLight" | "areaLight") {
+            if !matches!(
+                kind,
+                "directionalLight" | "pointLight" | "spotLight" | "ambientLight" | "areaLight" | "aiSkyDomeLight"
+            ) {
                 continue;
             }
             if self.hidden(n)? {
                 continue;
             }
             let node = &g.nodes[n];
-            let color = vec3(g, n, &["cl", "color"], &[["cr", "colorR"], ["cg", "colorG"], ["cb", "colorB"]], 1.0)?;
+            // Arnold's sky dome calls its colour `sc`.
+            let color = match kind {
+                "aiSkyDomeLight" => {
+                    vec3(g, n, &["sc", "color"], &[["scr", "colorR"], ["scg", "colorG"], ["scb", "colorB"]], 1.0)?
+                }
+                _ => vec3(g, n, &["cl", "color"], &[["cr", "colorR"], ["cg", "colorG"], ["cb", "colorB"]], 1.0)?,
+            };
             // Arnold's exposure (stops) multiplies Maya's intensity.
             let exposure = scalar(g, n, &["ai_exposure", "aiExposure"], 0.0)?;
             let intensity = scalar(g, n, &["in", "intensity"], 1.0)? * exposure.clamp(-64.0, 64.0).exp2();
@@ -798,6 +841,17 @@ impl<'g> Reader<'g> {
             let light = match kind {
                 "directionalLight" => Light::Distant { direction: -along, irradiance: power * PI },
                 "ambientLight" => Light::Environment { radiance: power },
+                // Arnold's sky dome: a sky of that radiance (Arnold's diffuse has the 1/π
+                // tress's has, so no π here). A texture on its colour is not read.
+                "aiSkyDomeLight" => {
+                    if !self.inputs(n, &["sc", "color"]).is_empty() {
+                        self.out.warnings.push(format!(
+                            "{}: the sky dome's colour texture is not read: lit by its constant colour",
+                            node.name
+                        ));
+                    }
+                    Light::Environment { radiance: power }
+                }
                 "pointLight" | "spotLight" => {
                     // Decay rate 0 (No Decay, the default), 1 linear, 2 quadratic, 3 cubic:
                     // the intensity lights a surface facing the light at distance d to I / d^rate.
@@ -858,6 +912,55 @@ fn scalar(g: &Graph, n: usize, names: &[&str], default: f64) -> Res<f64> {
             _ => Err((a.line, format!("{}: `{}` must be one number", g.nodes[n].name, a.name))),
         },
     }
+}
+
+/// Maya's `polySphere` as Maya builds it, so follicles find their UVs where Maya puts them:
+/// `sh − 1` rings of `sa` vertices from the −Y pole up (ring `i` at latitude
+/// `−90° + 180° i / sh`, vertex `j` at azimuth `360° (j + 1) / sa` turning from +X towards
+/// −Z), UV `(j / sa, i / sh)` with the seam column repeated at u = 1, and a triangle fan
+/// at each pole whose apex sits at the middle of its column, `v` 0 below and 1 above.
+fn poly_sphere(radius: f32, sa: u32, sh: u32) -> TriangleMesh {
+    use std::f32::consts::{FRAC_PI_2, PI, TAU};
+    let mut m = TriangleMesh::default();
+    let (mut normals, mut uvs) = (Vec::new(), Vec::new());
+    let mut push = |n: Vec3, uv: [f32; 2], m: &mut TriangleMesh| {
+        m.positions.push(n * radius);
+        normals.push(n);
+        uvs.push(uv);
+        m.positions.len() as u32 - 1
+    };
+    // ring[i][j], i in 1..sh, j in 0..=sa (j = sa: the seam again at u = 1).
+    let mut ring = vec![Vec::new(); sh as usize + 1];
+    for (i, r) in ring.iter_mut().enumerate().take(sh as usize).skip(1) {
+        let lat = -FRAC_PI_2 + PI * i as f32 / sh as f32;
+        for j in 0..=sa {
+            let a = TAU * ((j % sa) + 1) as f32 / sa as f32;
+            let n = Vec3::new(lat.cos() * a.cos(), lat.sin(), -lat.cos() * a.sin());
+            r.push(push(n, [j as f32 / sa as f32, i as f32 / sh as f32], &mut m));
+        }
+    }
+    let tri = |t: [u32; 3], m: &mut TriangleMesh| {
+        // Wound to face outwards.
+        let [a, b, c] = t.map(|i| m.positions[i as usize]);
+        let outward = (b - a).cross(c - a).dot(a + b + c) >= 0.0;
+        m.indices.push(if outward { t } else { [t[0], t[2], t[1]] });
+    };
+    for j in 0..sa as usize {
+        let u = (j as f32 + 0.5) / sa as f32;
+        let bottom = push(Vec3::NEG_Y, [u, 0.0], &mut m);
+        tri([bottom, ring[1][j], ring[1][j + 1]], &mut m);
+        let top = push(Vec3::Y, [u, 1.0], &mut m);
+        let last = &ring[sh as usize - 1];
+        tri([top, last[j + 1], last[j]], &mut m);
+        for i in 1..sh as usize - 1 {
+            let (lo, hi) = (&ring[i], &ring[i + 1]);
+            tri([lo[j], lo[j + 1], hi[j + 1]], &mut m);
+            tri([lo[j], hi[j + 1], hi[j]], &mut m);
+        }
+    }
+    m.normals = Some(normals);
+    m.uvs = Some(uvs);
+    m
 }
 
 /// A three-component attribute set whole (`.t`) or by component (`.tx`), in file order.

@@ -390,3 +390,50 @@ fn a_camera_is_chosen_by_its_transform_or_shape_name() {
     let e = eye(Some("side")).unwrap_err().to_string();
     assert!(e.starts_with("dir/two.ma") && e.contains("no camera `side`") && e.contains("near, far"), "{e}");
 }
+
+#[test]
+fn cameras_clip_at_their_near_and_far_planes_in_the_files_unit() {
+    let clip = |head: &str, attrs: &str| {
+        let text = format!(
+            "{head}createNode transform -n \"cam\";\n\tsetAttr \".s\" -type \"double3\" 3 3 3 ;\n\
+             createNode camera -n \"camShape\" -p \"cam\";\n{attrs}"
+        );
+        read(&text).map(|s| s.camera.unwrap().clip)
+    };
+    // Set planes are in the file's unit, stretched by the camera's scale of 3.
+    assert_eq!(clip("", "\tsetAttr \".ncp\" 0.5;\n\tsetAttr \".fcp\" 200;\n").unwrap(), [1.5, 600.0]);
+    assert_eq!(clip("", "\tsetAttr \".nearClipPlane\" 2;\n").unwrap(), [6.0, 30_000.0]);
+    // The node defaults, 0.1 and 10000 cm, in metres.
+    let [near, far] = clip("currentUnit -l meter;\n", "").unwrap();
+    assert!((near - 0.003).abs() < 1e-7 && (far - 300.0).abs() < 1e-3, "{near} {far}");
+    let e = clip("", "\tsetAttr \".ncp\" 10;\n\tsetAttr \".fcp\" 1;\n").unwrap_err().to_string();
+    assert!(e.contains("line 3") && e.contains("clip planes"), "{e}");
+}
+
+#[test]
+fn poly_spheres_have_mayas_uv_layout_so_every_follicle_finds_its_place() {
+    use crate::hair_system::follicles::follicles_at_uvs;
+    let m = poly_sphere(2.0, 20, 20);
+    assert!(m.positions.iter().all(|p| (p.length() - 2.0).abs() < 1e-5));
+    // Between the pole fans' triangles the layout has gaps, as Maya's has: a follicle
+    // there (the MtoA hair tests put one at (0.09375, 0.03125)) takes the nearest UV, on
+    // the fan beside it; one inside a fan ((0.03125, 0.03125)) is on it.
+    let found = follicles_at_uvs(&m, &[[0.03125, 0.03125], [0.09375, 0.03125], [0.3, 0.5]]).unwrap();
+    let d: Vec<f32> = found.iter().map(|f| f.unwrap().uv_distance).collect();
+    assert!(d[0] == 0.0 && d[1] > 0.0 && d[1] < 0.01 && d[2] == 0.0, "{d:?}");
+    let at = |uv: [f32; 2]| follicles_at_uvs(&m, &[uv]).unwrap()[0].unwrap().follicle;
+    assert!(at([0.09375, 0.03125]).position.y < -1.9);
+    // v runs from the −Y pole up; u = 0.5 is the vertex at azimuth 360° × 11 / 20 from +X
+    // towards −Z.
+    assert!(at([0.03125, 0.03125]).position.y < -1.9);
+    assert!(at([0.5, 0.97]).position.y > 1.9);
+    let a = (198.0f32).to_radians();
+    let p = at([0.5, 0.5]);
+    assert!((p.position - Vec3::new(2.0 * a.cos(), 0.0, -2.0 * a.sin())).length() < 1e-4, "{}", p.position);
+    assert!(p.normal.dot(p.position.normalize()) > 0.999);
+    // Faces are wound outwards.
+    for t in 0..m.indices.len() as u32 {
+        let [a, b, c] = m.corners(t);
+        assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "triangle {t}");
+    }
+}

@@ -373,3 +373,24 @@ fn image_infinite_lights_become_environment_maps_scaled_like_every_light() {
     assert_eq!(s.lights, [Light::Environment { radiance: Vec3::ONE }]);
     assert!(s.warnings.iter().any(|w| w.contains("gone.exr") && w.contains("white sky")), "{:?}", s.warnings);
 }
+
+#[test]
+fn pbrt_v3_light_scales_are_spectra() {
+    // pbrt-v3's bunny-fur scene: `"color scale" [12 12 12]` on an infinite light.
+    let s = read("WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5] \"color scale\" [12 6 3]\n").unwrap();
+    assert_eq!(s.lights[0], Light::Environment { radiance: Vec3::new(6.0, 3.0, 1.5) });
+    let s = read("WorldBegin\nLightSource \"point\" \"float scale\" 2\n").unwrap();
+    let Light::Point { intensity, .. } = s.lights[0] else { panic!() };
+    assert_eq!(intensity, Vec3::splat(2.0));
+    let e = read("WorldBegin\nLightSource \"point\" \"rgb scale\" [1 2]\n").unwrap_err().to_string();
+    assert!(e.contains("line 2") && e.contains("scale"), "{e}");
+}
+
+#[test]
+fn a_pinhole_cameras_focus_distance_is_not_reported_a_lens_is() {
+    let warnings = |camera: &str| read(&format!("Camera \"perspective\" {camera}\nWorldBegin\n")).unwrap().warnings;
+    // pbrt-v4's hair scenes: a focus distance with the lens commented out.
+    assert!(warnings("\"float fov\" 32 \"float focaldistance\" 21").is_empty());
+    let w = warnings("\"float lensradius\" 0.2 \"float focaldistance\" 21");
+    assert!(w.len() == 1 && w[0].contains("lensradius") && w[0].contains("depth of field"), "{w:?}");
+}

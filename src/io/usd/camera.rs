@@ -5,13 +5,16 @@
 //! counts), with the vertical aperture widened when the image is narrower than the
 //! horizontal aperture, as USD's default `expandAperture` fit does. Without an image size
 //! of its own (a `RenderSettings` prim's `resolution`), the image takes the apertures'
-//! aspect at tress's default width.
+//! aspect at tress's default width. `clippingRange` (near, far), the schema's (1, 10⁶) when
+//! not authored, clips along the view direction, in the camera's units: a scale in the
+//! camera's transform scales the distances with it.
 
-use super::values::{number, token, value, Res};
+use super::values::{number, short, token, value, Res};
 use super::Notes;
 use crate::scene::CameraDesc;
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
+use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
 
 /// The camera `prim` placed by `transform` (local to world), for an image of `image`
@@ -34,9 +37,6 @@ pub fn read_camera(
     if token(value(prim, "projection", time)?, "perspective") != "perspective" {
         notes.note("orthographic cameras: rendered in perspective with the same apertures".into(), prim);
     }
-    if value(prim, "clippingRange", time)?.is_some() {
-        notes.note("camera `clippingRange`: not applied (tress does not clip)".into(), prim);
-    }
     for name in ["horizontalApertureOffset", "verticalApertureOffset"] {
         if number(value(prim, name, time)?, name)?.is_some_and(|x| x != 0.0) {
             notes.note("camera aperture offsets: not applied".into(), prim);
@@ -58,5 +58,17 @@ pub fn read_camera(
         "its transform does not give a view direction and an up direction"
     );
     let target = eye + forward.normalize();
-    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, ..Default::default() }, [w, h]))
+    let [near, far] = match value(prim, "clippingRange", time)? {
+        None => [1.0, 1.0e6],
+        Some(sdf::Value::Vec2f(v)) => [v.x, v.y],
+        Some(sdf::Value::Vec2d(v)) => [v.x as f32, v.y as f32],
+        Some(sdf::Value::Vec2h(v)) => [v.x.to_f32(), v.y.to_f32()],
+        Some(other) => anyhow::bail!("`clippingRange` is not a pair of numbers: {}", short(&other)),
+    };
+    anyhow::ensure!(
+        near.is_finite() && near >= 0.0 && far > near,
+        "`clippingRange` ({near}, {far}) is not a range from a finite near distance >= 0 to a larger far one"
+    );
+    let clip = [near, far].map(|d| d * forward.length());
+    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, clip }, [w, h]))
 }

@@ -327,7 +327,9 @@ fn cameras_give_the_view_field_of_view_and_image_aspect() {
     let want = 2.0 * (0.5 * 24.0f32.max(36.0 * 427.0 / 640.0) / 35.0).atan().to_degrees();
     assert!((c.vfov - want).abs() < 1e-3, "{} {want}", c.vfov);
     assert!(s.warnings.iter().any(|w| w.contains("2 cameras") && w.contains("/Rig/Main")), "{:?}", s.warnings);
-    assert!(s.warnings.iter().any(|w| w.contains("clippingRange")), "{:?}", s.warnings);
+    // Its clipping range is applied; the other camera has the schema's fallback.
+    assert_eq!(c.clip, [0.1, 1000.0]);
+    assert!(s.warnings.iter().all(|w| !w.contains("clippingRange")), "{:?}", s.warnings);
     // The rig moves: at frame 5 the camera is half way.
     let s = read_with("", CAMERAS, &ImportOptions { frame: Some(5), camera: None }).unwrap();
     assert!((s.camera.unwrap().eye.z - 15.0).abs() < 1e-4);
@@ -338,6 +340,7 @@ fn cameras_give_the_view_field_of_view_and_image_aspect() {
     assert!((c.target - c.eye - Vec3::new(-1.0, 0.0, 0.0)).length() < 1e-5, "{} {}", c.eye, c.target);
     let want = 2.0 * (0.5f32 * 15.2908 / 100.0).atan().to_degrees();
     assert!((c.vfov - want).abs() < 1e-3, "{} {want}", c.vfov);
+    assert_eq!(c.clip, [1.0, 1.0e6]);
     let e = read_with("", CAMERAS, &ImportOptions { frame: None, camera: Some("/Nope".into()) }).unwrap_err();
     assert!(e.to_string().contains("/Nope") && e.to_string().contains("/Rig/Main, /Side"), "{e}");
 }
@@ -705,4 +708,60 @@ fn primvars_whose_count_does_not_fit_their_interpolation_are_refitted_or_left_ou
         "{:?}",
         s.warnings
     );
+}
+
+#[test]
+fn clipping_ranges_scale_with_the_camera_and_bad_ones_are_errors() {
+    let cam = |xform: &str, range: &str| {
+        format!(
+            "def Camera \"C\" {{\n    {xform}\n    float2 clippingRange = {range}\n}}\ndef Sphere \"Ball\" {{ double3 xformOp:translate = (0, 0, -5)\n uniform token[] xformOpOrder = [\"xformOp:translate\"] }}"
+        )
+    };
+    let scaled =
+        cam("double3 xformOp:scale = (2, 2, 2)\n    uniform token[] xformOpOrder = [\"xformOp:scale\"]", "(0.5, 20)");
+    let s = read_with("", &scaled, &ImportOptions::default()).unwrap();
+    assert_eq!(s.camera.unwrap().clip, [1.0, 40.0]);
+    // A Z-up stage turns the camera; its clip distances stay.
+    let s = read_with("upAxis = \"Z\"", &cam("", "(0.5, 20)"), &ImportOptions::default()).unwrap();
+    assert_eq!(s.camera.unwrap().clip, [0.5, 20.0]);
+    for bad in ["(5, 1)", "(-1, 10)", "(0, 0)"] {
+        let e = read_with("", &cam("", bad), &ImportOptions::default()).unwrap_err().to_string();
+        assert!(e.contains("clippingRange") && e.contains("/C"), "{bad}: {e}");
+    }
+}
+
+#[test]
+fn layers_of_another_unit_are_read_as_authored_and_said() {
+    let dir = tempfile::tempdir().unwrap();
+    let asset = |mpu: &str| {
+        format!(
+            "#usda 1.0\n(\n    defaultPrim = \"Hair\"\n    {mpu}\n)\ndef BasisCurves \"Hair\" {{\n    uniform token type = \"linear\"\n    int[] curveVertexCounts = [2]\n    point3f[] points = [(0, 0, 0), (0, 10, 0)]\n    float[] widths = [0.1] (interpolation = \"constant\")\n}}\n"
+        )
+    };
+    std::fs::write(dir.path().join("mm.usda"), asset("metersPerUnit = 0.001")).unwrap();
+    std::fs::write(dir.path().join("cm.usda"), asset("metersPerUnit = 0.01")).unwrap();
+    let stage = |mpu: &str, file: &str| {
+        let path = dir.path().join("stage.usda");
+        std::fs::write(
+            &path,
+            format!("#usda 1.0\n(\n    {mpu}\n)\ndef \"Groom\" (\n    references = @./{file}@\n) {{}}\n"),
+        )
+        .unwrap();
+        read_usd(&path, &ImportOptions::default()).unwrap()
+    };
+    let height = |s: &Imported| match &s.hair[0].source {
+        HairSource::Inline(set) => set.points.iter().map(|p| p[1]).fold(0.0, f32::max),
+        HairSource::File(_) => panic!("inline"),
+    };
+    // A millimetre asset in a metre stage: drawn 10 units tall, as USD composes it, and said.
+    let s = stage("metersPerUnit = 1", "mm.usda");
+    assert_eq!(height(&s), 10.0);
+    let w: Vec<_> = s.warnings.iter().filter(|w| w.contains("metersPerUnit")).collect();
+    assert!(w.len() == 1 && w[0].contains("mm.usda at 0.001") && w[0].contains("stage's 1"), "{:?}", s.warnings);
+    // The same unit, or a stage without one taking UsdGeom's centimetres: nothing to say.
+    for (mpu, file) in [("metersPerUnit = 0.001", "mm.usda"), ("", "cm.usda")] {
+        let s = stage(mpu, file);
+        assert_eq!(height(&s), 10.0);
+        assert!(s.warnings.iter().all(|w| !w.contains("metersPerUnit")), "{mpu}: {:?}", s.warnings);
+    }
 }
