@@ -740,8 +740,11 @@ fn layers_of_another_unit_are_read_as_authored_and_said() {
     };
     std::fs::write(dir.path().join("mm.usda"), asset("metersPerUnit = 0.001")).unwrap();
     std::fs::write(dir.path().join("cm.usda"), asset("metersPerUnit = 0.01")).unwrap();
+    // A new stage file each time: a rewritten one could be taken for the one already read.
+    let count = std::cell::Cell::new(0);
     let stage = |mpu: &str, file: &str| {
-        let path = dir.path().join("stage.usda");
+        count.set(count.get() + 1);
+        let path = dir.path().join(format!("stage{}.usda", count.get()));
         std::fs::write(
             &path,
             format!("#usda 1.0\n(\n    {mpu}\n)\ndef \"Groom\" (\n    references = @./{file}@\n) {{}}\n"),
