@@ -20,13 +20,13 @@ fn main() {
     desc.settings.height = 240;
     desc.settings.spp = 4;
     desc.settings.integrator = Integrator::Direct;
-    desc.fur[0].description.density = 40_000;
-    let tip = desc.fur[0].description[Scalar::TipOpacity].value;
+    desc.contents.fur[0].description.density = 40_000;
+    let tip = desc.contents.fur[0].description[Scalar::TipOpacity].value;
     assert!(tip < 1.0, "the scene's fur is semi-transparent");
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("thread pool");
     let mut times = Vec::new();
     for opacity in [1.0, tip] {
-        desc.fur[0].description[Scalar::TipOpacity].value = opacity;
+        desc.contents.fur[0].description[Scalar::TipOpacity].value = opacity;
         let (world, _) = prepare(&desc).expect("the scene prepares");
         let mut best = Duration::MAX;
         let mut rays = 0;

@@ -8,7 +8,7 @@ use glam::{Affine3A, Vec3};
 use tress::geometry::TriangleMesh;
 use tress::light::Light;
 use tress::math::Color;
-use tress::scene::{CameraDesc, Description, FurEntry, MeshEntry, MeshSource};
+use tress::scene::{CameraDesc, Contents, Description, FurEntry, MeshEntry, MeshSource};
 use tress::shading::Material;
 use tress::world::RenderSettings;
 
@@ -25,32 +25,34 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ..Default::default()
         },
         settings: RenderSettings { width: 320, height: 240, spp: 8, ..RenderSettings::default() },
-        lights: vec![
-            Light::Distant { direction: Vec3::new(0.4, 0.9, 0.6).normalize(), irradiance: Color::splat(3.0) },
-            Light::Environment { radiance: Color::new(0.4, 0.45, 0.5) },
-        ],
-        meshes: vec![
-            MeshEntry {
-                source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
-                material: Material::Diffuse { color: Color::new(0.35, 0.33, 0.3) },
-                transform: Affine3A::IDENTITY,
-            },
-            MeshEntry {
-                source: MeshSource::Inline(TriangleMesh::plane(10.0)),
-                material: Material::Diffuse { color: Color::splat(0.5) },
-                transform: Affine3A::from_translation(Vec3::new(0.0, -0.7, 0.0)),
-            },
-        ],
-        // Fur grows on meshes[0], as placed in the world.
-        fur: vec![FurEntry {
-            mesh: 0,
-            description: fur,
-            placement: Default::default(),
-            seed: 1,
-            guides: None,
-            lod: None,
-        }],
-        ..Default::default()
+        contents: Contents {
+            lights: vec![
+                Light::Distant { direction: Vec3::new(0.4, 0.9, 0.6).normalize(), irradiance: Color::splat(3.0) },
+                Light::Environment { radiance: Color::new(0.4, 0.45, 0.5) },
+            ],
+            meshes: vec![
+                MeshEntry {
+                    source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
+                    material: Material::Diffuse { color: Color::new(0.35, 0.33, 0.3) },
+                    transform: Affine3A::IDENTITY,
+                },
+                MeshEntry {
+                    source: MeshSource::Inline(TriangleMesh::plane(10.0)),
+                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    transform: Affine3A::from_translation(Vec3::new(0.0, -0.7, 0.0)),
+                },
+            ],
+            // Fur grows on meshes[0], as placed in the world.
+            fur: vec![FurEntry {
+                mesh: 0,
+                description: fur,
+                placement: Default::default(),
+                seed: 1,
+                guides: None,
+                lod: None,
+            }],
+            ..Default::default()
+        },
     };
     desc.validate()?;
     // Growing the fur and building the BVHs; the world holds no paths and no description.

@@ -6,7 +6,9 @@ use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::Light;
 use crate::math::rng::GenRng;
 use crate::math::{sampling, Color};
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource, DEFAULT_SKY_RADIANCE};
+use crate::scene::{
+    CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource, DEFAULT_SKY_RADIANCE,
+};
 use crate::shading::{tube::Tube, Material};
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
@@ -29,31 +31,33 @@ pub fn description(strands: u32, seed: u64) -> Description {
             ..Default::default()
         },
         settings: RenderSettings::default(),
-        lights: vec![
-            Light::Distant { direction: Vec3::new(0.45, 0.8, 0.4).normalize(), irradiance: Color::splat(3.0) },
-            Light::Environment { radiance: Color::splat(DEFAULT_SKY_RADIANCE) },
-        ],
-        meshes: vec![
-            MeshEntry {
-                source: MeshSource::Inline(torus),
-                material: Material::Diffuse { color: Color::splat(0.5) },
+        contents: Contents {
+            lights: vec![
+                Light::Distant { direction: Vec3::new(0.45, 0.8, 0.4).normalize(), irradiance: Color::splat(3.0) },
+                Light::Environment { radiance: Color::splat(DEFAULT_SKY_RADIANCE) },
+            ],
+            meshes: vec![
+                MeshEntry {
+                    source: MeshSource::Inline(torus),
+                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    transform: Affine3A::IDENTITY,
+                },
+                MeshEntry {
+                    source: MeshSource::Inline(TriangleMesh::plane(12.0)),
+                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    transform: Affine3A::from_translation(Vec3::new(0.0, -0.62, 0.0)),
+                },
+            ],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(hair),
+                material: Material::Tube(Tube { ambient: diffuse, diffuse, ..Tube::default() }),
                 transform: Affine3A::IDENTITY,
-            },
-            MeshEntry {
-                source: MeshSource::Inline(TriangleMesh::plane(12.0)),
-                material: Material::Diffuse { color: Color::splat(0.5) },
-                transform: Affine3A::from_translation(Vec3::new(0.0, -0.62, 0.0)),
-            },
-        ],
-        hair: vec![HairEntry {
-            source: HairSource::Inline(hair),
-            material: Material::Tube(Tube { ambient: diffuse, diffuse, ..Tube::default() }),
-            transform: Affine3A::IDENTITY,
-            radius_scale: 1.0,
-            file_colors: true,
-            lod: None,
-        }],
-        ..Default::default()
+                radius_scale: 1.0,
+                file_colors: true,
+                lod: None,
+            }],
+            ..Default::default()
+        },
     }
 }
 

@@ -11,7 +11,7 @@ use crate::world::World;
 pub(crate) fn demo(strands: u32, seed: u64, (width, height, spp): (u32, u32, u32), lod: Option<LodParams>) -> World {
     let mut desc = crate::demo::description(strands, seed);
     (desc.settings.width, desc.settings.height, desc.settings.spp) = (width, height, spp);
-    desc.hair[0].lod = lod;
+    desc.contents.hair[0].lod = lod;
     crate::prepare::prepare(&desc).unwrap().0
 }
 

@@ -9,7 +9,7 @@ use tress::geometry::{StrandSet, TriangleMesh};
 use tress::light::Light;
 use tress::math::Color;
 use tress::prepare::prepare;
-use tress::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
+use tress::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use tress::shading::{tube::Tube, Material};
 use tress::world::RenderSettings;
 
@@ -23,30 +23,32 @@ fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3
     Description {
         camera: CameraDesc { eye, target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0, ..Default::default() },
         settings: RenderSettings { width: 48, height: 36, spp: 2, ..Default::default() },
-        lights: vec![
-            Light::Distant { direction: Vec3::new(0.3, 1.0, 0.5).normalize(), irradiance: Color::ONE },
-            Light::Environment { radiance: Color::splat(0.2) },
-        ],
-        meshes: meshes
-            .into_iter()
-            .map(|(m, transform)| MeshEntry {
-                source: MeshSource::Inline(m),
-                material: Material::Diffuse { color: Color::splat(0.5) },
-                transform,
-            })
-            .collect(),
-        hair: hair
-            .into_iter()
-            .map(|(s, transform)| HairEntry {
-                source: HairSource::Inline(s),
-                material: tube.clone(),
-                transform,
-                radius_scale: 1.0,
-                file_colors: true,
-                lod: None,
-            })
-            .collect(),
-        ..Default::default()
+        contents: Contents {
+            lights: vec![
+                Light::Distant { direction: Vec3::new(0.3, 1.0, 0.5).normalize(), irradiance: Color::ONE },
+                Light::Environment { radiance: Color::splat(0.2) },
+            ],
+            meshes: meshes
+                .into_iter()
+                .map(|(m, transform)| MeshEntry {
+                    source: MeshSource::Inline(m),
+                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    transform,
+                })
+                .collect(),
+            hair: hair
+                .into_iter()
+                .map(|(s, transform)| HairEntry {
+                    source: HairSource::Inline(s),
+                    material: tube.clone(),
+                    transform,
+                    radius_scale: 1.0,
+                    file_colors: true,
+                    lod: None,
+                })
+                .collect(),
+            ..Default::default()
+        },
     }
 }
 

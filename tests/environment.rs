@@ -9,7 +9,7 @@ use tress::geometry::{StrandSet, TriangleMesh};
 use tress::light::{EnvironmentMap, Light};
 use tress::math::Color;
 use tress::prepare::prepare;
-use tress::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
+use tress::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use tress::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use tress::shading::Material;
 use tress::world::{Integrator, RenderSettings};
@@ -47,28 +47,30 @@ fn scene(light: Light, integrator: Integrator, spp: u32) -> Description {
             ..Default::default()
         },
         settings: RenderSettings { width: 48, height: 36, spp, integrator, max_depth: 2, ..Default::default() },
-        lights: vec![light],
-        meshes: vec![
-            MeshEntry {
-                source: MeshSource::Inline(TriangleMesh::torus(0.6, 0.2, 32, 16)),
-                material: Material::Diffuse { color: Color::new(0.6, 0.4, 0.3) },
-                transform: Affine3A::from_translation(Vec3::Y * 0.2),
-            },
-            MeshEntry {
-                source: MeshSource::Inline(TriangleMesh::plane(6.0)),
-                material: Material::Diffuse { color: Color::splat(0.5) },
+        contents: Contents {
+            lights: vec![light],
+            meshes: vec![
+                MeshEntry {
+                    source: MeshSource::Inline(TriangleMesh::torus(0.6, 0.2, 32, 16)),
+                    material: Material::Diffuse { color: Color::new(0.6, 0.4, 0.3) },
+                    transform: Affine3A::from_translation(Vec3::Y * 0.2),
+                },
+                MeshEntry {
+                    source: MeshSource::Inline(TriangleMesh::plane(6.0)),
+                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    transform: Affine3A::IDENTITY,
+                },
+            ],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(hair),
+                material: physical,
                 transform: Affine3A::IDENTITY,
-            },
-        ],
-        hair: vec![HairEntry {
-            source: HairSource::Inline(hair),
-            material: physical,
-            transform: Affine3A::IDENTITY,
-            radius_scale: 1.0,
-            file_colors: true,
-            lod: None,
-        }],
-        ..Default::default()
+                radius_scale: 1.0,
+                file_colors: true,
+                lod: None,
+            }],
+            ..Default::default()
+        },
     }
 }
 
@@ -125,13 +127,15 @@ fn a_white_map_lights_a_convex_diffuse_body_to_its_albedo() {
                 ..Default::default()
             },
             settings: RenderSettings { width: 16, height: 16, spp: 64, integrator, max_depth: 4, ..Default::default() },
-            lights: vec![constant_map(1.0)],
-            meshes: vec![MeshEntry {
-                source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
-                material: Material::Diffuse { color: Color::splat(0.5) },
-                transform: Affine3A::IDENTITY,
-            }],
-            ..Default::default()
+            contents: Contents {
+                lights: vec![constant_map(1.0)],
+                meshes: vec![MeshEntry {
+                    source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
+                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    transform: Affine3A::IDENTITY,
+                }],
+                ..Default::default()
+            },
         };
         let film = render(&desc);
         let centre: Vec<f32> =
@@ -262,16 +266,18 @@ fn the_tube_ambient_term_takes_an_environment_maps_mean_radiance() {
                 ..Default::default()
             },
             settings: RenderSettings { width: 16, height: 16, spp: 4, integrator, ..Default::default() },
-            lights: vec![Light::EnvironmentMap(map.clone())],
-            hair: vec![HairEntry {
-                source: HairSource::Inline(strands.clone()),
-                material: Material::Tube(tube.clone()),
-                transform: Affine3A::IDENTITY,
-                radius_scale: 1.0,
-                file_colors: false,
-                lod: None,
-            }],
-            ..Default::default()
+            contents: Contents {
+                lights: vec![Light::EnvironmentMap(map.clone())],
+                hair: vec![HairEntry {
+                    source: HairSource::Inline(strands.clone()),
+                    material: Material::Tube(tube.clone()),
+                    transform: Affine3A::IDENTITY,
+                    radius_scale: 1.0,
+                    file_colors: false,
+                    lod: None,
+                }],
+                ..Default::default()
+            },
         };
         let film = render(&desc);
         let on_strand: Vec<Vec3> =

@@ -373,9 +373,9 @@ fn a_deep_maya_hierarchy_costs_its_size() {
     text += "createNode mesh -n \"ball\" -p \"t49999\";\ncreateNode polySphere -n \"p\";\nconnectAttr \"p.out\" \"ball.i\";\n";
     let (r, took) = parse_maya_timed(&text);
     let imported = r.unwrap();
-    assert_eq!(imported.meshes.len(), 1);
+    assert_eq!(imported.contents.meshes.len(), 1);
     // The sphere sits at the end of the chain: 49,999 steps of 1e-5 up.
-    let t = imported.meshes[0].transform.translation;
+    let t = imported.contents.meshes[0].transform.translation;
     assert!((t.y - 0.49999).abs() < 1e-3, "{t}");
     assert!(took < Duration::from_secs(3), "the 50k-deep chain took {took:?}");
 }

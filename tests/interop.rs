@@ -47,8 +47,8 @@ fn a_pbrt_curve_scene_renders_its_curves_over_their_control_points() {
     .unwrap();
     let (desc, _) = read_imported(&path).unwrap().into_description();
     let film = render(&desc);
-    let HairSource::Inline(set) = &desc.hair[0].source else { panic!() };
-    let m = desc.hair[0].transform;
+    let HairSource::Inline(set) = &desc.contents.hair[0].source else { panic!() };
+    let m = desc.contents.hair[0].transform;
     // Every sampled point of both curves (a control-point curve, mirrored like pbrt's
     // image) is covered by hair in the image.
     let hair_at = |x: f32, y: f32| {
@@ -127,7 +127,7 @@ fn export_to_hair_and_usda_round_trips_points_and_widths() {
     assert_eq!(usd.points, want.points);
     assert_eq!(usd.colors, want.colors);
     // Meshes come along in the USD file.
-    assert_eq!(back.meshes.len(), desc.meshes.len());
+    assert_eq!(back.contents.meshes.len(), desc.contents.meshes.len());
 }
 
 #[test]
@@ -143,12 +143,12 @@ fn toml_scenes_import_other_formats() {
     std::fs::write(d.join("scene.toml"), toml).unwrap();
     let (desc, _) = tress::io::scene_file::read(&d.join("scene.toml"), None).unwrap();
     // The scene's own mesh stays first; the import adds a mesh and two strand sets, moved.
-    assert_eq!((desc.meshes.len(), desc.hair.len(), desc.lights.len()), (2, 2, 1));
-    assert_eq!(desc.meshes[1].transform.transform_point3(Vec3::ZERO), Vec3::new(0.0, 10.0, 0.0));
+    assert_eq!((desc.contents.meshes.len(), desc.contents.hair.len(), desc.contents.lights.len()), (2, 2, 1));
+    assert_eq!(desc.contents.meshes[1].transform.transform_point3(Vec3::ZERO), Vec3::new(0.0, 10.0, 0.0));
     let with_lights = toml.replace("translate = [0, 10, 0] }", "translate = [0, 10, 0] }\nlights = true");
     std::fs::write(d.join("lit.toml"), with_lights).unwrap();
     let (desc, _) = tress::io::scene_file::read(&d.join("lit.toml"), None).unwrap();
-    assert_eq!(desc.lights.len(), 3);
+    assert_eq!(desc.contents.lights.len(), 3);
     // A broken import names the scene entry and the imported file's line.
     std::fs::write(d.join("bad.ma"), "createNode mesh;\nsetAttr \".vt[0:1]\" 1 2;\n").unwrap();
     std::fs::write(d.join("bad.toml"), toml.replace("grass.usda", "bad.ma")).unwrap();

@@ -11,7 +11,7 @@ use tress::geometry::{StrandSet, TriangleMesh};
 use tress::light::Light;
 use tress::math::Color;
 use tress::prepare::prepare;
-use tress::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
+use tress::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use tress::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use tress::shading::Material;
 use tress::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
@@ -84,21 +84,23 @@ fn path_tracer_white_furnace() {
                 ..Default::default()
             },
             settings: settings(24, 24, 64, 64, Integrator::Path),
-            lights: vec![Light::Environment { radiance: Color::ONE }],
-            meshes: vec![mesh(
-                TriangleMesh::sphere(0.5, 48),
-                Material::Diffuse { color: Color::ONE },
-                Affine3A::from_translation(Vec3::new(-0.7, 0.0, 0.0)),
-            )],
-            hair: vec![hair(
-                {
-                    let mut b = hair_ball(300, radii);
-                    b.transform(&Affine3A::from_translation(Vec3::new(0.7, 0.0, 0.0)));
-                    b
-                },
-                white_hair(),
-            )],
-            ..Default::default()
+            contents: Contents {
+                lights: vec![Light::Environment { radiance: Color::ONE }],
+                meshes: vec![mesh(
+                    TriangleMesh::sphere(0.5, 48),
+                    Material::Diffuse { color: Color::ONE },
+                    Affine3A::from_translation(Vec3::new(-0.7, 0.0, 0.0)),
+                )],
+                hair: vec![hair(
+                    {
+                        let mut b = hair_ball(300, radii);
+                        b.transform(&Affine3A::from_translation(Vec3::new(0.7, 0.0, 0.0)));
+                        b
+                    },
+                    white_hair(),
+                )],
+                ..Default::default()
+            },
         };
         let film = render(&desc, 2);
         let hair_pixels: Vec<f32> = film.pixels.iter().filter(|p| p.strand_id >= 0.0).map(|p| p.color.x).collect();
@@ -142,17 +144,19 @@ fn lit_scene(integrator: Integrator, spp: u32, max_depth: u32, environment: bool
             ..Default::default()
         },
         settings: RenderSettings { gather_rays: 4, ..settings(32, 24, spp, max_depth, integrator) },
-        lights,
-        meshes: vec![
-            mesh(TriangleMesh::plane(8.0), Material::Diffuse { color: Color::splat(0.9) }, Affine3A::IDENTITY),
-            mesh(
-                TriangleMesh::sphere(0.6, 32),
-                Material::Diffuse { color: Color::new(0.8, 0.5, 0.3) },
-                Affine3A::from_translation(Vec3::new(0.0, 0.6, 0.0)),
-            ),
-        ],
-        hair: vec![],
-        ..Default::default()
+        contents: Contents {
+            lights,
+            meshes: vec![
+                mesh(TriangleMesh::plane(8.0), Material::Diffuse { color: Color::splat(0.9) }, Affine3A::IDENTITY),
+                mesh(
+                    TriangleMesh::sphere(0.6, 32),
+                    Material::Diffuse { color: Color::new(0.8, 0.5, 0.3) },
+                    Affine3A::from_translation(Vec3::new(0.0, 0.6, 0.0)),
+                ),
+            ],
+            hair: vec![],
+            ..Default::default()
+        },
     }
 }
 
@@ -210,10 +214,12 @@ fn shadow_scene(layers: u32, a: f32, integrator: Integrator) -> Description {
             ..Default::default()
         },
         settings: settings(32, 32, 4, 0, integrator),
-        lights: vec![Light::Distant { direction: Vec3::Y, irradiance: Color::ONE }],
-        meshes: vec![mesh(TriangleMesh::plane(20.0), Material::Diffuse { color: Color::ONE }, Affine3A::IDENTITY)],
-        hair: vec![hair(strands, Material::Diffuse { color: Color::ONE })],
-        ..Default::default()
+        contents: Contents {
+            lights: vec![Light::Distant { direction: Vec3::Y, irradiance: Color::ONE }],
+            meshes: vec![mesh(TriangleMesh::plane(20.0), Material::Diffuse { color: Color::ONE }, Affine3A::IDENTITY)],
+            hair: vec![hair(strands, Material::Diffuse { color: Color::ONE })],
+            ..Default::default()
+        },
     }
 }
 
@@ -276,7 +282,7 @@ fn layers_sharing_a_shadow_ray_are_each_lit_through_their_own_on_average() {
             .collect()
     };
     let mut bare = shadow_scene(1, 0.5, Integrator::Direct);
-    bare.hair.clear();
+    bare.contents.hair.clear();
     let ground = radiance(&bare, 1)[0];
     let strand = radiance(&shadow_scene(1, 1.0, Integrator::Direct), 1)[0];
     assert!(ground > 0.1 && strand > 0.1, "ground {ground}, strand {strand}");
@@ -304,7 +310,7 @@ fn transparent_demo(strands: u32, k: u32, integrator: Integrator) -> Description
     desc.settings.transparency_layers = k;
     desc.settings.integrator = integrator;
     desc.settings.gather_rays = 2;
-    for h in &mut desc.hair {
+    for h in &mut desc.contents.hair {
         let HairSource::Inline(s) = &mut h.source else { panic!("the demo's hair is inline") };
         let mut opacity = vec![0.0; s.points.len()];
         for w in s.offsets.windows(2) {
@@ -458,9 +464,11 @@ fn lone_strand(r0: f32, r1: f32, material: Material, integrator: Integrator, max
             ..Default::default()
         },
         settings: RenderSettings { gather_rays: 4, ..settings(8, 8, 1, max_depth, integrator) },
-        lights: vec![Light::Environment { radiance: Color::ONE }],
-        hair: vec![hair(strands, material)],
-        ..Default::default()
+        contents: Contents {
+            lights: vec![Light::Environment { radiance: Color::ONE }],
+            hair: vec![hair(strands, material)],
+            ..Default::default()
+        },
     }
 }
 

@@ -14,7 +14,7 @@ fn small_field() -> Description {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lod_field.toml");
     let mut desc = tress::io::scene_file::read(&path, None).unwrap().0;
     (desc.settings.width, desc.settings.height, desc.settings.spp) = (240, 135, 2);
-    for h in &mut desc.hair_systems {
+    for h in &mut desc.contents.hair_systems {
         if let GuideSource::Follicles { params, .. } = &mut h.guides {
             params.placement = Placement::Random { count: 2000 };
         }
@@ -49,7 +49,7 @@ fn switching_lod_off_renders_as_without_lod() {
     let mut off = small_field();
     off.settings.lod = false;
     let mut none = small_field();
-    none.hair_systems.iter_mut().for_each(|h| h.lod = None);
+    none.contents.hair_systems.iter_mut().for_each(|h| h.lod = None);
     let (a, b) = (render(&off, 2), render(&none, 2));
     assert_eq!(bits(&a), bits(&b));
     assert!(a.pixels.iter().all(|p| p.lod_level <= 0.0));
@@ -88,7 +88,7 @@ fn levels_grow_with_distance_and_thinner_hair() {
 fn spread_field(smooth: bool) -> Description {
     let mut desc = small_field();
     let with = |p: tress::accel::lod::LodParams| tress::accel::lod::LodParams { start: 4.0, smooth, ..p };
-    desc.hair_systems.iter_mut().for_each(|h| h.lod = h.lod.map(with));
+    desc.contents.hair_systems.iter_mut().for_each(|h| h.lod = h.lod.map(with));
     desc
 }
 

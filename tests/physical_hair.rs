@@ -8,7 +8,7 @@ use tress::geometry::StrandSet;
 use tress::light::Light;
 use tress::math::Color;
 use tress::prepare::prepare;
-use tress::scene::{CameraDesc, Description, HairEntry, HairSource};
+use tress::scene::{CameraDesc, Contents, Description, HairEntry, HairSource};
 use tress::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use tress::shading::Material;
 use tress::world::RenderSettings;
@@ -24,17 +24,19 @@ fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Descrip
             ..Default::default()
         },
         settings: RenderSettings { width: 24, height: 24, spp: 1024, max_depth: 0, ..Default::default() },
-        lights: vec![Light::Environment { radiance: Color::ONE }],
-        meshes: vec![],
-        hair: vec![HairEntry {
-            source: HairSource::Inline(strands),
-            material: Material::Physical(PhysicalHair::new(params)),
-            transform: Affine3A::IDENTITY,
-            radius_scale: 1.0,
-            file_colors,
-            lod: None,
-        }],
-        ..Default::default()
+        contents: Contents {
+            lights: vec![Light::Environment { radiance: Color::ONE }],
+            meshes: vec![],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(strands),
+                material: Material::Physical(PhysicalHair::new(params)),
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors,
+                lod: None,
+            }],
+            ..Default::default()
+        },
     }
 }
 
@@ -94,7 +96,7 @@ fn colours_from_strands_need_strands_with_colours() {
 fn example_scene_uses_the_physical_material_and_renders_the_same_on_any_thread_count() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/hairy_torus_closeup.toml");
     let mut desc = tress::io::scene_file::read(&path, None).unwrap().0;
-    assert!(matches!(desc.hair[0].material, Material::Physical(_)));
+    assert!(matches!(desc.contents.hair[0].material, Material::Physical(_)));
     desc.settings.width = 48;
     desc.settings.height = 36;
     desc.settings.spp = 2;

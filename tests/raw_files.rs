@@ -83,7 +83,7 @@ fn coverage(desc: &Description) -> (usize, usize) {
 }
 
 fn inline(desc: &Description, i: usize) -> &StrandSet {
-    let HairSource::Inline(s) = &desc.hair[i].source else { panic!("not inline") };
+    let HairSource::Inline(s) = &desc.contents.hair[i].source else { panic!("not inline") };
     s
 }
 

@@ -113,7 +113,7 @@ fn black_strands_on_white(
     use glam::{Affine3A, Vec3};
     use tress::light::Light;
     use tress::math::Color;
-    use tress::scene::{CameraDesc, Description, HairEntry, HairSource};
+    use tress::scene::{CameraDesc, Contents, Description, HairEntry, HairSource};
     use tress::shading::{tube::Tube, Material};
     let black = Tube { ambient: Color::ZERO, diffuse: Color::ZERO, specular: Color::ZERO, specular_power: 1.0 };
     Description {
@@ -125,16 +125,18 @@ fn black_strands_on_white(
             ..Default::default()
         },
         settings,
-        lights: vec![Light::Environment { radiance: Color::ONE }],
-        hair: vec![HairEntry {
-            source: HairSource::Inline(strands),
-            material: Material::Tube(black),
-            transform: Affine3A::IDENTITY,
-            radius_scale: 1.0,
-            file_colors: false,
-            lod: None,
-        }],
-        ..Default::default()
+        contents: Contents {
+            lights: vec![Light::Environment { radiance: Color::ONE }],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(strands),
+                material: Material::Tube(black),
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: false,
+                lod: None,
+            }],
+            ..Default::default()
+        },
     }
 }
 

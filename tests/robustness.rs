@@ -8,7 +8,7 @@ use tress::math::rng::PixelSampler;
 use tress::math::{Color, Ray};
 use tress::prepare::prepare;
 use tress::render::Tracer;
-use tress::scene::{CameraDesc, Description, HairEntry, HairSource};
+use tress::scene::{CameraDesc, Contents, Description, HairEntry, HairSource};
 use tress::shading::{tube::Tube, Material};
 use tress::world::{RenderSettings, World};
 
@@ -16,17 +16,19 @@ fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> 
     let desc = Description {
         camera: CameraDesc { eye, target: Vec3::ZERO, up: Vec3::Y, vfov: 1.0, ..Default::default() },
         settings: RenderSettings { width: 8, height: 8, spp: 1, max_depth: 0, ..Default::default() },
-        lights: vec![Light::Distant { direction: light_dir.normalize(), irradiance: Color::ONE }],
-        meshes: vec![],
-        hair: vec![HairEntry {
-            source: HairSource::Inline(strands),
-            material,
-            transform: Affine3A::IDENTITY,
-            radius_scale: 1.0,
-            file_colors: false,
-            lod: None,
-        }],
-        ..Default::default()
+        contents: Contents {
+            lights: vec![Light::Distant { direction: light_dir.normalize(), irradiance: Color::ONE }],
+            meshes: vec![],
+            hair: vec![HairEntry {
+                source: HairSource::Inline(strands),
+                material,
+                transform: Affine3A::IDENTITY,
+                radius_scale: 1.0,
+                file_colors: false,
+                lod: None,
+            }],
+            ..Default::default()
+        },
     };
     prepare(&desc).unwrap().0
 }

@@ -67,14 +67,14 @@ impl PyDescription {
     }
 
     fn __repr__(&self) -> String {
-        let d = &self.desc;
+        let (d, c) = (&self.desc, &self.desc.contents);
         format!(
             "<tress.Description: {} meshes, {} strand sets, {} hair systems, {} fur, {} lights, {}x{}>",
-            d.meshes.len(),
-            d.hair.len(),
-            d.hair_systems.len(),
-            d.fur.len(),
-            d.lights.len(),
+            c.meshes.len(),
+            c.hair.len(),
+            c.hair_systems.len(),
+            c.fur.len(),
+            c.lights.len(),
             d.settings.width,
             d.settings.height
         )
@@ -109,20 +109,20 @@ fn parse(text: &str, path: PathBuf, inline: Vec<(String, usize, Bound<'_, PyAny>
         let missing = || PyValueError::new_err(format!("the scene has no {kind} entry {}", index + 1));
         match kind.as_str() {
             "mesh" => {
-                let entry = desc.meshes.get_mut(index).ok_or_else(missing)?;
+                let entry = desc.contents.meshes.get_mut(index).ok_or_else(missing)?;
                 entry.source = MeshSource::Inline(geometry.cast::<Mesh>()?.borrow().mesh.clone());
             }
             "hair" => {
-                let entry = desc.hair.get_mut(index).ok_or_else(missing)?;
+                let entry = desc.contents.hair.get_mut(index).ok_or_else(missing)?;
                 entry.source = HairSource::Inline(geometry.cast::<Strands>()?.borrow().strands.clone());
             }
             "hair_system" => {
-                let entry = desc.hair_systems.get_mut(index).ok_or_else(missing)?;
+                let entry = desc.contents.hair_systems.get_mut(index).ok_or_else(missing)?;
                 let curves = geometry.cast::<Strands>()?.borrow().strands.clone();
                 entry.guides = GuideSource::Inline(tress::hair_system::Guides::from_curves(curves));
             }
             "fur_guides" => {
-                let entry = desc.fur.get_mut(index).ok_or_else(missing)?;
+                let entry = desc.contents.fur.get_mut(index).ok_or_else(missing)?;
                 let (source, _) = entry.guides.as_mut().ok_or_else(missing)?;
                 *source = HairSource::Inline(geometry.cast::<Strands>()?.borrow().strands.clone());
             }

@@ -113,6 +113,11 @@ impl TriangleMesh {
         }
         Ok(())
     }
+
+    /// The box around the vertices placed by `m`.
+    pub fn bounds_under(&self, m: &glam::Affine3A) -> crate::math::Aabb {
+        (self.positions.iter()).fold(crate::math::Aabb::EMPTY, |b, p| b.grow(m.transform_point3(*p).into()))
+    }
 }
 
 /// Procedural meshes for built-in scenes and scene files.

@@ -365,6 +365,12 @@ impl StrandSet {
             *p = [q.x, q.y, q.z, p[3] * scale];
         }
     }
+
+    /// The box around the points (their centres, radii left out) placed by `m`.
+    pub fn bounds_under(&self, m: &glam::Affine3A) -> crate::math::Aabb {
+        (self.points.iter())
+            .fold(crate::math::Aabb::EMPTY, |b, p| b.grow(m.transform_point3(Vec3::new(p[0], p[1], p[2])).into()))
+    }
 }
 
 #[cfg(test)]

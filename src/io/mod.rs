@@ -17,10 +17,9 @@ pub mod scene_file;
 pub mod usd;
 
 use crate::error::LoadError;
-use crate::geometry::{StrandSet, TriangleMesh};
+use crate::geometry::TriangleMesh;
 use crate::math::Aabb;
-use crate::scene::{Description, GuideSource, HairSource, MeshSource};
-use glam::{Affine3A, Vec3, Vec3A};
+use crate::scene::{Contents, GuideSource, HairSource, MeshSource};
 use std::path::Path;
 
 /// Reads a mesh, choosing the format by the file extension (`.obj` or `.ply`).
@@ -95,56 +94,38 @@ pub fn read_imported_with(path: &Path, options: &ImportOptions) -> Result<import
     Ok(imported)
 }
 
-/// The bounds of a description's meshes, strand sets and guides in world space, reading
-/// the files they name (fur and hair grown from follicles add what they grow on).
-pub fn description_bounds(desc: &Description) -> Result<Aabb, LoadError> {
-    let mut b = Aabb::EMPTY;
-    let mut grow = |p: Vec3| b = b.grow(Vec3A::from(p));
-    for e in &desc.meshes {
-        let read;
-        let mesh = match &e.source {
-            MeshSource::Inline(m) => m,
-            MeshSource::File(path) => {
-                read = read_mesh(path)?;
-                &read
-            }
-        };
-        mesh.positions.iter().for_each(|p| grow(e.transform.transform_point3(*p)));
-    }
-    let strands = |s: &StrandSet, t: &Affine3A, grow: &mut dyn FnMut(Vec3)| {
-        s.points.iter().for_each(|p| grow(t.transform_point3(Vec3::new(p[0], p[1], p[2]))))
-    };
-    for e in &desc.hair {
-        match &e.source {
-            HairSource::Inline(s) => strands(s, &e.transform, &mut grow),
-            HairSource::File(path) => strands(&cem_hair::read_hair(path)?, &e.transform, &mut grow),
+/// The bounds in world space of `contents`' meshes, strand sets and guides, those in memory
+/// ([`Contents::bounds`]) and those named by file, which are read (fur and hair grown from
+/// follicles add what they grow on).
+pub fn bounds(contents: &Contents) -> Result<Aabb, LoadError> {
+    let mut b = contents.bounds();
+    for e in &contents.meshes {
+        if let MeshSource::File(path) = &e.source {
+            b = b.union(read_mesh(path)?.bounds_under(&e.transform));
         }
     }
-    for e in &desc.hair_systems {
-        match &e.guides {
-            GuideSource::Inline(g) => strands(&g.curves, &e.transform, &mut grow),
-            GuideSource::File(path) => strands(&cem_hair::read_hair(path)?, &e.transform, &mut grow),
-            GuideSource::Follicles { .. } => {}
+    for e in &contents.hair {
+        if let HairSource::File(path) = &e.source {
+            b = b.union(cem_hair::read_hair(path)?.bounds_under(&e.transform));
+        }
+    }
+    for e in &contents.hair_systems {
+        if let GuideSource::File(path) = &e.guides {
+            b = b.union(cem_hair::read_hair(path)?.bounds_under(&e.transform));
         }
     }
     Ok(b)
 }
 
-/// Draws every strand of a description `width` wide (`--hair-width`): strand sets, read
-/// from their files if need be, and hair systems.
-pub fn override_hair_width(desc: &mut Description, width: f32) -> Result<(), LoadError> {
-    for e in &mut desc.hair {
+/// Draws every strand of `contents` `width` wide (`--hair-width`): strand sets, read from
+/// their files if need be, and hair systems ([`Contents::set_hair_width`]).
+pub fn override_hair_width(contents: &mut Contents, width: f32) -> Result<(), LoadError> {
+    for e in &mut contents.hair {
         if let HairSource::File(path) = &e.source {
             e.source = HairSource::Inline(cem_hair::read_hair(path)?);
         }
     }
-    let mut all = imported::Imported {
-        hair: std::mem::take(&mut desc.hair),
-        hair_systems: std::mem::take(&mut desc.hair_systems),
-        ..imported::Imported::default()
-    };
-    all.set_hair_width(width);
-    (desc.hair, desc.hair_systems) = (all.hair, all.hair_systems);
+    contents.set_hair_width(width);
     Ok(())
 }
 

@@ -807,7 +807,7 @@ impl Parser {
                 match map {
                     Some((file, projection)) => {
                         let path = self.dir.join(&file);
-                        let to_world = super::imported::orthogonal_part(&glam::Affine3A::from_mat4(ctm.as_mat4()));
+                        let to_world = crate::math::orthogonal_part(&glam::Affine3A::from_mat4(ctm.as_mat4()));
                         let made = super::raster::read_rgb(&path, super::raster::Encoding::Srgb).and_then(|image| {
                             image_light::environment_map(&image, projection, colour, illuminance, to_world)
                                 .map_err(|m| LoadError::invalid(&path, m))
@@ -874,7 +874,7 @@ impl Parser {
         if bad {
             return Err((p.line, format!("light \"{kind}\": its emission must be finite and not negative")));
         }
-        self.out.lights.push(light);
+        self.out.contents.lights.push(light);
         Ok(true)
     }
 
@@ -903,7 +903,7 @@ impl Parser {
             }
             "trianglemesh" => {
                 let mesh = triangle_mesh(p)?;
-                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
             }
             "plymesh" => {
                 let file = p.string("filename", "")?;
@@ -912,7 +912,7 @@ impl Parser {
                 let bytes = super::gzip::read_file(&path, crate::input_file::Kind::Geometry)
                     .map_err(|e| (p.line, e.to_string()))?;
                 let mesh = super::ply::parse_ply(&bytes, &path).map_err(|e| (p.line, e.to_string()))?;
-                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
             }
             "disk" | "cylinder" | "bilinearmesh" => {
                 let mesh = match kind {
@@ -928,7 +928,7 @@ impl Parser {
                     return Err((p.line, format!("sphere radius {r} must be positive")));
                 }
                 let mesh = TriangleMesh::sphere(r as f32, 48);
-                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
             }
             other => {
                 self.warnings.insert(format!("shape \"{other}\" is not supported: skipped"));
@@ -945,7 +945,7 @@ impl Parser {
         }
         if self.image_scale != 1.0 {
             let k = self.image_scale as f32;
-            for l in &mut self.out.lights {
+            for l in &mut self.out.contents.lights {
                 scale_emission(l, k);
             }
         }
@@ -957,7 +957,7 @@ impl Parser {
             self.warnings.insert(format!("{file}: line {line}: {directive}: parameter \"{decl}\" is not used{more}"));
         }
         for (m, set) in std::mem::take(&mut self.strands) {
-            self.out.hair.push(HairEntry {
+            self.out.contents.hair.push(HairEntry {
                 source: HairSource::Inline(set),
                 material: self.materials[m].clone(),
                 transform: Affine3A::IDENTITY,

@@ -5,7 +5,7 @@
 
 use crate::error::LoadError;
 use crate::light::Light;
-use crate::scene::{CameraDesc, Description, HairEntry, HairSource, MeshEntry, MeshSource};
+use crate::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use crate::shading::Material;
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
@@ -100,10 +100,7 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
             ..Default::default()
         },
         settings: RenderSettings { width: s.film.width, height: s.film.height, spp: s.film.spp, ..Default::default() },
-        lights,
-        meshes,
-        hair,
-        ..Default::default()
+        contents: Contents { lights, meshes, hair, ..Default::default() },
     })
 }
 
@@ -124,10 +121,10 @@ mod tests {
         let d = read_reference_scene(dir.path()).unwrap();
         assert_eq!((d.settings.width, d.settings.height, d.settings.spp), (64, 48, 2));
         assert_eq!(d.camera.vfov, 30.0);
-        assert_eq!(d.lights[0], Light::Distant { direction: Vec3::Y, irradiance: Vec3::splat(3.0) });
-        assert_eq!(d.meshes[0].source, MeshSource::File(dir.path().join("m.obj")));
-        assert_eq!(d.hair[0].source, HairSource::File(dir.path().join("h.hair")));
-        assert_eq!(d.hair[0].material, Material::Diffuse { color: Vec3::new(0.4, 0.3, 0.2) });
+        assert_eq!(d.contents.lights[0], Light::Distant { direction: Vec3::Y, irradiance: Vec3::splat(3.0) });
+        assert_eq!(d.contents.meshes[0].source, MeshSource::File(dir.path().join("m.obj")));
+        assert_eq!(d.contents.hair[0].source, HairSource::File(dir.path().join("h.hair")));
+        assert_eq!(d.contents.hair[0].material, Material::Diffuse { color: Vec3::new(0.4, 0.3, 0.2) });
         std::fs::write(dir.path().join("scene.json"), "{").unwrap();
         let e = read_reference_scene(dir.path()).unwrap_err().to_string();
         assert!(e.contains("scene.json") && e.contains("not a reference scene"), "{e}");

@@ -294,7 +294,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                             (t.ambient, t.diffuse) = (c, c);
                         }
                     }
-                    out.hair.push(entry);
+                    out.contents.hair.push(entry);
                 }
             }
             "Camera" => cameras.push((prim, transform)),
@@ -321,7 +321,9 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                 };
                 push_mesh(out, mesh, shapes::surface_color(&prim, time, notes).map_err(what)?, transform);
             }
-            light => out.lights.push(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?),
+            light => {
+                out.contents.lights.push(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?)
+            }
         }
     }
     let chosen = match &options.camera {
@@ -379,7 +381,7 @@ fn render_resolution(prim: &Prim, time: TimeCode) -> Res<Option<[u32; 2]>> {
 
 fn push_mesh(out: &mut Imported, mesh: crate::geometry::TriangleMesh, color: Option<Vec3>, transform: Affine3A) {
     let material = Material::Diffuse { color: color.unwrap_or(Vec3::splat(0.5)) };
-    out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+    out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
 }
 
 #[cfg(test)]

@@ -22,6 +22,14 @@ pub fn frame(n: Vec3) -> (Vec3, Vec3) {
     (Vec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), Vec3::new(b, sign + n.y * n.y * a, -n.y))
 }
 
+/// The orthogonal part of an affine map's linear part: its rotation, times the reflection
+/// when it mirrors (glam puts a mirror's sign on the x scale). What turns things at
+/// infinity, such as environment maps, which no translation or scale moves.
+pub fn orthogonal_part(m: &glam::Affine3A) -> glam::Mat3 {
+    let (scale, rotation, _) = m.to_scale_rotation_translation();
+    glam::Mat3::from_quat(rotation) * glam::Mat3::from_diagonal(scale.signum())
+}
+
 /// Axis-aligned bounding box. Corners are SIMD vectors (`Vec3A`): BVH builds union millions
 /// of boxes.
 #[derive(Clone, Copy, Debug, PartialEq)]

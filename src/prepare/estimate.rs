@@ -50,7 +50,7 @@ impl MemoryEstimate {
 /// from its density and segments.
 pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> {
     let mut e = MemoryEstimate::default();
-    for m in &desc.meshes {
+    for m in &desc.contents.meshes {
         let (vertices, triangles) = match &m.source {
             MeshSource::Inline(mesh) => (mesh.positions.len() as u64, mesh.indices.len() as u64),
             MeshSource::File(path) => mesh_counts(path)?,
@@ -59,7 +59,7 @@ pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> 
         // them), and three indices per triangle.
         e.add(vertices * (12 + 12 + 8) + triangles * 12, triangles);
     }
-    for h in &desc.hair {
+    for h in &desc.contents.hair {
         let (strands, points, colors, opacity) = match &h.source {
             HairSource::Inline(s) => {
                 (s.strand_count() as u64, s.points.len() as u64, s.colors.is_some(), s.opacity.is_some())
@@ -73,7 +73,7 @@ pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> 
         // Each strand's first point starts no segment.
         e.add(points * per_point + strands * 4, points.saturating_sub(strands));
     }
-    for h in &desc.hair_systems {
+    for h in &desc.contents.hair_systems {
         // Guides: `n` points each become `(n - 1) * (sub_segments + 1) + 2` points of every
         // hair of their clump (`hair_system::expand`).
         let (guides, guide_points) = match &h.guides {
@@ -100,7 +100,7 @@ pub fn estimate_memory(desc: &Description) -> Result<MemoryEstimate, LoadError> 
         let bytes = points.saturating_mul(16 + 12).saturating_add(strands.saturating_mul(4 + 8 + 4));
         e.add(bytes.saturating_mul(2), points.saturating_sub(strands));
     }
-    for f in &desc.fur {
+    for f in &desc.contents.fur {
         // Density is the expected root count over the whole mesh (baldness only removes
         // roots), each hair `segments + 1` points with a colour and an opacity, and a root
         // UV and clump per hair.
@@ -238,7 +238,7 @@ mod tests {
         assert_eq!(io::ply::read_ply_counts(&root.join("scenes/box.ply")).unwrap().0, 8);
         assert_eq!(io::obj::count_obj(&root.join("tests/data/cube.obj")).unwrap(), (8, 12));
         let mut missing = desc.clone();
-        missing.hair[0].source = HairSource::File(root.join("nowhere.hair"));
+        missing.contents.hair[0].source = HairSource::File(root.join("nowhere.hair"));
         assert!(estimate_memory(&missing).unwrap_err().to_string().contains("nowhere.hair"));
     }
 }

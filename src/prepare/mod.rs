@@ -59,7 +59,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
     let mut shapes = Vec::new();
     let mut warnings = Vec::new();
     let mut lods = Vec::new();
-    for (i, m) in desc.meshes.iter().enumerate() {
+    for (i, m) in desc.contents.meshes.iter().enumerate() {
         let mut mesh = match &m.source {
             MeshSource::File(path) => io::read_mesh(path)?,
             MeshSource::Inline(mesh) => mesh.clone(),
@@ -71,7 +71,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
         materials.push(m.material.clone());
     }
-    for (i, h) in desc.hair.iter().enumerate() {
+    for (i, h) in desc.contents.hair.iter().enumerate() {
         let mut strands = match &h.source {
             HairSource::File(path) => {
                 let strands = io::cem_hair::read_hair(path)?;
@@ -114,7 +114,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
-    for (i, h) in desc.hair_systems.iter().enumerate() {
+    for (i, h) in desc.contents.hair_systems.iter().enumerate() {
         let what = |e: String| PrepareError::Invalid(format!("hair_system {}: {e}", i + 1));
         let guides = match &h.guides {
             GuideSource::File(path) => {
@@ -138,7 +138,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(h.material.clone());
     }
-    for (i, f) in desc.fur.iter().enumerate() {
+    for (i, f) in desc.contents.fur.iter().enumerate() {
         let what = |e: String| PrepareError::Invalid(format!("fur {}: {e}", i + 1));
         // Meshes come first among the shapes, in order.
         let Some((Shape::Mesh(mesh), _)) = shapes.get(f.mesh) else {
@@ -197,6 +197,7 @@ pub fn prepare(desc: &Description) -> Result<(World, PrepareTimes), PrepareError
 /// size (16 bytes a point: 2.6 GB for 150 million segments) off the peak of the build.
 pub fn prepare_owned(mut desc: Description) -> Result<(World, PrepareTimes), PrepareError> {
     let mut taken: Vec<Option<StrandSet>> = desc
+        .contents
         .hair
         .iter_mut()
         .map(|h| match &mut h.source {
@@ -225,12 +226,12 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     );
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
-    let background = desc.lights.iter().map(Light::background).sum();
-    let ambient = desc.lights.iter().map(Light::ambient).sum();
+    let background = desc.contents.lights.iter().map(Light::background).sum();
+    let ambient = desc.contents.lights.iter().map(Light::ambient).sum();
     let world = World {
         camera,
         settings: desc.settings.clone(),
-        lights: desc.lights.clone(),
+        lights: desc.contents.lights.clone(),
         materials,
         accel,
         background,
@@ -265,7 +266,7 @@ mod tests {
         // The demo's hair is inline and moved by `prepare_owned`, with a transform applied
         // after the move: the objects must equal those `prepare` builds from a copy.
         let mut desc = crate::demo::description(300, 5);
-        desc.hair[0].transform = Affine3A::from_translation(Vec3::new(0.1, 0.2, 0.3));
+        desc.contents.hair[0].transform = Affine3A::from_translation(Vec3::new(0.1, 0.2, 0.3));
         let (copied, _) = prepare(&desc).unwrap();
         let (moved, _) = prepare_owned(desc.clone()).unwrap();
         let (a, b) = (strand_sets(&copied), strand_sets(&moved));

@@ -2,11 +2,14 @@
 //! file is read. Entries name their geometry by path or carry it inline;
 //! [`crate::prepare`] loads them into a [`crate::world::World`].
 
+mod contents;
+
+pub use contents::Contents;
+
 use crate::accel::lod::LodParams;
 use crate::error::PrepareError;
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::hair_system::{FollicleParams, Guides, HairColors, HairSystem};
-use crate::light::Light;
 use crate::shading::Material;
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
@@ -99,7 +102,7 @@ pub enum GuideSource {
     File(PathBuf),
     /// Follicles grown on the description's mesh number `mesh` (0-based), in world space.
     Follicles {
-        /// Index into [`Description::meshes`].
+        /// Index into [`Contents::meshes`].
         mesh: usize,
         /// Placement, points per hair, length.
         params: FollicleParams,
@@ -131,7 +134,7 @@ pub struct HairSystemEntry {
 /// Fur grown on one of the scene's meshes (Maya Fur, [`crate::fur`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FurEntry {
-    /// Index of the mesh it grows on, into [`Description::meshes`]; it grows on the mesh
+    /// Index of the mesh it grows on, into [`Contents::meshes`]; it grows on the mesh
     /// as placed in the world (after the mesh's transform).
     pub mesh: usize,
     /// The fur description (a preset with overrides).
@@ -154,20 +157,12 @@ pub struct Description {
     pub camera: CameraDesc,
     /// Render settings.
     pub settings: RenderSettings,
-    /// Lights.
-    pub lights: Vec<Light>,
-    /// Meshes.
-    pub meshes: Vec<MeshEntry>,
-    /// Strand sets.
-    pub hair: Vec<HairEntry>,
-    /// Hair systems.
-    pub hair_systems: Vec<HairSystemEntry>,
-    /// Fur grown on meshes.
-    pub fur: Vec<FurEntry>,
+    /// Lights and entries.
+    pub contents: Contents,
 }
 
 impl Description {
-    /// Checks settings and lights for values no render can use.
+    /// Checks settings, lights and entries for values no render can use.
     pub fn validate(&self) -> Result<(), PrepareError> {
         let s = &self.settings;
         if s.width == 0 || s.height == 0 || s.width > 65_536 || s.height > 65_536 {
@@ -225,46 +220,6 @@ impl Description {
         if s.max_depth > 64 {
             return Err(PrepareError::Invalid(format!("max_depth {} is out of range (0 to 64)", s.max_depth)));
         }
-        let lods = (self.hair.iter().map(|h| ("hair", h.lod)).enumerate())
-            .chain(self.hair_systems.iter().map(|h| ("hair_system", h.lod)).enumerate())
-            .chain(self.fur.iter().map(|f| ("fur", f.lod)).enumerate());
-        for (i, (kind, p)) in lods {
-            if let Some(p) = p {
-                p.validate().map_err(|e| PrepareError::Invalid(format!("{kind} {}: {e}", i + 1)))?;
-            }
-        }
-        for h in &self.hair {
-            if !(h.radius_scale.is_finite() && h.radius_scale >= 0.0) {
-                return Err(PrepareError::Invalid(format!(
-                    "hair radius_scale {} must be finite and >= 0",
-                    h.radius_scale
-                )));
-            }
-        }
-        for (i, h) in self.hair_systems.iter().enumerate() {
-            let what = |e: String| PrepareError::Invalid(format!("hair_system {}: {e}", i + 1));
-            h.system.validate().map_err(what)?;
-            if let GuideSource::Follicles { mesh, params } = &h.guides {
-                params.validate().map_err(what)?;
-                if *mesh >= self.meshes.len() {
-                    return Err(what(format!(
-                        "follicles `mesh = {}` names no mesh (the scene has {})",
-                        mesh + 1,
-                        self.meshes.len()
-                    )));
-                }
-            }
-        }
-        for (i, f) in self.fur.iter().enumerate() {
-            let what = |e: String| PrepareError::Invalid(format!("fur {}: {e}", i + 1));
-            if f.mesh >= self.meshes.len() {
-                return Err(what(format!("`mesh` = {} names no mesh (there are {})", f.mesh + 1, self.meshes.len())));
-            }
-            f.description.validate().map_err(what)?;
-            if let Some((_, a)) = &f.guides {
-                a.validate().map_err(what)?;
-            }
-        }
-        Ok(())
+        self.contents.validate()
     }
 }

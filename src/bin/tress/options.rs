@@ -112,7 +112,7 @@ pub fn load_with_warnings(
         None => (tress::demo::description(o.demo_strands, 1), Vec::new()),
     };
     if let Some(w) = o.hair_width {
-        tress::io::override_hair_width(&mut desc, w)?;
+        tress::io::override_hair_width(&mut desc.contents, w)?;
     }
     apply(&mut desc, o);
     desc.validate().map_err(|e| in_scene(scene, e))?;

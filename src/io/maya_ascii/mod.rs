@@ -148,7 +148,7 @@ struct Reader<'g> {
     world: HashMap<usize, DAffine3>,
     /// Whether a node or one of its parents is hidden, by node, filled lazily.
     hidden: HashMap<usize, bool>,
-    /// Mesh index in `out.meshes` and the world-space mesh, by mesh node.
+    /// Mesh index in `out.contents.meshes` and the world-space mesh, by mesh node.
     meshes: HashMap<usize, (usize, TriangleMesh)>,
     /// The camera asked for by name (`--camera`), if any.
     wanted_camera: Option<String>,
@@ -213,7 +213,7 @@ impl<'g> Reader<'g> {
             furs.push(f);
         }
         let (entries, warnings) = fur_nodes::fur_entries(&furs)?;
-        self.out.fur = entries;
+        self.out.contents.fur = entries;
         self.out.warnings.extend(warnings);
         self.camera()?;
         self.lights()?;
@@ -417,8 +417,8 @@ impl<'g> Reader<'g> {
         let mut placed = mesh.clone();
         let transform = finite_affine(g, n, &world)?;
         placed.transform(&transform);
-        self.meshes.insert(n, (self.out.meshes.len(), placed));
-        self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+        self.meshes.insert(n, (self.out.contents.meshes.len(), placed));
+        self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
         Ok(())
     }
 
@@ -587,7 +587,7 @@ impl<'g> Reader<'g> {
             return Ok(());
         }
         let material = Material::Tube(system.tube());
-        self.out.hair_systems.push(HairSystemEntry {
+        self.out.contents.hair_systems.push(HairSystemEntry {
             guides: GuideSource::Inline(Guides { curves, root_uv: Some(root_uv) }),
             system,
             material,
@@ -644,7 +644,7 @@ impl<'g> Reader<'g> {
             let width = match system {
                 Some(h) => h.hair_width * h.hair_width_scale.eval(0.0),
                 None => {
-                    let mut b = self.out.bounds();
+                    let mut b = self.out.contents.bounds();
                     for p in &set.points {
                         b = b.grow(glam::Vec3A::new(p[0], p[1], p[2]));
                     }
@@ -666,7 +666,7 @@ impl<'g> Reader<'g> {
         }
         if set.strand_count() > 0 {
             let material = Material::Tube(HairSystem::default().tube());
-            self.out.hair.push(HairEntry {
+            self.out.contents.hair.push(HairEntry {
                 source: HairSource::Inline(set),
                 material,
                 transform: Affine3A::IDENTITY,
@@ -890,7 +890,7 @@ impl<'g> Reader<'g> {
                     Light::Quad { corner: corner + edge_v, edge_u, edge_v: -edge_v, radiance: power }
                 }
             };
-            self.out.lights.push(light);
+            self.out.contents.lights.push(light);
         }
         Ok(())
     }

@@ -143,22 +143,22 @@ fn close(a: Vec3, b: Vec3) -> bool {
 fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     let s = read(SCENE).unwrap();
     // The mesh: 6 vertices, 2 quads = 4 triangles, UVs, moved up by its transform.
-    assert_eq!(s.meshes.len(), 1);
-    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    assert_eq!(s.contents.meshes.len(), 1);
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert_eq!((m.positions.len(), m.indices.len()), (6, 4));
     assert!(m.uvs.is_some());
-    assert!(close(s.meshes[0].transform.transform_point3(Vec3::ZERO), Vec3::Y));
+    assert!(close(s.contents.meshes[0].transform.transform_point3(Vec3::ZERO), Vec3::Y));
     // Faces keep Maya's winding: the plane faces +y... (its normals are not stored: flat).
     let [a, b, c] = m.corners(0);
     assert!(
         (b - a).cross(c - a).normalize().dot(Vec3::Y) > 0.99
             || (b - a).cross(c - a).normalize().dot(Vec3::NEG_Y) > 0.99
     );
-    assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.4) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.4) });
 
     // The hair system: three follicles, attributes from the file, the rest node defaults.
-    assert_eq!(s.hair_systems.len(), 1);
-    let h = &s.hair_systems[0];
+    assert_eq!(s.contents.hair_systems.len(), 1);
+    let h = &s.contents.hair_systems[0];
     let GuideSource::Inline(g) = &h.guides else { panic!() };
     assert_eq!(g.curves.strand_count(), 3);
     assert_eq!(g.root_uv, Some(vec![[0.25, 0.5], [0.75, 0.5], [0.75, 0.25]]));
@@ -182,8 +182,8 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     assert_eq!(sys.clump_flatness, d.clump_flatness);
 
     // The FurDescription: the file's values, node defaults elsewhere, grown on the plane.
-    assert_eq!(s.fur.len(), 1);
-    let (f, d) = (&s.fur[0], &s.fur[0].description);
+    assert_eq!(s.contents.fur.len(), 1);
+    let (f, d) = (&s.contents.fur[0], &s.contents.fur[0].description);
     assert_eq!(f.mesh, 0);
     assert_eq!((d.density, d[Scalar::Length].value, d[Scalar::BaseWidth].value), (5000, 0.4, 0.02));
     assert_eq!(d[ColorAttr::BaseColor].value, Vec3::new(0.6, 0.4, 0.2));
@@ -201,12 +201,12 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     let vfov = 2.0 * (1.41732f32 * 25.4 / 100.0 / (4.0 / 3.0)).atan().to_degrees();
     assert!((c.vfov - vfov).abs() < 1e-3, "{}", c.vfov);
     assert_eq!(s.resolution, Some([320, 240]));
-    assert_eq!(s.lights.len(), 1);
-    let Light::Distant { direction, irradiance } = s.lights[0] else { panic!() };
+    assert_eq!(s.contents.lights.len(), 1);
+    let Light::Distant { direction, irradiance } = s.contents.lights[0] else { panic!() };
     // Rotated −90° about X, the light's −Z points down: it comes from above.
     assert!(close(direction, Vec3::Y), "{direction}");
     assert!(close(irradiance, Vec3::splat(2.0 * PI)));
-    assert!(s.hair.is_empty());
+    assert!(s.contents.hair.is_empty());
     assert!(s.warnings.iter().any(|w| w.contains("polyCube (2)")), "{:?}", s.warnings);
     assert!(s.warnings.iter().any(|w| w.contains("1 closed")), "{:?}", s.warnings);
 }
@@ -214,7 +214,7 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
 #[test]
 fn nurbs_curves_honour_degree_and_knots() {
     let s = read(SCENE).unwrap();
-    let GuideSource::Inline(g) = &s.hair_systems[0].guides else { panic!() };
+    let GuideSource::Inline(g) = &s.contents.hair_systems[0].guides else { panic!() };
     let c = &g.curves;
     let strand = |i: usize| -> Vec<Vec3> { (c.offsets[i]..c.offsets[i + 1]).map(|p| c.position(p)).collect() };
     // Curve 1: degree 3, 2 spans, clamped knots 0 0 0 1 2 2 2: 2 × 8 + 1 samples, through
@@ -252,14 +252,14 @@ fn node_defaults_apply_when_the_file_sets_nothing() {
          connectAttr \"cs.ws\" \"fs.sp\";\nconnectAttr \"fs.oha\" \"hs.ih[0]\";\n",
     )
     .unwrap();
-    assert_eq!(s.hair_systems[0].system, HairSystem::default());
+    assert_eq!(s.contents.hair_systems[0].system, HairSystem::default());
     // The bare FurDescription is attached to no mesh: read, and reported as growing nothing.
     assert!(
-        s.fur.is_empty() && s.warnings.iter().any(|w| w.contains("fd") && w.contains("no mesh")),
+        s.contents.fur.is_empty() && s.warnings.iter().any(|w| w.contains("fd") && w.contains("no mesh")),
         "{:?}",
         s.warnings
     );
-    assert!(s.camera.is_none() && s.lights.is_empty());
+    assert!(s.camera.is_none() && s.contents.lights.is_empty());
 }
 
 #[test]
@@ -271,9 +271,9 @@ fn procedural_meshes_maya_default_material_and_shading_groups() {
          connectAttr \"ps.out\" \"ss.i\";\nconnectAttr \"red.oc\" \"redSG.ss\";\nconnectAttr \"ss.iog\" \"redSG.dsm\" -na;\n",
     )
     .unwrap();
-    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert!(m.positions.iter().all(|p| (p.length() - 2.0).abs() < 1e-4));
-    assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::new(0.5, 0.0, 0.0) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.5, 0.0, 0.0) });
 }
 
 /// A point light 4 units above the origin with the given `setAttr`s, and the irradiance it
@@ -284,9 +284,9 @@ fn point_light_irradiance(head: &str, attrs: &str) -> f32 {
          setAttr \".in\" 2;\n{attrs}"
     ))
     .unwrap();
-    let Light::Point { position, .. } = s.lights[0] else { panic!("{:?}", s.lights) };
+    let Light::Point { position, .. } = s.contents.lights[0] else { panic!("{:?}", s.contents.lights) };
     assert!(close(position, Vec3::new(0.0, 4.0, 0.0)));
-    s.lights[0].sample(Vec3::ZERO, Some(Vec3::Y), (0.5, 0.5)).unwrap().value.x
+    s.contents.lights[0].sample(Vec3::ZERO, Some(Vec3::Y), (0.5, 0.5)).unwrap().value.x
 }
 
 #[test]
@@ -303,7 +303,7 @@ fn point_and_spot_lights_decay_as_maya_says_no_decay_by_default() {
     let spot =
         read("createNode transform -n l;\nsetAttr \".t\" -type \"double3\" 0 0 5;\ncreateNode spotLight -n ls -p l;\n")
             .unwrap();
-    let s = spot.lights[0].sample(Vec3::ZERO, Some(Vec3::Z), (0.5, 0.5)).unwrap();
+    let s = spot.contents.lights[0].sample(Vec3::ZERO, Some(Vec3::Z), (0.5, 0.5)).unwrap();
     assert!((s.value.x / PI - 1.0).abs() < 1e-5, "{}", s.value.x);
     let e = read("createNode pointLight -n p;\nsetAttr \".de\" 7;\n").unwrap_err().to_string();
     assert!(e.contains("line 1") && e.contains("decay rate 7"), "{e}");
@@ -331,7 +331,7 @@ fn free_curves_take_the_hair_systems_width_or_one_relative_to_the_scene() {
         )
     };
     let radii = |s: &Imported| {
-        let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
+        let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
         set.points.iter().map(|p| p[3]).collect::<Vec<_>>()
     };
     // A groom modelled in millimetres (a curve 300 units long): hairs a thousandth of the
@@ -370,10 +370,10 @@ fn malformed_lines_are_errors_naming_file_and_line() {
 #[test]
 fn the_example_scene_imports() {
     let s = read(include_str!("../../../scenes/maya_hair.ma")).unwrap();
-    assert_eq!(s.meshes.len(), 2);
-    assert_eq!(s.hair_systems.len(), 1);
-    assert_eq!(s.fur.len(), 1);
-    assert!(s.camera.is_some() && !s.lights.is_empty());
+    assert_eq!(s.contents.meshes.len(), 2);
+    assert_eq!(s.contents.hair_systems.len(), 1);
+    assert_eq!(s.contents.fur.len(), 1);
+    assert!(s.camera.is_some() && !s.contents.lights.is_empty());
 }
 
 #[test]

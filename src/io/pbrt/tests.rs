@@ -37,17 +37,17 @@ fn a_hair_scene_reads_camera_film_lights_curves_and_meshes() {
     assert_eq!(s.integrator, Some(Integrator::Path));
     let c = s.camera.as_ref().unwrap();
     assert!((c.eye - Vec3::new(0.0, 0.0, 5.0)).length() < 1e-5 && (c.vfov - 30.0).abs() < 1e-5);
-    assert_eq!(s.lights.len(), 2);
-    let Light::Distant { direction, irradiance } = s.lights[0] else { panic!() };
+    assert_eq!(s.contents.lights.len(), 2);
+    let Light::Distant { direction, irradiance } = s.contents.lights[0] else { panic!() };
     assert!((direction - Vec3::Z).length() < 1e-5 && irradiance == Vec3::splat(2.0));
-    assert_eq!(s.lights[1], Light::Environment { radiance: Vec3::new(0.1, 0.2, 0.3) });
-    assert_eq!((s.hair.len(), s.meshes.len()), (1, 1));
-    assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.4, 0.6) });
-    let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
+    assert_eq!(s.contents.lights[1], Light::Environment { radiance: Vec3::new(0.1, 0.2, 0.3) });
+    assert_eq!((s.contents.hair.len(), s.contents.meshes.len()), (1, 1));
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.4, 0.6) });
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
     assert_eq!(set.strand_count(), 2);
     // Hair material: the physical model with the file's melanin and roughness, the rest
     // pbrt's defaults.
-    let Material::Physical(h) = &s.hair[0].material else { panic!() };
+    let Material::Physical(h) = &s.contents.hair[0].material else { panic!() };
     let want = HairParams {
         absorption: Absorption::Melanin { eumelanin: 0.3, pheomelanin: 0.0 },
         beta_m: 0.25,
@@ -59,7 +59,7 @@ fn a_hair_scene_reads_camera_film_lights_curves_and_meshes() {
 #[test]
 fn curves_match_their_control_points() {
     let s = read(SCENE).unwrap();
-    let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
     // The Bézier curve of collinear, evenly spaced points is the segment itself: 2³ + 1
     // samples at y = −1 + 3 k / 8 (moved down by Translate), widths 0.1 → 0.02 linearly.
     assert_eq!(set.offsets[1], 9);
@@ -84,10 +84,10 @@ fn the_image_is_not_mirrored() {
     // looking down −z from +z; tress mirrors the world so it lands where pbrt puts it.
     let s = read(SCENE).unwrap();
     let (d, _) = s.into_description();
-    let HairSource::Inline(set) = &d.hair[0].source else { panic!() };
+    let HairSource::Inline(set) = &d.contents.hair[0].source else { panic!() };
     let right = (d.camera.target - d.camera.eye).cross(d.camera.up).normalize();
     // The B-spline curve at x = 1 in the file.
-    let x = d.hair[0].transform.transform_point3(Vec3::from_slice(&set.points[9][..3]));
+    let x = d.contents.hair[0].transform.transform_point3(Vec3::from_slice(&set.points[9][..3]));
     assert!(x.dot(right) < 0.0, "{x} should be on the left");
 }
 
@@ -102,11 +102,11 @@ fn includes_named_materials_and_degree_two_curves() {
     let main = dir.path().join("main.pbrt");
     std::fs::write(&main, "WorldBegin\nMakeNamedMaterial \"h\" \"string type\" \"hair\" \"rgb reflectance\" [0.5 0.4 0.3]\nNamedMaterial \"h\"\nInclude \"curves.pbrt\"\n").unwrap();
     let s = read_pbrt(&main).unwrap();
-    let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
     // A quadratic Bézier's midpoint is (P0 + 2 P1 + P2) / 4 = (1, 0.5, 0).
     let mid = set.points[4];
     assert!((Vec3::new(mid[0], mid[1], mid[2]) - Vec3::new(1.0, 0.5, 0.0)).length() < 1e-5, "{mid:?}");
-    let Material::Physical(h) = &s.hair[0].material else { panic!() };
+    let Material::Physical(h) = &s.contents.hair[0].material else { panic!() };
     assert_eq!(h.params().absorption, Absorption::Color(Vec3::new(0.5, 0.4, 0.3)));
     // An include cycle is an error, not a hang.
     std::fs::write(dir.path().join("loop.pbrt"), "Include \"loop.pbrt\"\n").unwrap();
@@ -141,7 +141,7 @@ fn malformed_files_give_line_numbered_errors() {
 fn sigma_a_round_trips_through_the_physical_material() {
     // A σ_a given to pbrt reaches the BSDF unchanged (through Chiang's colour mapping).
     let s = read("Material \"hair\" \"rgb sigma_a\" [0.2 0.5 1.1] \"float beta_n\" 0.4\nShape \"curve\" \"point3 P\" [0 0 0 0 1 0 0 2 0 0 3 0]\n").unwrap();
-    let Material::Physical(h) = &s.hair[0].material else { panic!() };
+    let Material::Physical(h) = &s.contents.hair[0].material else { panic!() };
     let sigma = h.sigma_a(None);
     assert!((sigma - Vec3::new(0.2, 0.5, 1.1)).abs().max_element() < 1e-4, "{sigma}");
 }
@@ -170,9 +170,9 @@ fn gzipped_includes_and_ply_meshes_are_read_by_their_magic_bytes() {
     )
     .unwrap();
     let s = read_pbrt(&main).unwrap();
-    let HairSource::Inline(set) = &s.hair[0].source else { panic!() };
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
     assert_eq!(set.strand_count(), 3);
-    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert_eq!(m.indices.len(), 1);
     // A damaged gzip include names the included file.
     let mut bad = gzip(curves.as_bytes());
@@ -213,7 +213,7 @@ fn film_iso_shutter_and_v3_scale_scale_every_light_as_pbrt_scales_the_image() {
     let lights =
         "WorldBegin\nLightSource \"distant\" \"rgb L\" [1 2 3]\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n\
                   LightSource \"point\" \"rgb I\" [4 4 4]\n";
-    let at = |head: &str| read(&format!("{head}{lights}")).unwrap().lights;
+    let at = |head: &str| read(&format!("{head}{lights}")).unwrap().contents.lights;
     let plain = at("");
     assert_eq!(plain[0], Light::Distant { direction: -Vec3::Z, irradiance: Vec3::new(1.0, 2.0, 3.0) });
     // Imaging ratio = exposure time × ISO / 100.
@@ -238,15 +238,15 @@ fn film_iso_shutter_and_v3_scale_scale_every_light_as_pbrt_scales_the_image() {
 fn photometric_light_parameters_follow_pbrt_v4() {
     let s =
         read("LightSource \"point\" \"float power\" 100\nLightSource \"distant\" \"float illuminance\" 3\n").unwrap();
-    let Light::Point { intensity, .. } = s.lights[0] else { panic!() };
+    let Light::Point { intensity, .. } = s.contents.lights[0] else { panic!() };
     assert!((intensity.x - 100.0 / (4.0 * std::f32::consts::PI)).abs() < 1e-4, "{intensity}");
-    let Light::Distant { irradiance, .. } = s.lights[1] else { panic!() };
+    let Light::Distant { irradiance, .. } = s.contents.lights[1] else { panic!() };
     assert_eq!(irradiance, Vec3::splat(3.0));
 }
 
 fn hair_of(text: &str) -> (HairParams, Vec<String>) {
     let s = read(&format!("{text}\nShape \"curve\" \"point3 P\" [0 0 0 0 1 0 0 2 0 0 3 0]\n")).unwrap();
-    let Material::Physical(h) = &s.hair[0].material else { panic!("{text}") };
+    let Material::Physical(h) = &s.contents.hair[0].material else { panic!("{text}") };
     (*h.params(), s.warnings)
 }
 
@@ -289,7 +289,7 @@ fn diffuse_colours_of_v3_and_v4_materials() {
     let mesh = "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0]\n";
     let material = |m: &str| {
         let s = read(&format!("WorldBegin\n{m}\n{mesh}")).unwrap();
-        (s.meshes[0].material.clone(), s.warnings)
+        (s.contents.meshes[0].material.clone(), s.warnings)
     };
     let rgb = Vec3::new(0.1, 0.5, 0.9);
     for m in [
@@ -362,7 +362,7 @@ fn image_infinite_lights_become_environment_maps_scaled_like_every_light() {
     std::fs::write(&main, "Film \"rgb\" \"float iso\" 200\nWorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 0.5\n").unwrap();
     let s = read_pbrt(&main).unwrap();
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
-    let [Light::EnvironmentMap(m)] = &s.lights[..] else { panic!("{:?}", s.lights) };
+    let [Light::EnvironmentMap(m)] = &s.contents.lights[..] else { panic!("{:?}", s.contents.lights) };
     // (4, 8, 12) × scale 0.5 × imaging ratio 2, from every direction.
     for d in [Vec3::X, Vec3::Y, -Vec3::Z, Vec3::new(1.0, -2.0, 3.0).normalize()] {
         assert!((m.radiance(d) - Vec3::new(4.0, 8.0, 12.0)).abs().max_element() < 1e-4, "{d}: {}", m.radiance(d));
@@ -370,7 +370,7 @@ fn image_infinite_lights_become_environment_maps_scaled_like_every_light() {
     // A missing map: a white sky, said so, not an error.
     std::fs::write(&main, "WorldBegin\nLightSource \"infinite\" \"string mapname\" \"gone.exr\"\n").unwrap();
     let s = read_pbrt(&main).unwrap();
-    assert_eq!(s.lights, [Light::Environment { radiance: Vec3::ONE }]);
+    assert_eq!(s.contents.lights, [Light::Environment { radiance: Vec3::ONE }]);
     assert!(s.warnings.iter().any(|w| w.contains("gone.exr") && w.contains("white sky")), "{:?}", s.warnings);
 }
 

@@ -12,7 +12,7 @@ mod animation;
 mod convert;
 mod schema;
 
-use crate::scene::{CameraDesc, Description, FurEntry, HairEntry, HairSource, MeshEntry, MeshSource};
+use crate::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource};
 use crate::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
 pub use animation::{at_frame, has_pattern};
 use animation::{camera_at, frame_warning};
@@ -144,12 +144,11 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             }
         },
     };
-    let mut lights = Vec::new();
+    let mut contents = Contents::default();
     for (i, l) in scene.light.iter().enumerate() {
-        lights.push(light(l, base).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
+        contents.lights.push(light(l, base).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
     }
     let mut textures = convert::Textures::new();
-    let mut meshes = Vec::new();
     for (i, m) in scene.mesh.iter().enumerate() {
         let what = |m: String| invalid(format!("mesh {}: {m}", i + 1));
         let source = match (&m.file, &m.shape) {
@@ -157,16 +156,15 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             (None, Some(shape)) => MeshSource::Inline(procedural(shape).map_err(what)?),
             _ => return Err(what("give exactly one of `file` and `shape`".into())),
         };
-        meshes.push(MeshEntry {
+        contents.meshes.push(MeshEntry {
             source,
             material: material(&m.material, base, &mut textures).map_err(what)?,
             transform: transform(&m.transform).map_err(what)?,
         });
     }
-    let mut hair = Vec::new();
     for (i, h) in scene.hair.iter().enumerate() {
         let what = |m: String| invalid(format!("hair {}: {m}", i + 1));
-        hair.push(HairEntry {
+        contents.hair.push(HairEntry {
             source: HairSource::File(base.join(at_frame(&h.file, frame))),
             material: material(&h.material, base, &mut textures).map_err(what)?,
             transform: transform(&h.transform).map_err(what)?,
@@ -175,15 +173,14 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             lod: h.lod.as_ref().map(LodToml::params).transpose().map_err(what)?,
         });
     }
-    let mut hair_systems = Vec::new();
     for (i, h) in scene.hair_system.iter().enumerate() {
-        let entry = hair_system(h, base, meshes.len(), &mut textures)
+        let entry = hair_system(h, base, contents.meshes.len(), &mut textures)
             .map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
-        hair_systems.push(entry);
+        contents.hair_systems.push(entry);
     }
-    let mut furs = Vec::new();
     for (i, f) in scene.fur.iter().enumerate() {
-        furs.push(fur(f, meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?);
+        let entry = fur(f, contents.meshes.len(), base).map_err(|m| invalid(format!("fur {}: {m}", i + 1)))?;
+        contents.fur.push(entry);
     }
     // Imported entries come after the file's own, so `[[mesh]]` numbers stay as written.
     let mut warnings: Vec<String> = frame_warning.into_iter().collect();
@@ -197,32 +194,20 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             _ => Ok(v),
         };
         if let Some(w) = positive("width", imp.width)? {
-            imported.set_hair_width(w);
+            crate::io::override_hair_width(&mut imported.contents, w).map_err(|e| what(e.to_string()))?;
         }
         if let Some(k) = positive("radius_scale", imp.radius_scale)? {
-            imported.scale_hair_radius(k);
+            imported.contents.scale_hair_radius(k);
         }
         warnings.extend(imported.warnings.iter().map(|w| format!("{}: {w}", file.display())));
-        if imp.lights {
-            lights.append(&mut imported.lights);
+        if !imp.lights {
+            imported.contents.lights.clear();
         }
-        // Imported fur grows on imported meshes: their numbers move by the meshes before.
-        furs.extend(imported.fur.drain(..).map(|f| FurEntry { mesh: f.mesh + meshes.len(), ..f }));
-        meshes.append(&mut imported.meshes);
-        hair.append(&mut imported.hair);
-        hair_systems.append(&mut imported.hair_systems);
+        contents.append(imported.contents);
     }
-    let mut desc = Description {
-        camera: camera.clone().unwrap_or_default(),
-        settings,
-        lights,
-        meshes,
-        hair,
-        hair_systems,
-        fur: furs,
-    };
+    let mut desc = Description { camera: camera.clone().unwrap_or_default(), settings, contents };
     if camera.is_none() {
-        let bounds = crate::io::description_bounds(&desc).map_err(|e| invalid(e.to_string()))?;
+        let bounds = crate::io::bounds(&desc.contents).map_err(|e| invalid(e.to_string()))?;
         desc.camera = crate::io::imported::framing_camera(&bounds);
         warnings.push("the scene has no [camera]: framing the geometry from the front".into());
     }

@@ -49,13 +49,13 @@ material = { type = "tube", diffuse = [0.35, 0.2, 0.1], specular = [0.3, 0.3, 0.
     .unwrap();
     assert_eq!((d.settings.width, d.settings.height, d.settings.spp), (320, 240, 4));
     assert_eq!(d.camera.vfov, 35.0);
-    assert_eq!(d.meshes[0].source, MeshSource::File(PathBuf::from("dir/torus.obj")));
-    assert_eq!(d.hair[0].source, HairSource::File(PathBuf::from("dir/hairy_torus.hair")));
-    match &d.hair[0].material {
+    assert_eq!(d.contents.meshes[0].source, MeshSource::File(PathBuf::from("dir/torus.obj")));
+    assert_eq!(d.contents.hair[0].source, HairSource::File(PathBuf::from("dir/hairy_torus.hair")));
+    match &d.contents.hair[0].material {
         Material::Tube(t) => assert_eq!(t.ambient, t.diffuse),
         m => panic!("{m:?}"),
     }
-    match d.lights[0] {
+    match d.contents.lights[0] {
         Light::Distant { direction, .. } => assert!((direction.length() - 1.0).abs() < 1e-6),
         ref l => panic!("{l:?}"),
     }
@@ -119,7 +119,7 @@ seed = 7
 #[test]
 fn reads_a_hair_system_with_follicles_and_ramps() {
     let d = parse(HAIR_SYSTEM).unwrap();
-    let h = &d.hair_systems[0];
+    let h = &d.contents.hair_systems[0];
     let GuideSource::Follicles { mesh, params } = &h.guides else { panic!("{:?}", h.guides) };
     assert_eq!((*mesh, params.placement, params.points_per_hair), (0, Placement::Grid { u: 12, v: 6 }, 8));
     assert_eq!((params.length, h.seed, h.system.hairs_per_clump), (1.5, 7, 20));
@@ -135,8 +135,8 @@ fn reads_a_hair_system_with_follicles_and_ramps() {
     let d = parse(&format!("{HAIR_SYSTEM}[[hair_system]]\nfile = \"g.hair\"\nfollicles = {{ mesh = 1 }}\n"));
     assert!(d.unwrap_err().to_string().contains("hair_system 2: give exactly one"));
     let d = parse("[[hair_system]]\nfile = \"g.hair\"\ncolors = \"guides\"\ntransform = { scale = 2.0 }\n").unwrap();
-    assert_eq!(d.hair_systems[0].guides, GuideSource::File(PathBuf::from("dir/g.hair")));
-    assert_eq!(d.hair_systems[0].colors, HairColors::Guides);
+    assert_eq!(d.contents.hair_systems[0].guides, GuideSource::File(PathBuf::from("dir/g.hair")));
+    assert_eq!(d.contents.hair_systems[0].colors, HairColors::Guides);
 }
 
 #[test]
@@ -185,11 +185,11 @@ fn bad_hair_system_values_name_the_entry_and_attribute() {
 fn lod_tables_take_defaults_and_reject_bad_values() {
     let minimal = &HAIR_SYSTEM[..HAIR_SYSTEM.find("hairs_per_clump").unwrap()];
     let d = parse(&format!("{minimal}lod = {{ levels = 4, start = 8 }}\n[render]\nlod = false\n")).unwrap();
-    assert_eq!(d.hair_systems[0].lod, Some(LodParams { levels: 4, start: 8.0, ..Default::default() }));
+    assert_eq!(d.contents.hair_systems[0].lod, Some(LodParams { levels: 4, start: 8.0, ..Default::default() }));
     assert!(!d.settings.lod);
     let d = parse(&format!("{minimal}lod = {{ spread = 4, smooth = true }}\n")).unwrap();
-    assert_eq!(d.hair_systems[0].lod, Some(LodParams { spread: 4.0, smooth: true, ..Default::default() }));
-    assert!(parse(minimal).unwrap().settings.lod && parse(minimal).unwrap().hair_systems[0].lod.is_none());
+    assert_eq!(d.contents.hair_systems[0].lod, Some(LodParams { spread: 4.0, smooth: true, ..Default::default() }));
+    assert!(parse(minimal).unwrap().settings.lod && parse(minimal).unwrap().contents.hair_systems[0].lod.is_none());
     for (bad, key) in [
         ("decimation = 1.0", "decimation"),
         ("levels = 0", "levels"),
@@ -209,7 +209,7 @@ fn lod_tables_take_defaults_and_reject_bad_values() {
 fn every_material_has_defaults() {
     let material = |kind: &str| {
         let d = parse(&format!("[[hair]]\nfile = \"h.hair\"\nmaterial = {{ type = \"{kind}\" }}\n"));
-        d.unwrap_or_else(|e| panic!("{kind}: {e}")).hair[0].material.clone()
+        d.unwrap_or_else(|e| panic!("{kind}: {e}")).contents.hair[0].material.clone()
     };
     let grey = Material::DEFAULT_COLOR;
     assert_eq!(material("tube"), Material::Tube(crate::shading::tube::Tube::default()));
@@ -228,7 +228,7 @@ fn every_material_has_defaults() {
     assert_eq!(*p.params(), HairParams::default());
     // A tube's ambient colour follows its diffuse colour unless given.
     let d = parse("[[hair]]\nfile = \"h.hair\"\nmaterial = { type = \"tube\", diffuse = [0.2, 0.1, 0.05] }\n");
-    let Material::Tube(t) = &d.unwrap().hair[0].material else { panic!("tube") };
+    let Material::Tube(t) = &d.unwrap().contents.hair[0].material else { panic!("tube") };
     assert_eq!((t.ambient, t.diffuse), (Vec3::new(0.2, 0.1, 0.05), Vec3::new(0.2, 0.1, 0.05)));
     assert_eq!((t.specular, t.specular_power), (Vec3::splat(0.3), 40.0));
 }
@@ -236,7 +236,7 @@ fn every_material_has_defaults() {
 #[test]
 fn physical_hair_material_takes_one_colour_source() {
     let hair = |m: &str| parse(&format!("[[hair]]\nfile = \"h.hair\"\nmaterial = {{ type = \"physical\", {m} }}\n"));
-    let params = |m: &str| match &hair(m).unwrap().hair[0].material {
+    let params = |m: &str| match &hair(m).unwrap().contents.hair[0].material {
         Material::Physical(p) => *p.params(),
         m => panic!("{m:?}"),
     };
@@ -279,7 +279,7 @@ fn fur_entries_take_a_preset_overrides_maps_and_guides() {
              dbw = 0.02\nlength_map = \"len.png\"\nguides = \"g.hair\"\nattractors = {{ model = \"global\", radius = 2.0 }}\n"
         ))
         .unwrap();
-    let f = &d.fur[0];
+    let f = &d.contents.fur[0];
     assert_eq!((f.mesh, f.seed, f.placement), (1, 9, FurPlacement::Uv));
     let mut expected = preset("Squirrel").unwrap();
     expected[Scalar::Length].value = 0.5;
@@ -291,7 +291,7 @@ fn fur_entries_take_a_preset_overrides_maps_and_guides() {
     assert_eq!((a.model, a.radius, a.power), (AttractorModel::Global, 2.0, 1.0));
     // Without a preset: Maya's node defaults.
     let d = parse(&format!("{MESH}[[fur]]\nmesh = 1\n")).unwrap();
-    assert_eq!(d.fur[0].description, FurDescription::default());
+    assert_eq!(d.contents.fur[0].description, FurDescription::default());
 }
 
 #[test]
@@ -345,12 +345,12 @@ fn camera_keys_interpolate_and_frame_patterns_substitute() {
     assert_eq!(d.camera.eye, Vec3::new(5.0, 0.0, 5.0));
     assert_eq!(d.camera.target, Vec3::new(0.0, 1.0, 0.0));
     assert_eq!(d.camera.vfov, 30.0);
-    assert_eq!(d.hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.0015.hair")));
-    assert_eq!(d.meshes[0].source, MeshSource::File(PathBuf::from("dir/ground_15.obj")));
+    assert_eq!(d.contents.hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.0015.hair")));
+    assert_eq!(d.contents.meshes[0].source, MeshSource::File(PathBuf::from("dir/ground_15.obj")));
     // Held before the first key and after the last.
     assert_eq!((at(0).camera.eye, at(0).camera.vfov), (Vec3::new(0.0, 0.0, 10.0), 40.0));
     assert_eq!((at(99).camera.eye, at(99).camera.vfov), (Vec3::new(10.0, 0.0, 0.0), 20.0));
-    assert_eq!(at(12345).hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.12345.hair")));
+    assert_eq!(at(12345).contents.hair[0].source, HairSource::File(PathBuf::from("dir/sim/hair.12345.hair")));
     let e = scene(KEYS, path).unwrap_err().to_string();
     assert!(e.contains("dir/anim.toml") && e.contains("--frame"), "{e}");
     // A still scene ignores the frame.

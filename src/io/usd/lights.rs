@@ -101,7 +101,7 @@ pub fn read_light(
             // +Y to +Z: 90° about +X.
             let pole = if pole_z { Mat3::from_rotation_x(0.5 * std::f32::consts::PI) } else { Mat3::IDENTITY };
             match dome_texture(prim, time, emission, notes)? {
-                Some(map) => Light::EnvironmentMap(map.rotated(crate::io::imported::orthogonal_part(transform) * pole)),
+                Some(map) => Light::EnvironmentMap(map.rotated(crate::math::orthogonal_part(transform) * pole)),
                 None => Light::Environment { radiance: emission },
             }
         }

@@ -64,14 +64,14 @@ fn read_text(text: &str) -> Result<Imported, LoadError> {
 }
 
 fn strands(s: &Imported, i: usize) -> &StrandSet {
-    let HairSource::Inline(set) = &s.hair[i].source else { panic!() };
+    let HairSource::Inline(set) = &s.contents.hair[i].source else { panic!() };
     set
 }
 
 #[test]
 fn basis_curves_and_meshes_import_with_widths_and_colours() {
     let s = read_text(SCENE).unwrap();
-    assert_eq!((s.hair.len(), s.meshes.len(), s.lights.len()), (2, 1, 1));
+    assert_eq!((s.contents.hair.len(), s.contents.meshes.len(), s.contents.lights.len()), (2, 1, 1));
     // Pinned cubic B-spline: 4 points + 2 phantoms = 3 segments, through both end points.
     let c = strands(&s, 0);
     assert_eq!(c.points.len(), 3 * PIECES_PER_SEGMENT + 1);
@@ -80,11 +80,11 @@ fn basis_curves_and_meshes_import_with_widths_and_colours() {
     assert!(first.length() < 1e-5 && (last - Vec3::new(0.0, 3.0, 0.0)).length() < 1e-5, "{first} {last}");
     // Widths follow the basis with the same phantoms: 0.2 at the root, 0 at the tip.
     assert!((c.points[0][3] - 0.1).abs() < 1e-6 && c.points[c.points.len() - 1][3].abs() < 1e-6);
-    let Material::Tube(t) = &s.hair[0].material else { panic!() };
+    let Material::Tube(t) = &s.contents.hair[0].material else { panic!() };
     assert_eq!(t.diffuse, Vec3::new(0.6, 0.4, 0.2));
     assert!(c.colors.is_none());
     // The prim's parent moves it up by one.
-    assert_eq!(s.hair[0].transform.transform_point3(Vec3::ZERO), Vec3::Y);
+    assert_eq!(s.contents.hair[0].transform.transform_point3(Vec3::ZERO), Vec3::Y);
     // Linear curves: their points, uniform widths, vertex colours.
     let l = strands(&s, 1);
     assert_eq!(l.offsets, vec![0, 2, 5]);
@@ -92,18 +92,18 @@ fn basis_curves_and_meshes_import_with_widths_and_colours() {
     assert_eq!(l.points[4], [2.0, 2.0, 0.0, 0.015]);
     assert_eq!(l.colors.as_ref().unwrap()[2], [0.0, 0.0, 1.0]);
     // The mesh: a quad as two triangles with face-varying UVs and its colour.
-    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert_eq!((m.positions.len(), m.indices.len()), (4, 2));
     assert_eq!(m.uvs.as_ref().unwrap()[2], [1.0, 1.0]);
-    assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.3) });
-    assert_eq!(s.lights[0], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.3) });
+    assert_eq!(s.contents.lights[0], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) });
 }
 
 #[test]
 fn z_up_stages_are_turned_y_up() {
     let s = read_text(&SCENE.replace("upAxis = \"Y\"", "upAxis = \"Z\"")).unwrap();
     // The world's translate (0, 1, 0) in Z-up is (0, 0, −1) in Y-up.
-    let p = s.hair[0].transform.transform_point3(Vec3::ZERO);
+    let p = s.contents.hair[0].transform.transform_point3(Vec3::ZERO);
     assert!((p - Vec3::new(0.0, 0.0, -1.0)).length() < 1e-6, "{p}");
 }
 
@@ -131,13 +131,13 @@ fn export_then_import_keeps_points_widths_and_colours() {
     assert_eq!(back.offsets, set.offsets);
     assert_eq!(back.points, set.points);
     assert_eq!(back.colors, set.colors);
-    let MeshSource::Inline(m) = &s.meshes[0].source else { panic!() };
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert_eq!(m.indices.len(), mesh.indices.len());
     // Every original triangle comes back with the same corners.
     for (a, b) in m.indices.iter().zip(&mesh.indices) {
         assert_eq!(a.map(|i| m.positions[i as usize]), b.map(|i| mesh.positions[i as usize]));
     }
-    assert_eq!(s.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.3, 0.4) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.3, 0.4) });
 }
 
 #[test]
@@ -152,7 +152,7 @@ fn malformed_files_are_errors_with_lines_and_no_panic() {
         skipped[0].contains("(2; first: /World/Cubic: ") && skipped[0].contains("curveVertexCounts"),
         "{skipped:?}"
     );
-    assert_eq!((s.hair.len(), s.meshes.len()), (1, 0));
+    assert_eq!((s.contents.hair.len(), s.contents.meshes.len()), (1, 0));
 
     // Deep nesting would overflow the parser's stack: refused up front.
     let deep = format!("#usda 1.0\n{}{}", "def \"A\" {\n".repeat(100_000), "}\n".repeat(100_000));
@@ -191,7 +191,7 @@ fn braces_in_property_names_and_paths_are_errors_not_a_hang() {
             "[\"!resetXformStack!\", \"xformOp:translate\", \"!invert!xformOp:translate\"]",
         );
     let s = read_text(&fine).unwrap();
-    assert_eq!(s.hair[0].transform.transform_point3(Vec3::ZERO), Vec3::ZERO);
+    assert_eq!(s.contents.hair[0].transform.transform_point3(Vec3::ZERO), Vec3::ZERO);
 }
 
 proptest! {
@@ -379,27 +379,29 @@ def DistantLight "Key" { float inputs:angle = 0 float intensity = 2 }
 def DomeLight "Sky" { float inputs:intensity = 0.5 asset inputs:texture:file = @sky.exr@ }
 "#;
     let s = read_body(body);
-    assert_eq!(s.lights.len(), 6);
-    let Light::Quad { corner, edge_u, edge_v, radiance } = s.lights[0] else { panic!("{:?}", s.lights[0]) };
+    assert_eq!(s.contents.lights.len(), 6);
+    let Light::Quad { corner, edge_u, edge_v, radiance } = s.contents.lights[0] else {
+        panic!("{:?}", s.contents.lights[0])
+    };
     // Normalized: the emission over the area (2); turned to face down from y = 5.
     assert!((radiance - Vec3::splat(1.5)).length() < 1e-6);
     assert!((edge_u.cross(edge_v).normalize() - Vec3::NEG_Y).length() < 1e-5, "{}", edge_u.cross(edge_v));
     assert!((corner + 0.5 * (edge_u + edge_v) - Vec3::new(0.0, 5.0, 0.0)).length() < 1e-5);
-    let Light::Quad { edge_u, edge_v, radiance, .. } = s.lights[1] else { panic!() };
+    let Light::Quad { edge_u, edge_v, radiance, .. } = s.contents.lights[1] else { panic!() };
     // A disk of radius 0.5 as a square of the same area, 4 × 2^1 bright.
     assert!((edge_u.cross(edge_v).length() - std::f32::consts::PI * 0.25).abs() < 1e-5);
     assert_eq!(radiance, Vec3::splat(8.0));
-    let Light::Sphere { radius, radiance, .. } = s.lights[2] else { panic!() };
+    let Light::Sphere { radius, radiance, .. } = s.contents.lights[2] else { panic!() };
     assert_eq!(radius, 0.5);
     assert!((radiance * std::f32::consts::PI - Vec3::new(10.0, 5.0, 2.5)).length() < 1e-4, "{radiance}");
     // A 2° sun: its irradiance (radiance × solid angle) is the intensity.
-    let Light::Sun { radiance, cos_max, .. } = s.lights[3] else { panic!() };
+    let Light::Sun { radiance, cos_max, .. } = s.contents.lights[3] else { panic!() };
     assert!((cos_max - 1f32.to_radians().cos()).abs() < 1e-7);
     let irradiance = radiance * std::f32::consts::TAU * (1.0 - cos_max);
     assert!((irradiance - Vec3::splat(5.0)).length() < 1e-3, "{irradiance}");
     // A delta light, with an attribute spelled as before `inputs:`.
-    assert_eq!(s.lights[4], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) });
-    assert_eq!(s.lights[5], Light::Environment { radiance: Vec3::splat(0.5) });
+    assert_eq!(s.contents.lights[4], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) });
+    assert_eq!(s.contents.lights[5], Light::Environment { radiance: Vec3::splat(0.5) });
     // Its texture is missing: lit by its colour, said so with the file's name.
     assert!(s.warnings.iter().any(|w| w.contains("dome texture `sky.exr` is missing")), "{:?}", s.warnings);
 }
@@ -460,9 +462,9 @@ def Cone "K" {}
 def Capsule "P" { double radius = 1 double height = 2 uniform token axis = "X" }
 "#;
     let s = read_body(body);
-    assert_eq!(s.meshes.len(), 5);
+    assert_eq!(s.contents.meshes.len(), 5);
     let bounds = |i: usize| {
-        let MeshSource::Inline(m) = &s.meshes[i].source else { panic!() };
+        let MeshSource::Inline(m) = &s.contents.meshes[i].source else { panic!() };
         let lo = m.positions.iter().fold(Vec3::splat(f32::MAX), |a, p| a.min(*p));
         let hi = m.positions.iter().fold(Vec3::splat(f32::MIN), |a, p| a.max(*p));
         (lo, hi)
@@ -496,7 +498,7 @@ def Cube "Plain" { color3f[] primvars:displayColor = [(0, 0, 1)] }
 def Cube "Grey" {}
 "#;
     let s = read_body(body);
-    let colors: Vec<_> = s.meshes.iter().map(|m| m.material.clone()).collect();
+    let colors: Vec<_> = s.contents.meshes.iter().map(|m| m.material.clone()).collect();
     assert_eq!(
         colors,
         vec![
@@ -513,7 +515,7 @@ fn stage_units_and_up_axis() {
         def Sphere "S" { double radius = 1 } }"#;
     // Geometry stays in the stage's unit, and Z-up turns Y-up: +Z becomes +Y.
     let s = read_with("metersPerUnit = 0.01\nupAxis = \"Z\"", body, &ImportOptions::default()).unwrap();
-    let p = s.meshes[0].transform.transform_point3(Vec3::ZERO);
+    let p = s.contents.meshes[0].transform.transform_point3(Vec3::ZERO);
     assert!((p - Vec3::new(0.0, 2.0, 0.0)).length() < 1e-6, "{p}");
 }
 
@@ -552,7 +554,7 @@ def Xform "Ref" (references = @gone.usda@) {}
         s.warnings
     );
     assert_eq!(has("missing_layer"), 1, "{:?}", s.warnings);
-    assert_eq!(s.meshes.len(), 1);
+    assert_eq!(s.contents.meshes.len(), 1);
 }
 
 #[test]
@@ -567,7 +569,7 @@ fn arcs_back_to_their_own_prim_are_an_error_naming_the_chain() {
     }
     // Arcs between distinct prims are fine.
     let s = read_body("class \"Base\" { double radius = 3 }\ndef Sphere \"S\" (inherits = </Base>) {}");
-    assert_eq!(s.meshes.len(), 1);
+    assert_eq!(s.contents.meshes.len(), 1);
 }
 
 /// `text` written by the crate as a binary crate layer (`usdc`) or package (`usdz`).
@@ -589,7 +591,7 @@ fn binary_crate_files_and_packages_read_like_text() {
         let bytes = std::fs::read(&path).unwrap();
         assert!(bytes.starts_with(if ext == "usdc" { b"PXR-USDC" } else { b"PK\x03\x04" }), "{ext}");
         let s = read_usd(&path, &ImportOptions::default()).unwrap();
-        assert_eq!((s.hair.len(), s.meshes.len(), s.lights.len()), (2, 1, 1), "{ext}");
+        assert_eq!((s.contents.hair.len(), s.contents.meshes.len(), s.contents.lights.len()), (2, 1, 1), "{ext}");
         assert_eq!(strands(&s, 0).points, strands(&text, 0).points, "{ext}");
         assert_eq!(strands(&s, 1).colors, strands(&text, 1).colors, "{ext}");
     }
@@ -677,7 +679,7 @@ fn arcs_through_other_files_back_to_their_prim_are_an_error_naming_the_chain() {
     );
     write("parts.usda", "def Sphere \"Ball\" (references = @fine.usda@</Y>) {}\n");
     let s = read(&a).unwrap();
-    assert_eq!(s.meshes.len(), 2, "{:?}", s.warnings);
+    assert_eq!(s.contents.meshes.len(), 2, "{:?}", s.warnings);
 }
 
 #[test]

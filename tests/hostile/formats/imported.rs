@@ -8,12 +8,12 @@ use tress::scene::{HairSource, MeshSource};
 /// Inline meshes and strands usable, numbers finite, and a description that either
 /// validates or is refused by validation (never panics) with its memory estimate running.
 pub fn assert_usable(scene: Imported) {
-    for m in &scene.meshes {
+    for m in &scene.contents.meshes {
         if let MeshSource::Inline(mesh) = &m.source {
             super::assert_usable_mesh(mesh);
         }
     }
-    for h in &scene.hair {
+    for h in &scene.contents.hair {
         if let HairSource::Inline(s) = &h.source {
             super::assert_usable_strands(s);
         }
