@@ -52,8 +52,9 @@ fn render(desc: &Description, spp: u32, seed: u32, lod: Lod) -> (Film, f64) {
     (d.settings.spp, d.settings.seed, d.settings.lod) = (spp, seed, lod != Lod::Off);
     if lod == Lod::Smooth {
         let sets = d.contents.hair.iter_mut().map(|h| &mut h.lod);
-        let sets =
-            sets.chain(d.contents.hair_systems.iter_mut().map(|h| &mut h.lod)).chain(d.contents.fur.iter_mut().map(|f| &mut f.lod));
+        let sets = sets
+            .chain(d.contents.hair_systems.iter_mut().map(|h| &mut h.lod))
+            .chain(d.contents.fur.iter_mut().map(|f| &mut f.lod));
         sets.flatten().for_each(|p| p.smooth = true);
     }
     let (world, _) = prepare(&d).expect("scene");

@@ -178,7 +178,7 @@ pub fn read_scene_with(
     } else {
         scene_file::read(path, frame)?
     };
-    let c = &desc;
+    let c = &desc.contents;
     if c.meshes.is_empty() && c.hair.is_empty() && c.hair_systems.is_empty() && c.fur.is_empty() {
         warnings.push("the scene has nothing to render (no meshes, hair, hair systems or fur)".into());
     }

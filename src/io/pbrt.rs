@@ -920,7 +920,7 @@ impl Parser {
                     "cylinder" => surfaces::cylinder(p)?,
                     _ => surfaces::bilinear_mesh(p)?,
                 };
-                self.out.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
             }
             "sphere" => {
                 let r = p.float("radius", 1.0)?;

@@ -137,7 +137,8 @@ mod tests {
     fn areas(shape: &str) -> Vec<f32> {
         let s = parse_pbrt(&format!("WorldBegin\n{shape}\n"), Path::new("t.pbrt")).unwrap();
         assert!(s.warnings.iter().all(|w| !w.contains("not supported") && !w.contains("not used")), "{:?}", s.warnings);
-        s.meshes
+        s.contents
+            .meshes
             .iter()
             .map(|e| match &e.source {
                 MeshSource::Inline(m) => (0..m.indices.len() as u32).map(|i| m.area(i)).sum(),

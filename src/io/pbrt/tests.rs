@@ -378,9 +378,9 @@ fn image_infinite_lights_become_environment_maps_scaled_like_every_light() {
 fn pbrt_v3_light_scales_are_spectra() {
     // pbrt-v3's bunny-fur scene: `"color scale" [12 12 12]` on an infinite light.
     let s = read("WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5] \"color scale\" [12 6 3]\n").unwrap();
-    assert_eq!(s.lights[0], Light::Environment { radiance: Vec3::new(6.0, 3.0, 1.5) });
+    assert_eq!(s.contents.lights[0], Light::Environment { radiance: Vec3::new(6.0, 3.0, 1.5) });
     let s = read("WorldBegin\nLightSource \"point\" \"float scale\" 2\n").unwrap();
-    let Light::Point { intensity, .. } = s.lights[0] else { panic!() };
+    let Light::Point { intensity, .. } = s.contents.lights[0] else { panic!() };
     assert_eq!(intensity, Vec3::splat(2.0));
     let e = read("WorldBegin\nLightSource \"point\" \"rgb scale\" [1 2]\n").unwrap_err().to_string();
     assert!(e.contains("line 2") && e.contains("scale"), "{e}");

@@ -754,7 +754,7 @@ fn layers_of_another_unit_are_read_as_authored_and_said() {
         .unwrap();
         read_usd(&path, &ImportOptions::default()).unwrap()
     };
-    let height = |s: &Imported| match &s.hair[0].source {
+    let height = |s: &Imported| match &s.contents.hair[0].source {
         HairSource::Inline(set) => set.points.iter().map(|p| p[1]).fold(0.0, f32::max),
         HairSource::File(_) => panic!("inline"),
     };
