@@ -10,7 +10,8 @@
 //!   axis). A mesh built by a `polySphere`, `polyPlane` or `polyTorus` node is rebuilt
 //!   from that node's attributes. Colour: the `lambert`/`blinn`/`phong` of its shading
 //!   group (`color × diffuse`), else Maya's default grey. Hidden and intermediate shapes
-//!   are skipped.
+//!   are skipped; a deformed shape (a mesh or curve with no geometry of its own) is drawn
+//!   in its rest pose, from the shape its deformers start from (the intermediate `…Orig`).
 //! - **nurbsCurve**: the `.cc` block (degree, spans, form, rational, knots, CVs), sampled
 //!   by de Boor's algorithm at its knots and [`SAMPLES_PER_SPAN`] points per span. A
 //!   follicle's start curve is a guide of its hair system; other open curves are drawn as
@@ -58,6 +59,12 @@ use std::collections::{BTreeMap, HashMap};
 use std::f32::consts::PI;
 use std::path::Path;
 
+/// The primitive nodes a mesh's geometry is rebuilt from (`Reader::procedural`).
+const PROCEDURAL_MESHES: &[&str] = &["polySphere", "polyPlane", "polyTorus"];
+/// The attributes a deformed shape's geometry flows in through, from the shape it starts
+/// from to the deformed one: a shape's `inMesh` and `create`, a deformer's
+/// `input[i].inputGeometry`, `groupParts.inputGeometry`.
+const GEOMETRY_INPUTS: &[&str] = &["i", "inMesh", "cr", "create", "ig", "inputGeometry"];
 /// Linear pieces per span when sampling a curve of degree 2 or more.
 pub const SAMPLES_PER_SPAN: usize = 8;
 /// Most control points one curve may have.
@@ -154,6 +161,9 @@ struct Reader<'g> {
     wanted_camera: Option<String>,
     /// Follicles whose UV no face covers, placed at the nearest UV: how many, the first.
     off_uv: Option<(usize, String)>,
+    /// Shapes drawn in their rest pose (their deformers not evaluated), and the node types
+    /// their deformation passes through.
+    rest_posed: (std::collections::BTreeSet<usize>, std::collections::BTreeSet<String>),
 }
 
 impl<'g> Reader<'g> {
@@ -166,6 +176,7 @@ impl<'g> Reader<'g> {
             meshes: HashMap::new(),
             wanted_camera: None,
             off_uv: None,
+            rest_posed: Default::default(),
         }
     }
 
@@ -206,6 +217,15 @@ impl<'g> Reader<'g> {
             }
         }
         self.free_curves(&used_curves)?;
+        if !self.rest_posed.0.is_empty() {
+            let kinds: Vec<&str> = self.rest_posed.1.iter().map(String::as_str).collect();
+            self.out.warnings.push(format!(
+                "{} deformed shape(s) drawn in their rest pose, as the shape their deformers start from \
+                 (tress does not evaluate {})",
+                self.rest_posed.0.len(),
+                kinds.join(", ")
+            ));
+        }
         let mut furs = Vec::new();
         for n in self.of_kind("FurDescription").collect::<Vec<_>>() {
             let mut f = fur_nodes::read_fur(g, n)?;
@@ -385,6 +405,33 @@ impl<'g> Reader<'g> {
         self.g.inputs_of(n).filter(|c| attrs.contains(&plug_base(&c.dst_attr))).map(|c| c.src).collect()
     }
 
+    /// The shape a deformed shape (one with no geometry of its own, built by a chain of
+    /// `skinCluster`, `tweak`, `groupParts`, ... nodes) is drawn as: the first node up its
+    /// geometry inputs for which `stores` holds (Maya's intermediate `…Orig` shape: the rest
+    /// pose), counted and its chain's node types noted for one warning. `None` when the
+    /// chain reaches none.
+    fn rest_shape(&mut self, n: usize, stores: impl Fn(&Self, usize) -> bool) -> Option<usize> {
+        let mut seen = std::collections::HashSet::from([n]);
+        let mut queue = std::collections::VecDeque::from([n]);
+        let mut passed = std::collections::BTreeSet::new();
+        while let Some(c) = queue.pop_front() {
+            if c != n {
+                if stores(self, c) {
+                    self.rest_posed.0.insert(n);
+                    self.rest_posed.1.extend(passed);
+                    return Some(c);
+                }
+                passed.insert(self.kind(c).to_string());
+            }
+            for conn in self.g.inputs_of(c) {
+                if GEOMETRY_INPUTS.contains(&plug_leaf(&conn.dst_attr)) && seen.insert(conn.src) {
+                    queue.push_back(conn.src);
+                }
+            }
+        }
+        None
+    }
+
     // ----- meshes -----
 
     fn mesh(&mut self, n: usize) -> Res<()> {
@@ -394,18 +441,34 @@ impl<'g> Reader<'g> {
             return Ok(());
         }
         let history = self.inputs(n, &["i", "inMesh"]);
+        let stores = |r: &Self, m: usize| {
+            r.kind(m) == "mesh" && r.g.nodes[m].attrs.iter().any(|a| a.name.starts_with("vt"))
+                || PROCEDURAL_MESHES.contains(&r.kind(m))
+        };
         let mesh = match history.first() {
-            Some(&src) if !node.attrs.iter().any(|a| a.name.starts_with("vt")) => match self.procedural(src)? {
-                Some(m) => m,
-                None => {
-                    self.out.warnings.push(format!(
-                        "mesh {} is built by a `{}` node, which tress cannot evaluate: skipped",
-                        node.name,
-                        self.kind(src)
-                    ));
-                    return Ok(());
+            Some(&src) if !stores(self, n) => {
+                // Built by a primitive node, or deformed from a shape upstream.
+                let from = match PROCEDURAL_MESHES.contains(&self.kind(src)) {
+                    true => Some(src),
+                    false => self.rest_shape(n, stores),
+                };
+                let built = match from {
+                    Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?,
+                    Some(f) => self.procedural(f)?,
+                    None => None,
+                };
+                match built {
+                    Some(m) => m,
+                    None => {
+                        self.out.warnings.push(format!(
+                            "mesh {} is built by a `{}` node, which tress cannot evaluate: skipped",
+                            node.name,
+                            self.kind(src)
+                        ));
+                        return Ok(());
+                    }
                 }
-            },
+            }
             _ => match stored_mesh(g, n)? {
                 Some(m) => m,
                 None => return Ok(()),
@@ -601,12 +664,25 @@ impl<'g> Reader<'g> {
 
     // ----- curves -----
 
-    /// The world-space samples of a curve node with a `.cc` block; `None` for a hidden curve
-    /// or one Maya builds from history.
+    /// The `.cc` block a curve is drawn from: its own, or, for a deformed curve, that of
+    /// the curve its deformers start from ([`Self::rest_shape`]); `None` for a curve Maya
+    /// builds from other history.
+    fn curve_block(&mut self, n: usize) -> Option<&'g parse::Attr> {
+        let g = self.g;
+        let block = |m: usize| g.nodes[m].attrs.iter().rev().find(|a| a.name == "cc" || a.name == "cached");
+        if let Some(a) = block(n) {
+            return Some(a);
+        }
+        let rest = self.rest_shape(n, |r, m| r.kind(m) == "nurbsCurve" && block(m).is_some())?;
+        block(rest)
+    }
+
+    /// The world-space samples of a curve node (placed by its own transforms, its `.cc`
+    /// block by [`Self::curve_block`]); `None` for one Maya builds from other history.
     fn curve_points(&mut self, n: usize) -> Res<Option<Vec<Vec3>>> {
         let g = self.g;
         let node = &g.nodes[n];
-        let Some(a) = node.attrs.iter().rev().find(|a| a.name == "cc" || a.name == "cached") else { return Ok(None) };
+        let Some(a) = self.curve_block(n) else { return Ok(None) };
         let Value::Curve(words) = &a.value else {
             return Err((a.line, format!("curve {}: `.cc` must have -type \"nurbsCurve\"", node.name)));
         };
@@ -627,7 +703,7 @@ impl<'g> Reader<'g> {
             if used[n] || self.hidden(n)? {
                 continue;
             }
-            let form = match self.g.nodes[n].attrs.iter().rev().find(|a| a.name == "cc").map(|a| &a.value) {
+            let form = match self.curve_block(n).map(|a| &a.value) {
                 Some(Value::Curve(w)) => w.get(2).copied().unwrap_or(0.0),
                 _ => continue,
             };
@@ -985,6 +1061,12 @@ fn vec3(g: &Graph, n: usize, whole: &[&str], parts: &[[&str; 2]; 3], default: f6
 /// The attribute name of a plug without its index: `ih[0]` → `ih`.
 fn plug_base(plug: &str) -> &str {
     plug.split(['[', '.']).next().unwrap_or(plug)
+}
+
+/// The last attribute of a plug like `ip[0].ig` (`ig`), without its index.
+fn plug_leaf(plug: &str) -> &str {
+    let last = plug.rsplit('.').next().unwrap_or(plug);
+    last.split('[').next().unwrap_or(last)
 }
 
 /// The index of a plug like `ih[3]`.

@@ -437,3 +437,73 @@ fn poly_spheres_have_mayas_uv_layout_so_every_follicle_finds_its_place() {
         assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "triangle {t}");
     }
 }
+
+#[test]
+fn deformed_shapes_are_drawn_once_in_their_rest_pose_and_intermediate_shapes_never() {
+    // A skinned curve and mesh as Maya writes them: the deformed shapes store no geometry
+    // (a skinCluster computes it from the intermediate `…Orig` shape through groupParts),
+    // and a leftover intermediate curve feeds nothing.
+    let text = r#"//Maya ASCII 2020 scene
+createNode transform -n "crv";
+	setAttr ".t" -type "double3" 0 5 0 ;
+createNode nurbsCurve -n "crvShape" -p "crv";
+	setAttr -k off ".v";
+createNode nurbsCurve -n "crvShapeOrig" -p "crv";
+	setAttr -k off ".v";
+	setAttr ".io" yes;
+	setAttr ".cc" -type "nurbsCurve"
+		1 1 0 no 3
+		2 0 1
+		2
+		0 0 0
+		0 2 0
+		;
+createNode nurbsCurve -n "crvShape1Orig" -p "crv";
+	setAttr ".io" yes;
+	setAttr ".cc" -type "nurbsCurve"
+		1 1 0 no 3
+		2 0 1
+		2
+		1 0 0
+		1 2 0
+		;
+createNode transform -n "box";
+createNode mesh -n "boxShape" -p "box";
+createNode mesh -n "boxShapeOrig" -p "box";
+	setAttr ".io" yes;
+	setAttr -s 3 ".vt[0:2]"  0 0 0 1 0 0 0 1 0;
+	setAttr -s 3 ".ed[0:2]"  0 1 0 1 2 0 2 0 0;
+	setAttr -s 1 ".fc[0]" -type "polyFaces"
+		f 3 0 1 2 ;
+createNode groupParts -n "groupParts1";
+createNode skinCluster -n "skinCluster1";
+createNode tweak -n "tweak1";
+createNode skinCluster -n "skinCluster2";
+connectAttr "crvShapeOrig.ws" "groupParts1.ig";
+connectAttr "groupParts1.og" "tweak1.ip[0].ig";
+connectAttr "tweak1.og[0]" "skinCluster1.ip[0].ig";
+connectAttr "skinCluster1.og[0]" "crvShape.cr";
+connectAttr "boxShapeOrig.w" "skinCluster2.ip[0].ig";
+connectAttr "skinCluster2.og[0]" "boxShape.i";
+"#;
+    let s = read(text).unwrap();
+    assert_eq!(s.contents.hair.len(), 1);
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
+    assert_eq!(set.strand_count(), 1, "only the deformed curve, once");
+    let ends = [set.points[0], *set.points.last().unwrap()].map(|p| Vec3::from_slice(&p[..3]));
+    assert!(close(ends[0], Vec3::new(0.0, 5.0, 0.0)) && close(ends[1], Vec3::new(0.0, 7.0, 0.0)), "{ends:?}");
+    assert_eq!(s.contents.meshes.len(), 1, "only the deformed mesh, once");
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!("inline") };
+    assert_eq!(m.positions.len(), 3);
+    let w: Vec<_> = s.warnings.iter().filter(|w| w.contains("rest pose")).collect();
+    assert!(
+        w.len() == 1 && w[0].starts_with("2 deformed shape(s)") && w[0].contains("skinCluster, tweak"),
+        "{:?}",
+        s.warnings
+    );
+    // Without the deformation chain the deformed shapes have nothing to draw, and the
+    // intermediate shapes still are not drawn.
+    let cut: String = text.lines().filter(|l| !l.starts_with("connectAttr")).collect::<Vec<_>>().join("\n");
+    let s = read(&cut).unwrap();
+    assert!(s.contents.hair.is_empty() && s.contents.meshes.is_empty(), "{:?}", s.contents.hair.len());
+}
