@@ -507,3 +507,29 @@ connectAttr "skinCluster2.og[0]" "boxShape.i";
     let s = read(&cut).unwrap();
     assert!(s.contents.hair.is_empty() && s.contents.meshes.is_empty(), "{:?}", s.contents.hair.len());
 }
+
+#[test]
+fn arnolds_sky_dome_is_a_sky_of_its_colour_intensity_and_exposure() {
+    let dome = |attrs: &str| {
+        read(&format!(
+            "//Maya ASCII 2020 scene\nrequires \"mtoa\" \"4.0.0\";\ncreateNode transform -n \"aiSkyDomeLight1\";\n\
+             createNode aiSkyDomeLight -n \"aiSkyDomeLightShape1\" -p \"aiSkyDomeLight1\";\n\
+             \tsetAttr -k off \".v\";\n{attrs}createNode file -n \"file1\";\n"
+        ))
+        .unwrap()
+    };
+    // Colour (`sc`) 0.5 0.25 1 × intensity 2 × 2^1.
+    let s = dome(
+        "\tsetAttr \".sc\" -type \"float3\" 0.5 0.25 1 ;\n\tsetAttr \".intensity\" 2;\n\tsetAttr \".ai_exposure\" 1;\n",
+    );
+    assert_eq!(s.contents.lights, vec![Light::Environment { radiance: Vec3::new(2.0, 1.0, 4.0) }]);
+    assert!(s.warnings.iter().all(|w| !w.contains("aiSkyDomeLight (")), "a node tress reads: {:?}", s.warnings);
+    // Node defaults: white at intensity 1.
+    assert_eq!(dome("").contents.lights, vec![Light::Environment { radiance: Vec3::ONE }]);
+    // A texture on its colour is said, and the constant colour lights.
+    let s = dome("connectAttr \"file1.oc\" \"aiSkyDomeLightShape1.sc\";\n");
+    assert_eq!(s.contents.lights.len(), 1);
+    assert!(s.warnings.iter().any(|w| w.contains("aiSkyDomeLightShape1") && w.contains("texture")), "{:?}", s.warnings);
+    // A hidden dome lights nothing.
+    assert!(dome("\tsetAttr \".v\" no;\n").contents.lights.is_empty());
+}
