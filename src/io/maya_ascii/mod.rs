@@ -35,8 +35,13 @@
 //!   (× 2^`aiExposure` when Arnold's exposure is set). A Maya intensity `I` lights a white
 //!   Lambert surface facing it to `I` (Maya's shading has no 1/π), so tress's irradiance is
 //!   `π I`. Point and spot lights fall off with their decay rate (`.de`): none (Maya's
-//!   default: the same light at every distance), linear, quadratic or cubic. Arnold's
-//!   `aiSkyDomeLight` is a sky of radiance colour (`.sc`) × intensity × 2^exposure.
+//!   default: the same light at every distance), linear, quadratic or cubic. When Arnold
+//!   renders the file (`defaultRenderGlobals.currentRenderer`), the lights are Arnold's as
+//!   MtoA translates them: irradiance `I` (Arnold's diffuse has tress's 1/π), point and spot
+//!   lights decaying by `aiDecayType` (quadratic, its default, or none) whatever `.de` says,
+//!   area lights normalized by their area (`aiNormalize`, on by default). Arnold's own
+//!   `aiAreaLight` (a quad) always lights that way, and `aiSkyDomeLight` is a sky of
+//!   radiance colour (`.sc`) × intensity × 2^exposure.
 //!
 //! Every other node type is skipped, all of them together in one warning.
 
@@ -101,7 +106,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 43] = [
+const KNOWN: [&str; 44] = [
     "transform",
     "mesh",
     "nurbsCurve",
@@ -114,6 +119,7 @@ const KNOWN: [&str; 43] = [
     "ambientLight",
     "areaLight",
     "aiSkyDomeLight",
+    "aiAreaLight",
     "FurDescription",
     "FurFeedback",
     "FurGlobals",
@@ -878,13 +884,28 @@ impl<'g> Reader<'g> {
         Ok(())
     }
 
+    /// Whether Arnold renders the file (`defaultRenderGlobals.currentRenderer` is
+    /// `arnold`): Maya's own lights then light as MtoA hands them to Arnold.
+    fn arnold_renders(&self) -> bool {
+        let g = self.g;
+        let renderer = g.find("defaultRenderGlobals").and_then(|n| attr(g, n, &["ren", "currentRenderer"]));
+        matches!(renderer.map(|a| &a.value), Some(Value::Strings(s)) if s.first().is_some_and(|r| r == "arnold"))
+    }
+
     fn lights(&mut self) -> Res<()> {
         let g = self.g;
+        let arnold_renders = self.arnold_renders();
         for n in 0..g.nodes.len() {
             let kind = g.nodes[n].kind.as_str();
             if !matches!(
                 kind,
-                "directionalLight" | "pointLight" | "spotLight" | "ambientLight" | "areaLight" | "aiSkyDomeLight"
+                "directionalLight"
+                    | "pointLight"
+                    | "spotLight"
+                    | "ambientLight"
+                    | "areaLight"
+                    | "aiSkyDomeLight"
+                    | "aiAreaLight"
             ) {
                 continue;
             }
@@ -892,9 +913,9 @@ impl<'g> Reader<'g> {
                 continue;
             }
             let node = &g.nodes[n];
-            // Arnold's sky dome calls its colour `sc`.
+            // Arnold's lights call their colour `sc`.
             let color = match kind {
-                "aiSkyDomeLight" => {
+                "aiSkyDomeLight" | "aiAreaLight" => {
                     vec3(g, n, &["sc", "color"], &[["scr", "colorR"], ["scg", "colorG"], ["scb", "colorB"]], 1.0)?
                 }
                 _ => vec3(g, n, &["cl", "color"], &[["cr", "colorR"], ["cg", "colorG"], ["cb", "colorB"]], 1.0)?,
@@ -909,16 +930,19 @@ impl<'g> Reader<'g> {
                     format!("light {}: colour × intensity must be finite and not negative", node.name),
                 ));
             }
+            // Arnold lights a diffuse surface to albedo × irradiance / π, as tress does; Maya's
+            // own renderer to albedo × intensity, so its intensity is π times tress's.
+            let arnold = arnold_renders || kind.starts_with("ai");
+            let shading = if arnold { 1.0 } else { PI };
             let m = self.world(n)?;
             finite_affine(g, n, &m)?;
             let position = m.transform_point3(DVec3::ZERO).as_vec3();
             // Maya lights shine along their local −Z.
             let along = m.transform_vector3(DVec3::NEG_Z).as_vec3().normalize_or(Vec3::NEG_Y);
             let light = match kind {
-                "directionalLight" => Light::Distant { direction: -along, irradiance: power * PI },
+                "directionalLight" => Light::Distant { direction: -along, irradiance: power * shading },
                 "ambientLight" => Light::Environment { radiance: power },
-                // Arnold's sky dome: a sky of that radiance (Arnold's diffuse has the 1/π
-                // tress's has, so no π here). A texture on its colour is not read.
+                // Arnold's sky dome: a sky of that radiance. A texture on its colour is not read.
                 "aiSkyDomeLight" => {
                     if !self.inputs(n, &["sc", "color"]).is_empty() {
                         self.out.warnings.push(format!(
@@ -929,18 +953,31 @@ impl<'g> Reader<'g> {
                     Light::Environment { radiance: power }
                 }
                 "pointLight" | "spotLight" => {
-                    // Decay rate 0 (No Decay, the default), 1 linear, 2 quadratic, 3 cubic:
-                    // the intensity lights a surface facing the light at distance d to I / d^rate.
-                    let rate = scalar(g, n, &["de", "decayRate"], 0.0)?;
-                    if !(rate.fract() == 0.0 && (0.0..=3.0).contains(&rate)) {
-                        return Err((node.line, format!("light {}: decay rate {rate} is not 0, 1, 2 or 3", node.name)));
-                    }
-                    let decay = rate as u8;
-                    // Maya measures the distance in centimetres, its internal unit, whatever
-                    // unit the file is in: I / (c d)^rate = (I c^-rate) / d^rate.
-                    let power = power * (g.centimeters_per_unit as f32).powi(-i32::from(decay));
+                    // Maya's decay rate 0 (No Decay, its default), 1 linear, 2 quadratic, 3
+                    // cubic: the intensity lights a surface facing the light at distance d to
+                    // I / d^rate. Arnold ignores it for its own decay type (`aiDecayType`):
+                    // quadratic (its default) or constant.
+                    let decay = match arnold {
+                        true => match scalar(g, n, &["ai_decay_type", "aiDecayType"], 1.0)? {
+                            0.0 => 0,
+                            _ => 2,
+                        },
+                        false => {
+                            let rate = scalar(g, n, &["de", "decayRate"], 0.0)?;
+                            if !(rate.fract() == 0.0 && (0.0..=3.0).contains(&rate)) {
+                                return Err((
+                                    node.line,
+                                    format!("light {}: decay rate {rate} is not 0, 1, 2 or 3", node.name),
+                                ));
+                            }
+                            rate as u8
+                        }
+                    };
+                    // Maya and MtoA measure the distance in centimetres, Maya's internal unit,
+                    // whatever unit the file is in: I / (c d)^rate = (I c^-rate) / d^rate.
+                    let power = power * (g.centimeters_per_unit as f32).powi(-i32::from(decay)) * shading;
                     if kind == "pointLight" {
-                        Light::Point { position, intensity: power * PI, decay }
+                        Light::Point { position, intensity: power, decay }
                     } else {
                         let cone = scalar(g, n, &["ca", "coneAngle"], 40.0)?.clamp(0.0, 180.0);
                         let penumbra = scalar(g, n, &["pa", "penumbraAngle"], 0.0)?.clamp(-90.0, 90.0);
@@ -950,7 +987,7 @@ impl<'g> Reader<'g> {
                         Light::Spot {
                             position,
                             direction: along,
-                            intensity: power * PI,
+                            intensity: power,
                             cos_inner: (inner as f32).to_radians().cos(),
                             cos_outer: (outer as f32).to_radians().cos(),
                             decay,
@@ -958,12 +995,22 @@ impl<'g> Reader<'g> {
                     }
                 }
                 _ => {
-                    // An area light is the square −1..1 in its local XY plane.
+                    // An area light (Maya's, or Arnold's quad) is the square −1..1 in its local
+                    // XY plane.
                     let corner = m.transform_point3(DVec3::new(-1.0, -1.0, 0.0)).as_vec3();
                     let edge_u = m.transform_vector3(DVec3::new(2.0, 0.0, 0.0)).as_vec3();
                     let edge_v = m.transform_vector3(DVec3::new(0.0, 2.0, 0.0)).as_vec3();
+                    // Arnold normalizes its area lights by default (`aiNormalize`): the
+                    // radiance is the intensity over the area in square centimetres.
+                    let normalize = arnold && scalar(g, n, &["ai_normalize", "aiNormalize", "normalize"], 1.0)? != 0.0;
+                    let cm = g.centimeters_per_unit as f32;
+                    let area = edge_u.cross(edge_v).length() * cm * cm;
+                    let radiance = match normalize {
+                        true if area > 0.0 => power / area,
+                        _ => power,
+                    };
                     // The quad emits towards edge_u × edge_v; Maya's area light towards −Z.
-                    Light::Quad { corner: corner + edge_v, edge_u, edge_v: -edge_v, radiance: power }
+                    Light::Quad { corner: corner + edge_v, edge_u, edge_v: -edge_v, radiance }
                 }
             };
             self.out.contents.lights.push(light);

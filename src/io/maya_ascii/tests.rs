@@ -533,3 +533,44 @@ fn arnolds_sky_dome_is_a_sky_of_its_colour_intensity_and_exposure() {
     // A hidden dome lights nothing.
     assert!(dome("\tsetAttr \".v\" no;\n").contents.lights.is_empty());
 }
+
+#[test]
+fn lights_of_a_file_arnold_renders_light_as_arnold_does() {
+    let arnold = "select -ne :defaultRenderGlobals;\n\tsetAttr \".ren\" -type \"string\" \"arnold\";\n";
+    // Arnold's point light decays quadratically by default, whatever Maya's decay rate, and
+    // lights a facing surface to I / d² (no π: Arnold's diffuse divides by π as tress's).
+    let e = |attrs: &str| point_light_irradiance(arnold, attrs);
+    assert!((e("") - 2.0 / 16.0).abs() < 1e-6, "{}", e(""));
+    assert!((e("setAttr \".de\" 1;\n") - 2.0 / 16.0).abs() < 1e-6);
+    assert!((e("setAttr \".ai_decay_type\" 0;\n") - 2.0).abs() < 1e-5);
+    // Exposure in stops; the distance in centimetres as Maya's.
+    assert!((e("setAttr \".ai_exposure\" 3;\n") - 16.0 / 16.0).abs() < 1e-5);
+    let m = point_light_irradiance(&format!("currentUnit -l meter;\n{arnold}"), "");
+    assert!((m - 2.0 / (400.0f32 * 400.0)).abs() < 1e-9, "{m}");
+    // Maya's own renderer for the same light: no decay and π.
+    assert!((point_light_irradiance("", "") / PI - 2.0).abs() < 1e-5);
+    // A directional light: irradiance I under Arnold, π I under Maya's renderer.
+    let sun = |head: &str| {
+        let s = read(&format!("{head}createNode directionalLight -n d;\n\tsetAttr \".in\" 3;\n")).unwrap();
+        let Light::Distant { irradiance, .. } = s.contents.lights[0] else { panic!("{:?}", s.contents.lights) };
+        irradiance.x
+    };
+    assert!((sun(arnold) - 3.0).abs() < 1e-6 && (sun("") - 3.0 * PI).abs() < 1e-5);
+    // Arnold's quad light (`aiAreaLight`), 4 units wide in metres: its intensity × 2^exposure
+    // spread over its area in square centimetres, unless normalize is off.
+    let quad = |attrs: &str| {
+        let s = read(&format!(
+            "currentUnit -l meter;\ncreateNode transform -n q;\n\tsetAttr \".s\" -type \"double3\" 2 1 1;\n\
+             createNode aiAreaLight -n qs -p q;\n\tsetAttr \".sc\" -type \"float3\" 1 0.5 0;\n\tsetAttr \".intensity\" 8;\n{attrs}"
+        ))
+        .unwrap();
+        let Light::Quad { edge_u, edge_v, radiance, .. } = s.contents.lights[0] else {
+            panic!("{:?}", s.contents.lights)
+        };
+        assert!((edge_u.cross(edge_v).length() - 8.0).abs() < 1e-5);
+        radiance
+    };
+    let area_cm2 = 8.0 * 100.0 * 100.0;
+    assert!((quad("\tsetAttr \".ai_exposure\" 1;\n") - Vec3::new(16.0, 8.0, 0.0) / area_cm2).length() < 1e-9);
+    assert_eq!(quad("\tsetAttr \".ai_normalize\" 0;\n"), Vec3::new(8.0, 4.0, 0.0));
+}
