@@ -27,18 +27,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         settings: RenderSettings { width: 320, height: 240, spp: 8, ..RenderSettings::default() },
         contents: Contents {
             lights: vec![
-                Light::Distant { direction: Vec3::new(0.4, 0.9, 0.6).normalize(), irradiance: Color::splat(3.0) },
-                Light::Environment { radiance: Color::new(0.4, 0.45, 0.5) },
+                Light::Distant { direction: Vec3::new(0.4, 0.9, 0.6).normalize(), irradiance: Color::splat(3.0) }
+                    .into(),
+                Light::Environment { radiance: Color::new(0.4, 0.45, 0.5) }.into(),
             ],
             meshes: vec![
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
-                    material: Material::Diffuse { color: Color::new(0.35, 0.33, 0.3) },
+                    material: Material::Diffuse { color: Color::new(0.35, 0.33, 0.3) }.into(),
                     transform: Affine3A::IDENTITY,
                 },
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::plane(10.0)),
-                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::from_translation(Vec3::new(0.0, -0.7, 0.0)),
                 },
             ],

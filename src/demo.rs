@@ -33,24 +33,25 @@ pub fn description(strands: u32, seed: u64) -> Description {
         settings: RenderSettings::default(),
         contents: Contents {
             lights: vec![
-                Light::Distant { direction: Vec3::new(0.45, 0.8, 0.4).normalize(), irradiance: Color::splat(3.0) },
-                Light::Environment { radiance: Color::splat(DEFAULT_SKY_RADIANCE) },
+                Light::Distant { direction: Vec3::new(0.45, 0.8, 0.4).normalize(), irradiance: Color::splat(3.0) }
+                    .into(),
+                Light::Environment { radiance: Color::splat(DEFAULT_SKY_RADIANCE) }.into(),
             ],
             meshes: vec![
                 MeshEntry {
                     source: MeshSource::Inline(torus),
-                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::IDENTITY,
                 },
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::plane(12.0)),
-                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::from_translation(Vec3::new(0.0, -0.62, 0.0)),
                 },
             ],
             hair: vec![HairEntry {
                 source: HairSource::Inline(hair),
-                material: Material::Tube(Tube { ambient: diffuse, diffuse, ..Tube::default() }),
+                material: Material::Tube(Tube { ambient: diffuse, diffuse, ..Tube::default() }).into(),
                 transform: Affine3A::IDENTITY,
                 radius_scale: 1.0,
                 file_colors: true,

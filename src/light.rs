@@ -4,7 +4,7 @@
 
 mod environment;
 
-pub use environment::{luminance, EnvironmentMap, MAX_PIXELS as MAX_ENVIRONMENT_PIXELS};
+pub use environment::{luminance, EnvironmentMap, MapPlacement, MAX_PIXELS as MAX_ENVIRONMENT_PIXELS};
 
 use crate::math::{frame, sampling, Color};
 use glam::Vec3;

@@ -25,14 +25,14 @@ fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3
         settings: RenderSettings { width: 48, height: 36, spp: 2, ..Default::default() },
         contents: Contents {
             lights: vec![
-                Light::Distant { direction: Vec3::new(0.3, 1.0, 0.5).normalize(), irradiance: Color::ONE },
-                Light::Environment { radiance: Color::splat(0.2) },
+                Light::Distant { direction: Vec3::new(0.3, 1.0, 0.5).normalize(), irradiance: Color::ONE }.into(),
+                Light::Environment { radiance: Color::splat(0.2) }.into(),
             ],
             meshes: meshes
                 .into_iter()
                 .map(|(m, transform)| MeshEntry {
                     source: MeshSource::Inline(m),
-                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform,
                 })
                 .collect(),
@@ -40,7 +40,7 @@ fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3
                 .into_iter()
                 .map(|(s, transform)| HairEntry {
                     source: HairSource::Inline(s),
-                    material: tube.clone(),
+                    material: tube.clone().into(),
                     transform,
                     radius_scale: 1.0,
                     file_colors: true,

@@ -48,22 +48,22 @@ fn scene(light: Light, integrator: Integrator, spp: u32) -> Description {
         },
         settings: RenderSettings { width: 48, height: 36, spp, integrator, max_depth: 2, ..Default::default() },
         contents: Contents {
-            lights: vec![light],
+            lights: vec![light.into()],
             meshes: vec![
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::torus(0.6, 0.2, 32, 16)),
-                    material: Material::Diffuse { color: Color::new(0.6, 0.4, 0.3) },
+                    material: Material::Diffuse { color: Color::new(0.6, 0.4, 0.3) }.into(),
                     transform: Affine3A::from_translation(Vec3::Y * 0.2),
                 },
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::plane(6.0)),
-                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::IDENTITY,
                 },
             ],
             hair: vec![HairEntry {
                 source: HairSource::Inline(hair),
-                material: physical,
+                material: physical.into(),
                 transform: Affine3A::IDENTITY,
                 radius_scale: 1.0,
                 file_colors: true,
@@ -128,10 +128,10 @@ fn a_white_map_lights_a_convex_diffuse_body_to_its_albedo() {
             },
             settings: RenderSettings { width: 16, height: 16, spp: 64, integrator, max_depth: 4, ..Default::default() },
             contents: Contents {
-                lights: vec![constant_map(1.0)],
+                lights: vec![constant_map(1.0).into()],
                 meshes: vec![MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
-                    material: Material::Diffuse { color: Color::splat(0.5) },
+                    material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::IDENTITY,
                 }],
                 ..Default::default()
@@ -228,15 +228,21 @@ fn rotation_moves_the_bright_spot_where_the_frame_says() {
     assert!(peak > 50.0 && peak <= 100.0 + 1e-3, "{peak}");
 }
 
+/// The map is read when the scene is prepared: a file that cannot be used is an error
+/// then, naming the light and the file.
 #[test]
 fn scene_files_name_the_unusable_map() {
     let dir = tempfile::tempdir().unwrap();
     let scene_path = dir.path().join("spot.toml");
-    let e = tress::io::scene_file::parse(&spot_scene(0.0), &scene_path, None).map(|d| d.0).unwrap_err().to_string();
+    let prepare_error = || {
+        let desc = tress::io::scene_file::parse(&spot_scene(0.0), &scene_path, None).unwrap().0;
+        tress::prepare::prepare(&desc).map(|_| ()).unwrap_err().to_string()
+    };
+    let e = prepare_error();
     assert!(e.contains("light 1") && e.contains("spot.pfm: could not open the file"), "{e}");
     std::fs::write(dir.path().join("spot.pfm"), b"PF\n2 2\n-1\n\0\0").unwrap();
-    let e = tress::io::scene_file::parse(&spot_scene(0.0), &scene_path, None).map(|d| d.0).unwrap_err().to_string();
-    assert!(e.contains("spot.pfm: the header announces 2x2 pixels"), "{e}");
+    let e = prepare_error();
+    assert!(e.contains("light 1") && e.contains("spot.pfm: the header announces 2x2 pixels"), "{e}");
     let both = spot_scene(0.0).replace("file = \"spot.pfm\"", "file = \"spot.pfm\"\nradiance = [1.0, 1.0, 1.0]");
     let e = tress::io::scene_file::parse(&both, &scene_path, None).map(|d| d.0).unwrap_err().to_string();
     assert!(e.contains("exactly one of `radiance` and `file`"), "{e}");
@@ -267,10 +273,10 @@ fn the_tube_ambient_term_takes_an_environment_maps_mean_radiance() {
             },
             settings: RenderSettings { width: 16, height: 16, spp: 4, integrator, ..Default::default() },
             contents: Contents {
-                lights: vec![Light::EnvironmentMap(map.clone())],
+                lights: vec![Light::EnvironmentMap(map.clone()).into()],
                 hair: vec![HairEntry {
                     source: HairSource::Inline(strands.clone()),
-                    material: Material::Tube(tube.clone()),
+                    material: Material::Tube(tube.clone()).into(),
                     transform: Affine3A::IDENTITY,
                     radius_scale: 1.0,
                     file_colors: false,

@@ -8,8 +8,10 @@ use std::path::Path;
 use tress::prepare::prepare;
 use tress::scene::Description;
 
+/// The image of `desc`, whose map must be usable (no constant sky stands in for it).
 fn render(desc: &Description) -> tress::film::Film {
     let (world, _) = prepare(desc).unwrap();
+    assert!(!world.warnings.iter().any(|w| w.contains("constant sky")), "{:?}", world.warnings);
     tress::render::render(&world, None).0
 }
 
@@ -172,4 +174,24 @@ fn usd_dome_textures_light_the_side_facing_their_bright_spot() {
     assert!(ratio > 2.0, "{ratio}");
     let half = sides(&render(&usd_scene(dir.path(), &dome.replace("intensity = 1", "intensity = 0.5"))));
     assert!((half[0] / lit[0] - 0.5).abs() < 0.02, "{half:?} {lit:?}");
+}
+
+/// Maps are read when the scene is prepared: one that pbrt or USD names but that cannot be
+/// read lights the scene as a constant sky of the light's colour, with a warning naming the
+/// file, as those tools' own lights do without a map.
+#[test]
+fn unreadable_maps_are_a_constant_sky_of_the_lights_colour_said_so() {
+    use tress::light::Light;
+    use tress::math::Color;
+    let dir = tempfile::tempdir().unwrap();
+    let light = "LightSource \"infinite\" \"string mapname\" \"gone.exr\" \"rgb L\" [0.5 0.5 0.5]";
+    let (world, _) = prepare(&pbrt_scene(dir.path(), light)).unwrap();
+    assert_eq!(world.lights, [Light::Environment { radiance: Color::splat(0.5) }]);
+    let said = |w: &[String], what: &str| w.iter().any(|w| w.contains(what) && w.contains("constant sky"));
+    assert!(said(&world.warnings, "gone.exr: could not open the file"), "{:?}", world.warnings);
+    std::fs::write(dir.path().join("sky.exr"), b"not an exr").unwrap();
+    let dome = "    asset inputs:texture:file = @./sky.exr@\n    float inputs:intensity = 2";
+    let (world, _) = prepare(&usd_scene(dir.path(), dome)).unwrap();
+    assert_eq!(world.lights, [Light::Environment { radiance: Color::splat(2.0) }]);
+    assert!(said(&world.warnings, "sky.exr: not a readable exr file"), "{:?}", world.warnings);
 }

@@ -29,13 +29,13 @@ fn mean(film: &Film) -> Vec3 {
 }
 
 fn mesh(mesh: TriangleMesh, material: Material, transform: Affine3A) -> MeshEntry {
-    MeshEntry { source: MeshSource::Inline(mesh), material, transform }
+    MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform }
 }
 
 fn hair(strands: StrandSet, material: Material) -> HairEntry {
     HairEntry {
         source: HairSource::Inline(strands),
-        material,
+        material: material.into(),
         transform: Affine3A::IDENTITY,
         radius_scale: 1.0,
         file_colors: true,
@@ -85,7 +85,7 @@ fn path_tracer_white_furnace() {
             },
             settings: settings(24, 24, 64, 64, Integrator::Path),
             contents: Contents {
-                lights: vec![Light::Environment { radiance: Color::ONE }],
+                lights: vec![Light::Environment { radiance: Color::ONE }.into()],
                 meshes: vec![mesh(
                     TriangleMesh::sphere(0.5, 48),
                     Material::Diffuse { color: Color::ONE },
@@ -145,7 +145,7 @@ fn lit_scene(integrator: Integrator, spp: u32, max_depth: u32, environment: bool
         },
         settings: RenderSettings { gather_rays: 4, ..settings(32, 24, spp, max_depth, integrator) },
         contents: Contents {
-            lights,
+            lights: lights.into_iter().map(Into::into).collect(),
             meshes: vec![
                 mesh(TriangleMesh::plane(8.0), Material::Diffuse { color: Color::splat(0.9) }, Affine3A::IDENTITY),
                 mesh(
@@ -215,7 +215,7 @@ fn shadow_scene(layers: u32, a: f32, integrator: Integrator) -> Description {
         },
         settings: settings(32, 32, 4, 0, integrator),
         contents: Contents {
-            lights: vec![Light::Distant { direction: Vec3::Y, irradiance: Color::ONE }],
+            lights: vec![Light::Distant { direction: Vec3::Y, irradiance: Color::ONE }.into()],
             meshes: vec![mesh(TriangleMesh::plane(20.0), Material::Diffuse { color: Color::ONE }, Affine3A::IDENTITY)],
             hair: vec![hair(strands, Material::Diffuse { color: Color::ONE })],
             ..Default::default()
@@ -465,7 +465,7 @@ fn lone_strand(r0: f32, r1: f32, material: Material, integrator: Integrator, max
         },
         settings: RenderSettings { gather_rays: 4, ..settings(8, 8, 1, max_depth, integrator) },
         contents: Contents {
-            lights: vec![Light::Environment { radiance: Color::ONE }],
+            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
             hair: vec![hair(strands, material)],
             ..Default::default()
         },

@@ -25,11 +25,11 @@ fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Descrip
         },
         settings: RenderSettings { width: 24, height: 24, spp: 1024, max_depth: 0, ..Default::default() },
         contents: Contents {
-            lights: vec![Light::Environment { radiance: Color::ONE }],
+            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
             meshes: vec![],
             hair: vec![HairEntry {
                 source: HairSource::Inline(strands),
-                material: Material::Physical(PhysicalHair::new(params)),
+                material: Material::Physical(PhysicalHair::new(params)).into(),
                 transform: Affine3A::IDENTITY,
                 radius_scale: 1.0,
                 file_colors,
@@ -96,7 +96,7 @@ fn colours_from_strands_need_strands_with_colours() {
 fn example_scene_uses_the_physical_material_and_renders_the_same_on_any_thread_count() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/hairy_torus_closeup.toml");
     let mut desc = tress::io::scene_file::read(&path, None).unwrap().0;
-    assert!(matches!(desc.contents.hair[0].material, Material::Physical(_)));
+    assert!(matches!(desc.contents.hair[0].material, tress::scene::MaterialSource::Inline(Material::Physical(_))));
     desc.settings.width = 48;
     desc.settings.height = 36;
     desc.settings.spp = 2;

@@ -126,10 +126,10 @@ fn black_strands_on_white(
         },
         settings,
         contents: Contents {
-            lights: vec![Light::Environment { radiance: Color::ONE }],
+            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
             hair: vec![HairEntry {
                 source: HairSource::Inline(strands),
-                material: Material::Tube(black),
+                material: Material::Tube(black).into(),
                 transform: Affine3A::IDENTITY,
                 radius_scale: 1.0,
                 file_colors: false,

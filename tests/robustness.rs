@@ -17,11 +17,11 @@ fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> 
         camera: CameraDesc { eye, target: Vec3::ZERO, up: Vec3::Y, vfov: 1.0, ..Default::default() },
         settings: RenderSettings { width: 8, height: 8, spp: 1, max_depth: 0, ..Default::default() },
         contents: Contents {
-            lights: vec![Light::Distant { direction: light_dir.normalize(), irradiance: Color::ONE }],
+            lights: vec![Light::Distant { direction: light_dir.normalize(), irradiance: Color::ONE }.into()],
             meshes: vec![],
             hair: vec![HairEntry {
                 source: HairSource::Inline(strands),
-                material,
+                material: material.into(),
                 transform: Affine3A::IDENTITY,
                 radius_scale: 1.0,
                 file_colors: false,

@@ -94,19 +94,19 @@ fn a_distant_checkerboard_is_filtered_to_its_mean() {
     assert!(std > 0.1, "standard deviation {std} close up");
 }
 
+/// Textures are read when the scene is prepared: one that cannot be used is an error then,
+/// naming the mesh and the file.
 #[test]
 fn an_unusable_texture_is_an_error_naming_it() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("bad.toml");
-    let e = tress::io::scene_file::parse(&quad_scene("skin.png", 2.0, 8, 1), &path, None)
-        .map(|d| d.0)
-        .unwrap_err()
-        .to_string();
+    let prepare_error = || {
+        let desc = tress::io::scene_file::parse(&quad_scene("skin.png", 2.0, 8, 1), &path, None).unwrap().0;
+        tress::prepare::prepare(&desc).map(|_| ()).unwrap_err().to_string()
+    };
+    let e = prepare_error();
     assert!(e.contains("mesh 1") && e.contains("skin.png: could not open the file"), "{e}");
     std::fs::write(dir.path().join("skin.png"), b"\x89PNG\r\n\x1a\n broken").unwrap();
-    let e = tress::io::scene_file::parse(&quad_scene("skin.png", 2.0, 8, 1), &path, None)
-        .map(|d| d.0)
-        .unwrap_err()
-        .to_string();
-    assert!(e.contains("skin.png: not a readable png file"), "{e}");
+    let e = prepare_error();
+    assert!(e.contains("mesh 1") && e.contains("skin.png: not a readable png file"), "{e}");
 }

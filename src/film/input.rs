@@ -31,8 +31,9 @@ pub struct ExrFilm {
 }
 
 /// Upper bound on how many bytes deflate can expand one byte into (its best ratio is about
-/// 1032:1), with room for the uncompressed parts of a file.
-const MAX_EXPANSION: u64 = 1100;
+/// 1032:1), with room for the uncompressed parts of a file: the most a header may announce
+/// per byte of the file, here and for the images [`crate::prepare`] reads.
+pub(crate) const MAX_EXPANSION: u64 = 1100;
 
 /// Largest side of an image, as [`crate::scene::Description::validate`] allows.
 const MAX_SIDE: u32 = 65_536;
@@ -127,9 +128,10 @@ pub fn decode_exr(bytes: &[u8], path: &Path) -> Result<ExrFilm, LoadError> {
     Ok(ExrFilm { film, at: (x, y), full: (fw, fh), attributes })
 }
 
-/// Runs the exr crate on untrusted bytes. It is not known to panic on bad input, but a bad
-/// file must never take the program down, so a panic in it becomes an error too.
-fn guarded<T>(path: &Path, f: impl FnOnce() -> exr::error::Result<T>) -> Result<T, LoadError> {
+/// Runs the exr crate on untrusted bytes (`path` names them in errors). It is not known to
+/// panic on bad input, but a bad file must never take the program down, so a panic in it
+/// becomes an error too.
+pub(crate) fn guarded<T>(path: &Path, f: impl FnOnce() -> exr::error::Result<T>) -> Result<T, LoadError> {
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
         Ok(Ok(v)) => Ok(v),
         Ok(Err(e)) => Err(LoadError::format(path, format!("not a readable exr file: {e}"))),

@@ -7,6 +7,7 @@ mod region;
 
 pub use filter::PixelFilter;
 pub use input::{decode_exr, ExrFilm};
+pub(crate) use input::{guarded as guarded_exr, MAX_EXPANSION};
 pub use output::{check_output, srgb_encode, write_image, write_image_part, write_image_with, OutputError};
 pub use region::Region;
 

@@ -60,7 +60,7 @@ pub fn raw_strands(strands: StrandSet) -> Imported {
     let material = Material::Physical(PhysicalHair::new(HairParams { absorption, ..HairParams::default() }));
     let hair = HairEntry {
         source: HairSource::Inline(strands),
-        material,
+        material: material.into(),
         transform: Affine3A::IDENTITY,
         radius_scale: 1.0,
         file_colors: true,
@@ -72,7 +72,7 @@ pub fn raw_strands(strands: StrandSet) -> Imported {
 /// A scene of one mesh, diffuse grey.
 pub fn raw_mesh(mesh: TriangleMesh) -> Imported {
     let material = Material::Diffuse { color: Vec3::splat(0.5) };
-    let mesh = MeshEntry { source: MeshSource::Inline(mesh), material, transform: Affine3A::IDENTITY };
+    let mesh = MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform: Affine3A::IDENTITY };
     Imported { contents: Contents { meshes: vec![mesh], ..Contents::default() }, ..Imported::default() }
 }
 
@@ -144,8 +144,10 @@ impl Imported {
             self.warnings.push("the file has no lights: lighting with a default light from the camera".into());
             let direction = (camera.eye - camera.target + camera.up * 0.5 * (camera.eye - camera.target).length())
                 .normalize_or(Vec3::Y);
-            self.contents.lights.push(Light::Distant { direction, irradiance: Vec3::splat(std::f32::consts::PI) });
-            self.contents.lights.push(Light::Environment { radiance: Vec3::splat(DEFAULT_SKY_RADIANCE) });
+            self.contents
+                .lights
+                .push(Light::Distant { direction, irradiance: Vec3::splat(std::f32::consts::PI) }.into());
+            self.contents.lights.push(Light::Environment { radiance: Vec3::splat(DEFAULT_SKY_RADIANCE) }.into());
         }
         (Description { camera, settings, contents: self.contents }, self.warnings)
     }

@@ -1,6 +1,7 @@
 //! File formats: scene TOML ([`scene_file`]), OBJ and PLY meshes, Cem Yuksel `.hair`
-//! strands ([`cem_hair`]), images (environment maps and textures, [`raster`]), and other tools' scenes (Maya ASCII, pbrt-v4, USD text) as an
-//! [`imported::Imported`]. The readers produce [`crate::scene`] descriptions and entries;
+//! strands ([`cem_hair`]), and other tools' scenes (Maya ASCII, pbrt-v4, USD text) as an
+//! [`imported::Imported`]. Images (environment maps, textures, fur maps) are named by path
+//! and read by `prepare`. The readers produce [`crate::scene`] descriptions and entries;
 //! the dispatch by extension ([`read_mesh`], [`read_imported`]) is here, so no reader
 //! imports another.
 
@@ -11,7 +12,6 @@ pub mod maya_ascii;
 pub mod obj;
 pub mod pbrt;
 pub mod ply;
-pub mod raster;
 pub mod reference_scene;
 pub mod scene_file;
 pub mod usd;

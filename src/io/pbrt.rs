@@ -51,8 +51,9 @@
 //! `scale`. Image-based infinite lights (`filename` in v4, an equal-area square;
 //! `mapname` in v3, latitude-longitude; OpenEXR, PFM, Radiance HDR, PNG or JPEG) become
 //! environment maps turned by the light's transform, times `L` and `scale` (or scaled to
-//! v4's `illuminance`): `image_light.rs` has the mappings. A map that cannot be read is a
-//! constant white sky, with a warning naming the file.
+//! v4's `illuminance`): `pbrt_to_map` has the mapping. The maps are read when the scene is
+//! prepared; one that cannot be used is a constant sky of the light's colour, with a
+//! warning naming the file.
 //!
 //! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
 //! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the
@@ -68,8 +69,10 @@ use super::imported::Imported;
 use crate::error::LoadError;
 use crate::geometry::curve::{cubic_point, CubicBasis};
 use crate::geometry::{StrandSet, TriangleMesh};
-use crate::light::Light;
-use crate::scene::{CameraDesc, HairEntry, HairSource, MeshEntry, MeshSource};
+use crate::light::{Light, MapPlacement};
+use crate::scene::{
+    CameraDesc, EnvironmentFile, HairEntry, HairSource, LightSource, MeshEntry, MeshSource, Projection,
+};
 use crate::shading::hair_bsdf::{color_polynomial, Absorption, HairParams, PhysicalHair};
 use crate::shading::Material;
 use crate::world::Integrator;
@@ -793,42 +796,35 @@ impl Parser {
                 let (from, to) = (point("from", DVec3::ZERO)?, point("to", DVec3::Z)?);
                 let direction = (from - to).try_normalize().ok_or((p.line, "distant light: from = to".to_string()))?;
                 let e = positive("illuminance")?.unwrap_or(1.0);
-                Light::Distant { direction, irradiance: p.color("L", Vec3::ONE, w)? * scale * e }
+                Light::Distant { direction, irradiance: p.color("L", Vec3::ONE, w)? * scale * e }.into()
             }
             "infinite" => {
                 // An image map: v4 `filename` (equal-area square), v3 `mapname` (lat-long).
                 let map = match (p.has("filename"), p.has("mapname")) {
-                    (true, _) => Some((p.string("filename", "")?, image_light::Projection::EqualArea)),
-                    (_, true) => Some((p.string("mapname", "")?, image_light::Projection::LatLong)),
+                    (true, _) => Some((p.string("filename", "")?, Projection::EqualArea)),
+                    (_, true) => Some((p.string("mapname", "")?, Projection::LatLong)),
                     _ => None,
                 };
                 let colour = p.color("L", Vec3::ONE, w)? * scale;
                 let illuminance = positive("illuminance")?;
                 match map {
+                    // Read by `prepare`; a file it cannot use becomes a constant sky of
+                    // the light's colour, with a warning.
                     Some((file, projection)) => {
-                        let path = self.dir.join(&file);
                         let to_world = crate::math::orthogonal_part(&glam::Affine3A::from_mat4(ctm.as_mat4()));
-                        let made = super::raster::read_rgb(&path, super::raster::Encoding::Srgb).and_then(|image| {
-                            image_light::environment_map(&image, projection, colour, illuminance, to_world)
-                                .map_err(|m| LoadError::invalid(&path, m))
-                        });
-                        match made {
-                            Ok((map, note)) => {
-                                if let Some(note) = note {
-                                    w.insert(format!("{}: {note}", path.display()));
-                                }
-                                Light::EnvironmentMap(map)
-                            }
-                            Err(e) => {
-                                w.insert(format!("{e}: the infinite light is rendered as a constant white sky"));
-                                Light::Environment { radiance: colour }
-                            }
-                        }
+                        LightSource::File(EnvironmentFile {
+                            path: self.dir.join(&file),
+                            projection,
+                            tint: colour,
+                            illuminance,
+                            placement: MapPlacement::new(0.0, 1.0).rotated(to_world * pbrt_to_map().transpose()),
+                            fallback: Some(colour),
+                        })
                     }
                     // A constant sky of radiance L gives a facing surface E = π L.
-                    None => {
-                        Light::Environment { radiance: colour * illuminance.map_or(1.0, |e| e / std::f32::consts::PI) }
-                    }
+                    None => LightSource::Inline(Light::Environment {
+                        radiance: colour * illuminance.map_or(1.0, |e| e / std::f32::consts::PI),
+                    }),
                 }
             }
             "point" => {
@@ -838,6 +834,7 @@ impl Parser {
                     intensity: p.color("I", Vec3::ONE, w)? * scale * k,
                     decay: 2,
                 }
+                .into()
             }
             "spot" => {
                 let (from, to) = (point("from", DVec3::ZERO)?, point("to", DVec3::Z)?);
@@ -858,6 +855,7 @@ impl Parser {
                     cos_outer,
                     decay: 2,
                 }
+                .into()
             }
             other => {
                 w.insert(format!("light \"{other}\" is not supported: skipped"));
@@ -865,10 +863,13 @@ impl Parser {
             }
         };
         let bad = match &light {
-            Light::Distant { irradiance: c, .. }
-            | Light::Environment { radiance: c }
-            | Light::Point { intensity: c, .. }
-            | Light::Spot { intensity: c, .. } => !(c.is_finite() && c.min_element() >= 0.0),
+            LightSource::Inline(
+                Light::Distant { irradiance: c, .. }
+                | Light::Environment { radiance: c }
+                | Light::Point { intensity: c, .. }
+                | Light::Spot { intensity: c, .. },
+            )
+            | LightSource::File(EnvironmentFile { tint: c, .. }) => !(c.is_finite() && c.min_element() >= 0.0),
             _ => false,
         };
         if bad {
@@ -885,7 +886,7 @@ impl Parser {
         if !transform.is_finite() {
             return Err((p.line, "the shape's transform is not finite".into()));
         }
-        let material = self.materials[self.state.material].clone();
+        let material = crate::scene::MaterialSource::Inline(self.materials[self.state.material].clone());
         match kind {
             "curve" => {
                 let strand = curve(p, &ctm)?;
@@ -946,7 +947,13 @@ impl Parser {
         if self.image_scale != 1.0 {
             let k = self.image_scale as f32;
             for l in &mut self.out.contents.lights {
-                scale_emission(l, k);
+                match l {
+                    LightSource::Inline(l) => scale_emission(l, k),
+                    LightSource::File(f) => {
+                        f.placement = f.placement.scaled(k);
+                        f.fallback = f.fallback.map(|c| c * k);
+                    }
+                }
             }
         }
         for ((directive, decl), (file, line, count)) in std::mem::take(&mut self.unused) {
@@ -959,7 +966,7 @@ impl Parser {
         for (m, set) in std::mem::take(&mut self.strands) {
             self.out.contents.hair.push(HairEntry {
                 source: HairSource::Inline(set),
-                material: self.materials[m].clone(),
+                material: self.materials[m].clone().into(),
                 transform: Affine3A::IDENTITY,
                 radius_scale: 1.0,
                 file_colors: true,
@@ -1015,6 +1022,23 @@ fn scale_emission(l: &mut Light, k: f32) {
         | Light::Environment { radiance: c } => *c *= k,
         Light::EnvironmentMap(map) => *map = map.scaled(k),
     }
+}
+
+/// The change of axes from pbrt's light frame to tress's map frame: (x, y, z) ↦ (−y, z, x).
+///
+/// pbrt-v3 (`mapname`) reads its map as a latitude-longitude image in the light's frame, +z
+/// up: the pixel at (s, t) in the unit square (t = 0 the top row) is the radiance from the
+/// direction (sin θ cos φ, sin θ sin φ, cos θ) with φ = 2π s, θ = π t (Pharr, Jakob and
+/// Humphreys, *Physically Based Rendering*, 3rd ed., §12.6 "Infinite Area Lights"); pbrt-v4
+/// (`filename`) a square in the equal-area octahedral mapping (4th ed., §3.8.3), which
+/// `prepare` resamples to that layout ([`crate::scene::Projection::EqualArea`]). tress's
+/// environment maps have +y up, the image's centre column along −z and the column a
+/// quarter to its right along +x: a direction (x, y, z) of pbrt's light frame is (−y, z, x)
+/// in the map's frame at the same pixel, an orthogonal change of axes (with a reflection:
+/// pbrt's φ turns counter-clockwise about +z, tress's columns clockwise about +y), handed
+/// to the map as part of its turn, so latitude-longitude maps are not resampled.
+pub(crate) fn pbrt_to_map() -> glam::Mat3 {
+    glam::Mat3::from_cols(Vec3::Z, -Vec3::X, Vec3::Y)
 }
 
 fn outer(a: Vec3, b: Vec3) -> glam::Mat3 {
@@ -1272,7 +1296,6 @@ fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
     Ok(PhysicalHair::new(params))
 }
 
-mod image_light;
 mod surfaces;
 
 #[cfg(test)]

@@ -64,8 +64,9 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
             RefLight::Distant { direction_to_light, radiance } => Light::Distant {
                 direction: Vec3::from(direction_to_light).normalize_or(Vec3::Y),
                 irradiance: radiance.into(),
-            },
-            RefLight::ConstantEnvironment { radiance } => Light::Environment { radiance: radiance.into() },
+            }
+            .into(),
+            RefLight::ConstantEnvironment { radiance } => Light::Environment { radiance: radiance.into() }.into(),
         })
         .collect();
     let meshes = s
@@ -73,7 +74,7 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
         .iter()
         .map(|m| MeshEntry {
             source: MeshSource::File(dir.join(&m.obj)),
-            material: Material::Diffuse { color: m.diffuse.into() },
+            material: Material::Diffuse { color: m.diffuse.into() }.into(),
             transform: Affine3A::IDENTITY,
         })
         .collect();
@@ -84,7 +85,7 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
             source: HairSource::File(dir.join(&h.file)),
             // Peers shade the curves as diffuse surfaces; so does tress here, for a
             // pixel-for-pixel comparison.
-            material: Material::Diffuse { color: h.diffuse.into() },
+            material: Material::Diffuse { color: h.diffuse.into() }.into(),
             transform: Affine3A::IDENTITY,
             radius_scale: 1.0,
             file_colors: false,
@@ -121,10 +122,10 @@ mod tests {
         let d = read_reference_scene(dir.path()).unwrap();
         assert_eq!((d.settings.width, d.settings.height, d.settings.spp), (64, 48, 2));
         assert_eq!(d.camera.vfov, 30.0);
-        assert_eq!(d.contents.lights[0], Light::Distant { direction: Vec3::Y, irradiance: Vec3::splat(3.0) });
+        assert_eq!(d.contents.lights[0], Light::Distant { direction: Vec3::Y, irradiance: Vec3::splat(3.0) }.into());
         assert_eq!(d.contents.meshes[0].source, MeshSource::File(dir.path().join("m.obj")));
         assert_eq!(d.contents.hair[0].source, HairSource::File(dir.path().join("h.hair")));
-        assert_eq!(d.contents.hair[0].material, Material::Diffuse { color: Vec3::new(0.4, 0.3, 0.2) });
+        assert_eq!(d.contents.hair[0].material, Material::Diffuse { color: Vec3::new(0.4, 0.3, 0.2) }.into());
         std::fs::write(dir.path().join("scene.json"), "{").unwrap();
         let e = read_reference_scene(dir.path()).unwrap_err().to_string();
         assert!(e.contains("scene.json") && e.contains("not a reference scene"), "{e}");

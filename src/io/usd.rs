@@ -39,7 +39,7 @@ pub use export::{usda_text, write_usd};
 use super::imported::Imported;
 use super::ImportOptions;
 use crate::error::LoadError;
-use crate::scene::{MeshEntry, MeshSource};
+use crate::scene::{MaterialSource, MeshEntry, MeshSource};
 use crate::shading::Material;
 use glam::{Affine3A, DMat4, Vec3};
 use openusd::schemas::geom::{Imageable, Visibility, Xformable};
@@ -288,7 +288,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                 };
                 if let Some(mut entry) = read {
                     if !has_display_color(&prim, time) {
-                        if let (Some(c), Material::Tube(t)) =
+                        if let (Some(c), MaterialSource::Inline(Material::Tube(t))) =
                             (shapes::surface_color(&prim, time, notes)?, &mut entry.material)
                         {
                             (t.ambient, t.diffuse) = (c, c);
@@ -381,7 +381,7 @@ fn render_resolution(prim: &Prim, time: TimeCode) -> Res<Option<[u32; 2]>> {
 
 fn push_mesh(out: &mut Imported, mesh: crate::geometry::TriangleMesh, color: Option<Vec3>, transform: Affine3A) {
     let material = Material::Diffuse { color: color.unwrap_or(Vec3::splat(0.5)) };
-    out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+    out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform });
 }
 
 #[cfg(test)]

@@ -22,10 +22,36 @@ pub const MAX_PIXELS: u64 = 16_384 * 8_192;
 #[derive(Clone)]
 pub struct EnvironmentMap {
     image: Arc<MapImage>,
-    /// World directions to the map's frame (the inverse of its rotation).
+    placement: MapPlacement,
+}
+
+/// How an environment map lies on the sphere of directions and how bright it is: its turn
+/// (a rotation, or one with a reflection) and a factor on every pixel. A scene description
+/// carries one for a map whose file is not read yet; the map read takes it as it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MapPlacement {
+    /// World directions to the map's frame (the inverse of its turn).
     to_map: Mat3,
     /// Factor on every pixel (intensity times 2^exposure).
     scale: f32,
+}
+
+impl MapPlacement {
+    /// Turned by `rotation` degrees about +y and scaled by `intensity`.
+    pub fn new(rotation: f32, intensity: f32) -> MapPlacement {
+        MapPlacement { to_map: Mat3::from_rotation_y(-rotation.to_radians()), scale: intensity }
+    }
+
+    /// Turned by `rotation` after its own turn: an orthogonal matrix, a rotation or one with
+    /// a reflection (a mirrored world mirrors its sky too).
+    pub fn rotated(self, rotation: Mat3) -> MapPlacement {
+        MapPlacement { to_map: self.to_map * rotation.transpose(), ..self }
+    }
+
+    /// Its factor multiplied by `k`.
+    pub fn scaled(self, k: f32) -> MapPlacement {
+        MapPlacement { scale: self.scale * k, ..self }
+    }
 }
 
 /// The pixels and their distribution, shared by the clones of a map.
@@ -45,8 +71,7 @@ impl std::fmt::Debug for EnvironmentMap {
         f.debug_struct("EnvironmentMap")
             .field("width", &self.image.width)
             .field("height", &self.image.height)
-            .field("to_map", &self.to_map)
-            .field("scale", &self.scale)
+            .field("placement", &self.placement)
             .finish()
     }
 }
@@ -54,8 +79,7 @@ impl std::fmt::Debug for EnvironmentMap {
 impl PartialEq for EnvironmentMap {
     fn eq(&self, o: &Self) -> bool {
         (Arc::ptr_eq(&self.image, &o.image) || self.image.pixels == o.image.pixels && self.image.width == o.image.width)
-            && self.to_map == o.to_map
-            && self.scale == o.scale
+            && self.placement == o.placement
     }
 }
 
@@ -75,6 +99,14 @@ impl EnvironmentMap {
         rotation: f32,
         intensity: f32,
     ) -> Result<EnvironmentMap, String> {
+        if !rotation.is_finite() {
+            return Err(format!("rotation {rotation} is not a finite number"));
+        }
+        EnvironmentMap::placed(width, height, rgb, MapPlacement::new(rotation, intensity))
+    }
+
+    /// [`EnvironmentMap::from_pixels`], placed by `placement`.
+    pub fn placed(width: u32, height: u32, rgb: &[f32], placement: MapPlacement) -> Result<EnvironmentMap, String> {
         let pixels = width as u64 * height as u64;
         if width == 0 || height == 0 {
             return Err(format!("the image is {width}x{height}: an environment map needs pixels"));
@@ -95,29 +127,29 @@ impl EnvironmentMap {
                 rgb[i]
             ));
         }
-        if !(intensity.is_finite() && intensity >= 0.0) {
-            return Err(format!("intensity {intensity} must be finite and not negative"));
+        if !(placement.scale.is_finite() && placement.scale >= 0.0) {
+            return Err(format!("intensity {} must be finite and not negative", placement.scale));
         }
-        if !rotation.is_finite() {
-            return Err(format!("rotation {rotation} is not a finite number"));
+        if !placement.to_map.is_finite() {
+            return Err("the map's turn is not finite".into());
         }
         let (w, h) = (width as usize, height as usize);
         let pixels: Vec<Color> = rgb.chunks_exact(3).map(|c| Color::new(c[0], c[1], c[2])).collect();
         let distribution = Distribution2D::new(&sampling_weights(&pixels, w, h), w, h);
         let mean = mean_radiance(&pixels, w, h);
         let image = Arc::new(MapImage { width: w, height: h, pixels, distribution, mean });
-        Ok(EnvironmentMap { image, to_map: Mat3::from_rotation_y(-rotation.to_radians()), scale: intensity })
+        Ok(EnvironmentMap { image, placement })
     }
 
     /// The same map turned by `rotation`, applied after its own: an orthogonal matrix, a
     /// rotation or one with a reflection (a mirrored world mirrors its sky too).
     pub fn rotated(&self, rotation: Mat3) -> EnvironmentMap {
-        EnvironmentMap { to_map: self.to_map * rotation.transpose(), ..self.clone() }
+        EnvironmentMap { placement: self.placement.rotated(rotation), ..self.clone() }
     }
 
     /// The same map with its radiance multiplied by `k` (finite, not negative).
     pub fn scaled(&self, k: f32) -> EnvironmentMap {
-        EnvironmentMap { scale: self.scale * k, ..self.clone() }
+        EnvironmentMap { placement: self.placement.scaled(k), ..self.clone() }
     }
 
     /// Width and height in pixels.
@@ -128,13 +160,13 @@ impl EnvironmentMap {
     /// Mean radiance over the sphere of directions: the constant environment that sends the
     /// same total light. The tube and fur models' ambient term stands for it (thesis eq. 2.3).
     pub fn mean_radiance(&self) -> Color {
-        self.image.mean * self.scale
+        self.image.mean * self.placement.scale
     }
 
     /// Radiance arriving from the unit direction `dir` (pointing away from the scene).
     pub fn radiance(&self, dir: Vec3) -> Color {
-        let [u, v] = to_uv(self.to_map * dir);
-        self.lookup(u, v) * self.scale
+        let [u, v] = to_uv(self.placement.to_map * dir);
+        self.lookup(u, v) * self.placement.scale
     }
 
     /// Bilinear lookup at (u, v): pixel centres at half-integers, wrapping in u.
@@ -155,7 +187,7 @@ impl EnvironmentMap {
     /// it. `None` where the map is black everywhere.
     pub fn sample(&self, u: (f32, f32)) -> Option<(Vec3, f32, Color)> {
         let img = &*self.image;
-        if img.distribution.integral() <= 0.0 || self.scale <= 0.0 {
+        if img.distribution.integral() <= 0.0 || self.placement.scale <= 0.0 {
             return None;
         }
         let (uv, pdf_uv) = img.distribution.sample(u);
@@ -165,17 +197,17 @@ impl EnvironmentMap {
         if !(sin_theta > 0.0 && pdf.is_finite() && pdf > 0.0) {
             return None;
         }
-        let dir = self.to_map.transpose() * local;
-        Some((dir, pdf, self.lookup(uv[0], uv[1]) * self.scale))
+        let dir = self.placement.to_map.transpose() * local;
+        Some((dir, pdf, self.lookup(uv[0], uv[1]) * self.placement.scale))
     }
 
     /// Solid-angle density with which [`EnvironmentMap::sample`] picks `dir`.
     pub fn pdf(&self, dir: Vec3) -> f32 {
         let img = &*self.image;
-        if img.distribution.integral() <= 0.0 || self.scale <= 0.0 {
+        if img.distribution.integral() <= 0.0 || self.placement.scale <= 0.0 {
             return 0.0;
         }
-        let local = self.to_map * dir;
+        let local = self.placement.to_map * dir;
         let sin_theta = (1.0 - local.y * local.y).max(0.0).sqrt();
         if sin_theta <= 0.0 {
             return 0.0;
@@ -364,7 +396,7 @@ mod tests {
         let mean = map.mean_radiance();
         let expected = grid / (4.0 * PI);
         assert!((mean - expected).abs().max_element() < 0.01 * expected.max_element(), "{mean} vs {expected}");
-        let twice = EnvironmentMap { scale: 2.0 * map.scale, ..map.clone() };
+        let twice = map.scaled(2.0);
         assert!((twice.mean_radiance() - 2.0 * mean).abs().max_element() < 1e-6);
     }
 

@@ -1,10 +1,13 @@
-//! Preparing a scene: the only code that reads the geometry and map files a
+//! Preparing a scene: the only code that reads the geometry and image files a
 //! [`Description`] names. It loads meshes and strand sets, grows hair systems and fur,
 //! applies transforms and builds the acceleration structures into a [`World`].
-//! Fur attribute maps are decoded here too ([`read_map_images`]) and handed to the fur as
-//! texels. [`estimate_memory`] predicts the memory of that step from file headers.
+//! Images are decoded here too: fur attribute maps ([`read_map_images`], handed to the fur
+//! as texels), environment maps (`environment`) and textures (`images`).
+//! [`estimate_memory`] predicts the memory of that step from file headers.
 
+mod environment;
 mod estimate;
+mod images;
 mod maps;
 
 pub use estimate::{check_memory, estimate_memory, parse_memory_size, MemoryEstimate};
@@ -13,20 +16,21 @@ pub use maps::{read_map_images, MAX_MAP_SIDE};
 use crate::accel::lod::LodParams;
 use crate::accel::{Accel, Shape};
 use crate::camera::Camera;
-use crate::error::PrepareError;
+use crate::error::{LoadError, PrepareError};
 use crate::geometry::StrandSet;
 use crate::hair_system::{self, Guides};
 use crate::io;
 use crate::light::Light;
-use crate::scene::{Description, GuideSource, HairSource, MeshSource};
-use crate::shading::Material;
+use crate::scene::{Description, GuideSource, HairSource, LightSource, MaterialSource, MeshSource, RoughnessSource};
+use crate::shading::{Material, Roughness, Textured};
 use crate::world::World;
+use images::{Encoding, Textures};
 use std::time::{Duration, Instant};
 
 /// How long preparing took, by stage.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct PrepareTimes {
-    /// Reading and transforming geometry.
+    /// Reading and transforming geometry, and reading environment maps.
     pub load: Duration,
     /// Building the BVHs.
     pub build: Duration,
@@ -47,7 +51,8 @@ pub struct LoadedGeometry {
     pub warnings: Vec<String>,
 }
 
-/// Loads every mesh and strand set a description names and applies its transform.
+/// Loads every mesh and strand set a description names and applies its transform; the
+/// materials' textures are decoded too (each file once).
 pub fn load_geometry(desc: &Description) -> Result<LoadedGeometry, PrepareError> {
     load_geometry_taking(desc, &mut [])
 }
@@ -59,6 +64,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
     let mut shapes = Vec::new();
     let mut warnings = Vec::new();
     let mut lods = Vec::new();
+    let mut textures = Textures::default();
     for (i, m) in desc.contents.meshes.iter().enumerate() {
         let mut mesh = match &m.source {
             MeshSource::File(path) => io::read_mesh(path)?,
@@ -69,7 +75,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         let dropped = mesh.remove_unusable_triangles();
         warnings.extend(skipped(("mesh", i), dropped, "triangles with corners"));
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
-        materials.push(m.material.clone());
+        materials.push(material(&m.material, &mut textures).map_err(|e| entry_error(("mesh", i), e))?);
     }
     for (i, h) in desc.contents.hair.iter().enumerate() {
         let mut strands = match &h.source {
@@ -95,7 +101,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         if !h.file_colors {
             strands.colors = None;
         }
-        if let Material::Physical(m) = &h.material {
+        if let MaterialSource::Inline(Material::Physical(m)) = &h.material {
             if m.needs_strand_colors() && strands.colors.is_none() {
                 let from = match &h.source {
                     HairSource::File(path) => path.display().to_string(),
@@ -112,7 +118,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         let dropped = strands.remove_unusable_strands();
         warnings.extend(skipped(("hair", i), dropped, "strands with coordinates or radii negative,"));
         shapes.push((Shape::Strands(strands), materials.len() as u32));
-        materials.push(h.material.clone());
+        materials.push(material(&h.material, &mut textures).map_err(|e| entry_error(("hair", i), e))?);
     }
     for (i, h) in desc.contents.hair_systems.iter().enumerate() {
         let what = |e: String| PrepareError::Invalid(format!("hair_system {}: {e}", i + 1));
@@ -136,7 +142,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         let strands = hair_system::expand(&h.system, &guides, h.colors, h.seed).map_err(what)?;
         lods.push(h.lod);
         shapes.push((Shape::Strands(strands), materials.len() as u32));
-        materials.push(h.material.clone());
+        materials.push(material(&h.material, &mut textures).map_err(|e| entry_error(("hair_system", i), e))?);
     }
     for (i, f) in desc.contents.fur.iter().enumerate() {
         let what = |e: String| PrepareError::Invalid(format!("fur {}: {e}", i + 1));
@@ -172,6 +178,51 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         }
     }
     Ok(LoadedGeometry { shapes, materials, lods, warnings })
+}
+
+/// The material of `source`, its textures decoded (each file once, in `textures`).
+fn material(source: &MaterialSource, textures: &mut Textures) -> Result<Material, LoadError> {
+    Ok(match source {
+        MaterialSource::Inline(m) => m.clone(),
+        MaterialSource::Textured(t) => Material::Textured(Textured {
+            color: textures.get(&t.color, Encoding::Srgb)?,
+            tint: t.tint,
+            roughness: match &t.roughness {
+                None => None,
+                Some(RoughnessSource::Constant(r)) => Some(Roughness::Constant(*r)),
+                Some(RoughnessSource::Map(path)) => Some(Roughness::Map(textures.get(path, Encoding::Linear)?)),
+            },
+            specular: t.specular,
+        }),
+    })
+}
+
+/// The world's lights: inline ones as they are, environment files decoded. A file that
+/// cannot be used is an error, or its fallback sky with a warning added to `warnings`.
+fn lights(desc: &Description, warnings: &mut Vec<String>) -> Result<Vec<Light>, PrepareError> {
+    let mut lights = Vec::with_capacity(desc.contents.lights.len());
+    for (i, l) in desc.contents.lights.iter().enumerate() {
+        lights.push(match l {
+            LightSource::Inline(l) => l.clone(),
+            LightSource::File(f) => match (environment::read(f), f.fallback) {
+                (Ok((map, note)), _) => {
+                    warnings.extend(note);
+                    Light::EnvironmentMap(map)
+                }
+                (Err(e), Some(radiance)) => {
+                    warnings.push(format!("light {}: {e}: lit by a constant sky of the light's colour instead", i + 1));
+                    Light::Environment { radiance }
+                }
+                (Err(e), None) => return Err(entry_error(("light", i), e)),
+            },
+        });
+    }
+    Ok(lights)
+}
+
+/// An image of entry `index` (0-based) of kind `entry` that cannot be used, named in `e`.
+fn entry_error((entry, index): (&str, usize), e: LoadError) -> PrepareError {
+    PrepareError::Invalid(format!("{entry} {}: {e}", index + 1))
 }
 
 /// The warning for `dropped` primitives of entry `index` (0-based) of kind `entry` whose
@@ -214,7 +265,8 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let camera = Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height)?
         .clipped(c.clip[0], c.clip[1])?;
     let start = Instant::now();
-    let LoadedGeometry { shapes, materials, lods, warnings } = load_geometry_taking(desc, taken)?;
+    let LoadedGeometry { shapes, materials, lods, mut warnings } = load_geometry_taking(desc, taken)?;
+    let lights = lights(desc, &mut warnings)?;
     let load = start.elapsed();
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     // The global switch drops every strand set's level of detail.
@@ -226,18 +278,10 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     );
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
-    let background = desc.contents.lights.iter().map(Light::background).sum();
-    let ambient = desc.contents.lights.iter().map(Light::ambient).sum();
-    let world = World {
-        camera,
-        settings: desc.settings.clone(),
-        lights: desc.contents.lights.clone(),
-        materials,
-        accel,
-        background,
-        ambient,
-        warnings,
-    };
+    let background = lights.iter().map(Light::background).sum();
+    let ambient = lights.iter().map(Light::ambient).sum();
+    let world =
+        World { camera, settings: desc.settings.clone(), lights, materials, accel, background, ambient, warnings };
     Ok((world, PrepareTimes { load, build, build_cpu }))
 }
 

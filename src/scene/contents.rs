@@ -2,7 +2,7 @@
 //! and the demo, with what is done to the lists as a whole: appending another scene's,
 //! moving them, overriding strand widths, validating them.
 
-use super::{FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource};
+use super::{FurEntry, GuideSource, HairEntry, HairSource, HairSystemEntry, LightSource, MeshEntry, MeshSource};
 use crate::error::PrepareError;
 use crate::light::Light;
 use crate::math::Aabb;
@@ -13,7 +13,7 @@ use glam::{Affine3A, Vec3};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Contents {
     /// Lights, in world space.
-    pub lights: Vec<Light>,
+    pub lights: Vec<LightSource>,
     /// Meshes.
     pub meshes: Vec<MeshEntry>,
     /// Strand sets.
@@ -55,13 +55,17 @@ impl Contents {
             e.transform = *m * e.transform;
         }
         for l in &mut self.lights {
-            *l = transform_light(l, m);
+            match l {
+                LightSource::Inline(l) => *l = transform_light(l, m),
+                // Infinitely far, as an inline map below.
+                LightSource::File(f) => f.placement = f.placement.rotated(crate::math::orthogonal_part(m)),
+            }
         }
     }
 
     /// The bounds in world space of the meshes, strand sets and hair-system guides held in
     /// memory (empty when there are none). Entries that name a file are left out:
-    /// [`crate::io::bounds`] reads them and adds theirs.
+    /// `io::bounds` reads them and adds theirs.
     pub fn bounds(&self) -> Aabb {
         let meshes = self.meshes.iter().filter_map(|e| match &e.source {
             MeshSource::Inline(m) => Some(m.bounds_under(&e.transform)),
@@ -81,7 +85,7 @@ impl Contents {
     /// Draws every strand `width` wide: the strand sets held in memory (their points'
     /// radii, with `radius_scale` reset to 1) and the hairs of hair systems (their
     /// `hair_width`). Strand sets named by file are left as they are: read them first
-    /// ([`crate::io::override_hair_width`] does).
+    /// (`io::override_hair_width` does).
     pub fn set_hair_width(&mut self, width: f32) {
         for e in &mut self.hair {
             if let HairSource::Inline(s) = &mut e.source {

@@ -1,16 +1,17 @@
 //! The scene description: what a scene file, an importer or the demo says, before any
-//! file is read. Entries name their geometry by path or carry it inline;
-//! [`crate::prepare`] loads them into a [`crate::world::World`].
+//! file is read. Entries name their geometry, environment maps and textures by path or
+//! carry them inline; [`crate::prepare`] loads them into a [`crate::world::World`].
 
 mod contents;
+mod images;
 
 pub use contents::Contents;
+pub use images::{EnvironmentFile, LightSource, MaterialSource, Projection, RoughnessSource, TexturedFiles};
 
 use crate::accel::lod::LodParams;
 use crate::error::PrepareError;
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::hair_system::{FollicleParams, Guides, HairColors, HairSystem};
-use crate::shading::Material;
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
 use std::path::PathBuf;
@@ -73,7 +74,7 @@ pub struct MeshEntry {
     /// Its geometry.
     pub source: MeshSource,
     /// Its material.
-    pub material: Material,
+    pub material: MaterialSource,
     /// Object-to-world transform.
     pub transform: Affine3A,
 }
@@ -84,7 +85,7 @@ pub struct HairEntry {
     /// Its geometry.
     pub source: HairSource,
     /// Its material.
-    pub material: Material,
+    pub material: MaterialSource,
     /// Object-to-world transform.
     pub transform: Affine3A,
     /// Factor on every strand radius.
@@ -119,7 +120,7 @@ pub struct HairSystemEntry {
     /// The hair-system attributes.
     pub system: HairSystem,
     /// The render hairs' material.
-    pub material: Material,
+    pub material: MaterialSource,
     /// Where per-point colours come from.
     pub colors: HairColors,
     /// Object-to-world transform of file or inline guides (follicles are already in

@@ -487,7 +487,11 @@ impl<'g> Reader<'g> {
         let transform = finite_affine(g, n, &world)?;
         placed.transform(&transform);
         self.meshes.insert(n, (self.out.contents.meshes.len(), placed));
-        self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+        self.out.contents.meshes.push(MeshEntry {
+            source: MeshSource::Inline(mesh),
+            material: material.into(),
+            transform,
+        });
         Ok(())
     }
 
@@ -659,7 +663,7 @@ impl<'g> Reader<'g> {
         self.out.contents.hair_systems.push(HairSystemEntry {
             guides: GuideSource::Inline(Guides { curves, root_uv: Some(root_uv) }),
             system,
-            material,
+            material: material.into(),
             colors: HairColors::System,
             transform: Affine3A::IDENTITY,
             seed: 0,
@@ -750,7 +754,7 @@ impl<'g> Reader<'g> {
             let material = Material::Tube(HairSystem::default().tube());
             self.out.contents.hair.push(HairEntry {
                 source: HairSource::Inline(set),
-                material,
+                material: material.into(),
                 transform: Affine3A::IDENTITY,
                 radius_scale: 1.0,
                 file_colors: true,
@@ -1013,7 +1017,7 @@ impl<'g> Reader<'g> {
                     Light::Quad { corner: corner + edge_v, edge_u, edge_v: -edge_v, radiance }
                 }
             };
-            self.out.contents.lights.push(light);
+            self.out.contents.lights.push(light.into());
         }
         Ok(())
     }

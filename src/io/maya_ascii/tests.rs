@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::fur::{ColorAttr, FurDescription, Scalar};
+use crate::scene::LightSource;
 
 /// A small scene as Maya writes it: a 2 × 1 quad plane with UVs under a moved transform,
 /// a hair system with three follicles (two with stored transforms and start curves of
@@ -154,7 +155,7 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
         (b - a).cross(c - a).normalize().dot(Vec3::Y) > 0.99
             || (b - a).cross(c - a).normalize().dot(Vec3::NEG_Y) > 0.99
     );
-    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.4) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.4) }.into());
 
     // The hair system: three follicles, attributes from the file, the rest node defaults.
     assert_eq!(s.contents.hair_systems.len(), 1);
@@ -202,7 +203,7 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     assert!((c.vfov - vfov).abs() < 1e-3, "{}", c.vfov);
     assert_eq!(s.resolution, Some([320, 240]));
     assert_eq!(s.contents.lights.len(), 1);
-    let Light::Distant { direction, irradiance } = s.contents.lights[0] else { panic!() };
+    let LightSource::Inline(Light::Distant { direction, irradiance }) = s.contents.lights[0] else { panic!() };
     // Rotated −90° about X, the light's −Z points down: it comes from above.
     assert!(close(direction, Vec3::Y), "{direction}");
     assert!(close(irradiance, Vec3::splat(2.0 * PI)));
@@ -273,7 +274,7 @@ fn procedural_meshes_maya_default_material_and_shading_groups() {
     .unwrap();
     let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert!(m.positions.iter().all(|p| (p.length() - 2.0).abs() < 1e-4));
-    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.5, 0.0, 0.0) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.5, 0.0, 0.0) }.into());
 }
 
 /// A point light 4 units above the origin with the given `setAttr`s, and the irradiance it
@@ -284,9 +285,12 @@ fn point_light_irradiance(head: &str, attrs: &str) -> f32 {
          setAttr \".in\" 2;\n{attrs}"
     ))
     .unwrap();
-    let Light::Point { position, .. } = s.contents.lights[0] else { panic!("{:?}", s.contents.lights) };
+    let LightSource::Inline(Light::Point { position, .. }) = s.contents.lights[0] else {
+        panic!("{:?}", s.contents.lights)
+    };
     assert!(close(position, Vec3::new(0.0, 4.0, 0.0)));
-    s.contents.lights[0].sample(Vec3::ZERO, Some(Vec3::Y), (0.5, 0.5)).unwrap().value.x
+    let LightSource::Inline(light) = &s.contents.lights[0] else { panic!() };
+    light.sample(Vec3::ZERO, Some(Vec3::Y), (0.5, 0.5)).unwrap().value.x
 }
 
 #[test]
@@ -303,7 +307,8 @@ fn point_and_spot_lights_decay_as_maya_says_no_decay_by_default() {
     let spot =
         read("createNode transform -n l;\nsetAttr \".t\" -type \"double3\" 0 0 5;\ncreateNode spotLight -n ls -p l;\n")
             .unwrap();
-    let s = spot.contents.lights[0].sample(Vec3::ZERO, Some(Vec3::Z), (0.5, 0.5)).unwrap();
+    let LightSource::Inline(light) = &spot.contents.lights[0] else { panic!() };
+    let s = light.sample(Vec3::ZERO, Some(Vec3::Z), (0.5, 0.5)).unwrap();
     assert!((s.value.x / PI - 1.0).abs() < 1e-5, "{}", s.value.x);
     let e = read("createNode pointLight -n p;\nsetAttr \".de\" 7;\n").unwrap_err().to_string();
     assert!(e.contains("line 1") && e.contains("decay rate 7"), "{e}");
@@ -522,10 +527,10 @@ fn arnolds_sky_dome_is_a_sky_of_its_colour_intensity_and_exposure() {
     let s = dome(
         "\tsetAttr \".sc\" -type \"float3\" 0.5 0.25 1 ;\n\tsetAttr \".intensity\" 2;\n\tsetAttr \".ai_exposure\" 1;\n",
     );
-    assert_eq!(s.contents.lights, vec![Light::Environment { radiance: Vec3::new(2.0, 1.0, 4.0) }]);
+    assert_eq!(s.contents.lights, vec![Light::Environment { radiance: Vec3::new(2.0, 1.0, 4.0) }.into()]);
     assert!(s.warnings.iter().all(|w| !w.contains("aiSkyDomeLight (")), "a node tress reads: {:?}", s.warnings);
     // Node defaults: white at intensity 1.
-    assert_eq!(dome("").contents.lights, vec![Light::Environment { radiance: Vec3::ONE }]);
+    assert_eq!(dome("").contents.lights, vec![Light::Environment { radiance: Vec3::ONE }.into()]);
     // A texture on its colour is said, and the constant colour lights.
     let s = dome("connectAttr \"file1.oc\" \"aiSkyDomeLightShape1.sc\";\n");
     assert_eq!(s.contents.lights.len(), 1);
@@ -552,7 +557,9 @@ fn lights_of_a_file_arnold_renders_light_as_arnold_does() {
     // A directional light: irradiance I under Arnold, π I under Maya's renderer.
     let sun = |head: &str| {
         let s = read(&format!("{head}createNode directionalLight -n d;\n\tsetAttr \".in\" 3;\n")).unwrap();
-        let Light::Distant { irradiance, .. } = s.contents.lights[0] else { panic!("{:?}", s.contents.lights) };
+        let LightSource::Inline(Light::Distant { irradiance, .. }) = s.contents.lights[0] else {
+            panic!("{:?}", s.contents.lights)
+        };
         irradiance.x
     };
     assert!((sun(arnold) - 3.0).abs() < 1e-6 && (sun("") - 3.0 * PI).abs() < 1e-5);
@@ -564,7 +571,7 @@ fn lights_of_a_file_arnold_renders_light_as_arnold_does() {
              createNode aiAreaLight -n qs -p q;\n\tsetAttr \".sc\" -type \"float3\" 1 0.5 0;\n\tsetAttr \".intensity\" 8;\n{attrs}"
         ))
         .unwrap();
-        let Light::Quad { edge_u, edge_v, radiance, .. } = s.contents.lights[0] else {
+        let LightSource::Inline(Light::Quad { edge_u, edge_v, radiance, .. }) = s.contents.lights[0] else {
             panic!("{:?}", s.contents.lights)
         };
         assert!((edge_u.cross(edge_v).length() - 8.0).abs() < 1e-5);

@@ -2,6 +2,7 @@
 //! includes, line-numbered errors (random and mutated input: `tests/hostile.rs`).
 
 use super::*;
+use crate::scene::MaterialSource;
 
 const SCENE: &str = r#"# a small pbrt-v4 hair scene
 LookAt 0 0 5   0 0 0   0 1 0
@@ -38,16 +39,16 @@ fn a_hair_scene_reads_camera_film_lights_curves_and_meshes() {
     let c = s.camera.as_ref().unwrap();
     assert!((c.eye - Vec3::new(0.0, 0.0, 5.0)).length() < 1e-5 && (c.vfov - 30.0).abs() < 1e-5);
     assert_eq!(s.contents.lights.len(), 2);
-    let Light::Distant { direction, irradiance } = s.contents.lights[0] else { panic!() };
+    let LightSource::Inline(Light::Distant { direction, irradiance }) = s.contents.lights[0] else { panic!() };
     assert!((direction - Vec3::Z).length() < 1e-5 && irradiance == Vec3::splat(2.0));
-    assert_eq!(s.contents.lights[1], Light::Environment { radiance: Vec3::new(0.1, 0.2, 0.3) });
+    assert_eq!(s.contents.lights[1], Light::Environment { radiance: Vec3::new(0.1, 0.2, 0.3) }.into());
     assert_eq!((s.contents.hair.len(), s.contents.meshes.len()), (1, 1));
-    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.4, 0.6) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.4, 0.6) }.into());
     let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
     assert_eq!(set.strand_count(), 2);
     // Hair material: the physical model with the file's melanin and roughness, the rest
     // pbrt's defaults.
-    let Material::Physical(h) = &s.contents.hair[0].material else { panic!() };
+    let MaterialSource::Inline(Material::Physical(h)) = &s.contents.hair[0].material else { panic!() };
     let want = HairParams {
         absorption: Absorption::Melanin { eumelanin: 0.3, pheomelanin: 0.0 },
         beta_m: 0.25,
@@ -106,7 +107,7 @@ fn includes_named_materials_and_degree_two_curves() {
     // A quadratic Bézier's midpoint is (P0 + 2 P1 + P2) / 4 = (1, 0.5, 0).
     let mid = set.points[4];
     assert!((Vec3::new(mid[0], mid[1], mid[2]) - Vec3::new(1.0, 0.5, 0.0)).length() < 1e-5, "{mid:?}");
-    let Material::Physical(h) = &s.contents.hair[0].material else { panic!() };
+    let MaterialSource::Inline(Material::Physical(h)) = &s.contents.hair[0].material else { panic!() };
     assert_eq!(h.params().absorption, Absorption::Color(Vec3::new(0.5, 0.4, 0.3)));
     // An include cycle is an error, not a hang.
     std::fs::write(dir.path().join("loop.pbrt"), "Include \"loop.pbrt\"\n").unwrap();
@@ -141,7 +142,7 @@ fn malformed_files_give_line_numbered_errors() {
 fn sigma_a_round_trips_through_the_physical_material() {
     // A σ_a given to pbrt reaches the BSDF unchanged (through Chiang's colour mapping).
     let s = read("Material \"hair\" \"rgb sigma_a\" [0.2 0.5 1.1] \"float beta_n\" 0.4\nShape \"curve\" \"point3 P\" [0 0 0 0 1 0 0 2 0 0 3 0]\n").unwrap();
-    let Material::Physical(h) = &s.contents.hair[0].material else { panic!() };
+    let MaterialSource::Inline(Material::Physical(h)) = &s.contents.hair[0].material else { panic!() };
     let sigma = h.sigma_a(None);
     assert!((sigma - Vec3::new(0.2, 0.5, 1.1)).abs().max_element() < 1e-4, "{sigma}");
 }
@@ -215,7 +216,7 @@ fn film_iso_shutter_and_v3_scale_scale_every_light_as_pbrt_scales_the_image() {
                   LightSource \"point\" \"rgb I\" [4 4 4]\n";
     let at = |head: &str| read(&format!("{head}{lights}")).unwrap().contents.lights;
     let plain = at("");
-    assert_eq!(plain[0], Light::Distant { direction: -Vec3::Z, irradiance: Vec3::new(1.0, 2.0, 3.0) });
+    assert_eq!(plain[0], Light::Distant { direction: -Vec3::Z, irradiance: Vec3::new(1.0, 2.0, 3.0) }.into());
     // Imaging ratio = exposure time × ISO / 100.
     for (head, k) in [
         ("Film \"rgb\" \"float iso\" 400\n", 4.0),
@@ -225,7 +226,7 @@ fn film_iso_shutter_and_v3_scale_scale_every_light_as_pbrt_scales_the_image() {
     ] {
         let scaled = at(head);
         for (a, b) in plain.iter().zip(&scaled) {
-            let (mut a, b) = (a.clone(), b.clone());
+            let (LightSource::Inline(mut a), LightSource::Inline(b)) = (a.clone(), b.clone()) else { panic!() };
             scale_emission(&mut a, k);
             assert_eq!(a, b, "{head}");
         }
@@ -238,15 +239,15 @@ fn film_iso_shutter_and_v3_scale_scale_every_light_as_pbrt_scales_the_image() {
 fn photometric_light_parameters_follow_pbrt_v4() {
     let s =
         read("LightSource \"point\" \"float power\" 100\nLightSource \"distant\" \"float illuminance\" 3\n").unwrap();
-    let Light::Point { intensity, .. } = s.contents.lights[0] else { panic!() };
+    let LightSource::Inline(Light::Point { intensity, .. }) = s.contents.lights[0] else { panic!() };
     assert!((intensity.x - 100.0 / (4.0 * std::f32::consts::PI)).abs() < 1e-4, "{intensity}");
-    let Light::Distant { irradiance, .. } = s.contents.lights[1] else { panic!() };
+    let LightSource::Inline(Light::Distant { irradiance, .. }) = s.contents.lights[1] else { panic!() };
     assert_eq!(irradiance, Vec3::splat(3.0));
 }
 
 fn hair_of(text: &str) -> (HairParams, Vec<String>) {
     let s = read(&format!("{text}\nShape \"curve\" \"point3 P\" [0 0 0 0 1 0 0 2 0 0 3 0]\n")).unwrap();
-    let Material::Physical(h) = &s.contents.hair[0].material else { panic!("{text}") };
+    let MaterialSource::Inline(Material::Physical(h)) = &s.contents.hair[0].material else { panic!("{text}") };
     (*h.params(), s.warnings)
 }
 
@@ -289,7 +290,8 @@ fn diffuse_colours_of_v3_and_v4_materials() {
     let mesh = "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0]\n";
     let material = |m: &str| {
         let s = read(&format!("WorldBegin\n{m}\n{mesh}")).unwrap();
-        (s.contents.meshes[0].material.clone(), s.warnings)
+        let MaterialSource::Inline(m) = s.contents.meshes[0].material.clone() else { panic!("{m}") };
+        (m, s.warnings)
     };
     let rgb = Vec3::new(0.1, 0.5, 0.9);
     for m in [
@@ -362,25 +364,31 @@ fn image_infinite_lights_become_environment_maps_scaled_like_every_light() {
     std::fs::write(&main, "Film \"rgb\" \"float iso\" 200\nWorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.pfm\" \"float scale\" 0.5\n").unwrap();
     let s = read_pbrt(&main).unwrap();
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
-    let [Light::EnvironmentMap(m)] = &s.contents.lights[..] else { panic!("{:?}", s.contents.lights) };
-    // (4, 8, 12) × scale 0.5 × imaging ratio 2, from every direction.
+    // The file is named, for `prepare` to read (tests/environment_files.rs renders such maps).
+    let [LightSource::File(f)] = &s.contents.lights[..] else { panic!("{:?}", s.contents.lights) };
+    assert_eq!((&f.path, f.projection, f.illuminance), (&dir.path().join("sky.pfm"), Projection::EqualArea, None));
+    // Scale 0.5 × imaging ratio 2 on the map's (4, 8, 12), from every direction; the
+    // fallback sky is the light's colour, scaled alike.
+    let tinted = Vec3::new(4.0, 8.0, 12.0) * f.tint;
+    let m = crate::light::EnvironmentMap::placed(1, 1, &tinted.to_array(), f.placement).unwrap();
     for d in [Vec3::X, Vec3::Y, -Vec3::Z, Vec3::new(1.0, -2.0, 3.0).normalize()] {
         assert!((m.radiance(d) - Vec3::new(4.0, 8.0, 12.0)).abs().max_element() < 1e-4, "{d}: {}", m.radiance(d));
     }
-    // A missing map: a white sky, said so, not an error.
+    assert_eq!(f.fallback, Some(Vec3::ONE));
+    // pbrt-v3's `mapname` is latitude-longitude.
     std::fs::write(&main, "WorldBegin\nLightSource \"infinite\" \"string mapname\" \"gone.exr\"\n").unwrap();
     let s = read_pbrt(&main).unwrap();
-    assert_eq!(s.contents.lights, [Light::Environment { radiance: Vec3::ONE }]);
-    assert!(s.warnings.iter().any(|w| w.contains("gone.exr") && w.contains("white sky")), "{:?}", s.warnings);
+    let [LightSource::File(f)] = &s.contents.lights[..] else { panic!("{:?}", s.contents.lights) };
+    assert_eq!((f.projection, f.fallback), (Projection::LatLong, Some(Vec3::ONE)));
 }
 
 #[test]
 fn pbrt_v3_light_scales_are_spectra() {
     // pbrt-v3's bunny-fur scene: `"color scale" [12 12 12]` on an infinite light.
     let s = read("WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5] \"color scale\" [12 6 3]\n").unwrap();
-    assert_eq!(s.contents.lights[0], Light::Environment { radiance: Vec3::new(6.0, 3.0, 1.5) });
+    assert_eq!(s.contents.lights[0], Light::Environment { radiance: Vec3::new(6.0, 3.0, 1.5) }.into());
     let s = read("WorldBegin\nLightSource \"point\" \"float scale\" 2\n").unwrap();
-    let Light::Point { intensity, .. } = s.contents.lights[0] else { panic!() };
+    let LightSource::Inline(Light::Point { intensity, .. }) = s.contents.lights[0] else { panic!() };
     assert_eq!(intensity, Vec3::splat(2.0));
     let e = read("WorldBegin\nLightSource \"point\" \"rgb scale\" [1 2]\n").unwrap_err().to_string();
     assert!(e.contains("line 2") && e.contains("scale"), "{e}");

@@ -9,13 +9,14 @@ use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPla
 use crate::geometry::TriangleMesh;
 use crate::hair_system::ramp::RampValue;
 use crate::hair_system::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
-use crate::io::raster::Encoding;
-use crate::light::Light;
+use crate::light::{Light, MapPlacement};
 use crate::math::Color;
-use crate::scene::{FurEntry, GuideSource, HairSource, HairSystemEntry};
+use crate::scene::{
+    EnvironmentFile, FurEntry, GuideSource, HairSource, HairSystemEntry, LightSource, MaterialSource, Projection,
+    RoughnessSource, TexturedFiles,
+};
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
-use crate::shading::texture::Texture;
-use crate::shading::{tube::Tube, Material, Roughness, Textured};
+use crate::shading::{tube::Tube, Material};
 use glam::{Affine3A, Quat, Vec3};
 use std::path::Path;
 
@@ -84,12 +85,7 @@ pub(super) fn ramp<U: Copy, T: RampValue>(
     Ramp::new(out).map_err(|e| format!("`{name}` {e}"))
 }
 
-pub(super) fn hair_system(
-    h: &HairSystemToml,
-    base: &Path,
-    meshes: usize,
-    textures: &mut Textures,
-) -> Result<HairSystemEntry, String> {
+pub(super) fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Result<HairSystemEntry, String> {
     let mut s = HairSystem::default();
     macro_rules! set {
         ($($field:ident),*) => { $( if let Some(v) = h.$field { s.$field = v; } )* };
@@ -157,8 +153,8 @@ pub(super) fn hair_system(
         _ => return Err("give exactly one of `file` and `follicles`".into()),
     };
     let material = match &h.material {
-        Some(m) => material(m, base, textures)?,
-        None => Material::Tube(s.tube()),
+        Some(m) => material(m, base)?,
+        None => Material::Tube(s.tube()).into(),
     };
     let transform = match &h.transform {
         Some(t) => transform(t)?,
@@ -256,9 +252,9 @@ pub(super) fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
     }
 }
 
-pub(super) fn light(l: &LightToml, base: &Path) -> Result<Light, String> {
+pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
     const ANY: f32 = f32::NEG_INFINITY;
-    Ok(match *l {
+    Ok(LightSource::Inline(match *l {
         LightToml::Distant { direction, irradiance, angular_diameter } => {
             check("direction", &direction, ANY)?;
             check("irradiance", &irradiance, 0.0)?;
@@ -326,51 +322,44 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<Light, String> {
                     }
                     Light::Environment { radiance: Vec3::from(radiance) * scale }
                 }
-                (None, Some(file)) => Light::EnvironmentMap(
-                    crate::io::raster::read_environment(&base.join(file), rotation, scale)
-                        .map_err(|e| e.to_string())?,
-                ),
+                // Read by `prepare`, which reports a file it cannot use.
+                (None, Some(file)) => {
+                    return Ok(LightSource::File(EnvironmentFile {
+                        path: base.join(file),
+                        projection: Projection::LatLong,
+                        tint: Color::ONE,
+                        illuminance: None,
+                        placement: MapPlacement::new(rotation, scale),
+                        fallback: None,
+                    }))
+                }
                 _ => return Err("give exactly one of `radiance` and `file`".into()),
             }
         }
-    })
+    }))
 }
 
-/// Textures decoded so far, by file and encoding: a file that several materials name is
-/// decoded once and its pixels shared.
-pub(super) type Textures = std::collections::HashMap<(std::path::PathBuf, Encoding), Texture>;
-
-pub(super) fn material(m: &MaterialToml, base: &Path, textures: &mut Textures) -> Result<Material, String> {
-    Ok(match *m {
+/// The material a table describes; textures are named by path, for `prepare` to read.
+pub(super) fn material(m: &MaterialToml, base: &Path) -> Result<MaterialSource, String> {
+    Ok(MaterialSource::Inline(match *m {
         MaterialToml::Textured { ref color, tint, ref roughness, specular } => {
             check("tint", &tint, 0.0)?;
-            let mut texture = |file: &Path, encoding| -> Result<Texture, String> {
-                let path = base.join(file);
-                if let Some(t) = textures.get(&(path.clone(), encoding)) {
-                    return Ok(t.clone());
-                }
-                let image = crate::io::raster::read_rgb(&path, encoding).map_err(|e| e.to_string())?;
-                let t = Texture::from_pixels(image.width, image.height, &image.rgb)
-                    .map_err(|m| format!("{}: {m}", path.display()))?;
-                textures.insert((path, encoding), t.clone());
-                Ok(t)
-            };
             let roughness = match roughness {
                 None => None,
                 Some(RoughnessToml::Constant(r)) if r.is_finite() && *r > 0.0 && *r <= 1.0 => {
-                    Some(Roughness::Constant(*r))
+                    Some(RoughnessSource::Constant(*r))
                 }
                 Some(RoughnessToml::Constant(_)) => return Err("`roughness` must be in (0, 1]".into()),
-                Some(RoughnessToml::Map(file)) => Some(Roughness::Map(texture(file, Encoding::Linear)?)),
+                Some(RoughnessToml::Map(file)) => Some(RoughnessSource::Map(base.join(file))),
             };
             let specular = specular.unwrap_or(if roughness.is_some() { 0.04 } else { 0.0 });
             check("specular", &[specular], 0.0)?;
-            Material::Textured(Textured {
-                color: texture(color, Encoding::Srgb)?,
+            return Ok(MaterialSource::Textured(TexturedFiles {
+                color: base.join(color),
                 tint: tint.into(),
                 roughness,
                 specular: Color::splat(specular),
-            })
+            }));
         }
         MaterialToml::Diffuse { color } => {
             check("color", &color, 0.0)?;
@@ -425,7 +414,7 @@ pub(super) fn material(m: &MaterialToml, base: &Path, textures: &mut Textures) -
             params.validate().map_err(|m| format!("physical: {m}"))?;
             Material::Physical(PhysicalHair::new(params))
         }
-    })
+    }))
 }
 
 pub(super) fn transform(t: &TransformToml) -> Result<Affine3A, String> {

@@ -148,7 +148,6 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
     for (i, l) in scene.light.iter().enumerate() {
         contents.lights.push(light(l, base).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
     }
-    let mut textures = convert::Textures::new();
     for (i, m) in scene.mesh.iter().enumerate() {
         let what = |m: String| invalid(format!("mesh {}: {m}", i + 1));
         let source = match (&m.file, &m.shape) {
@@ -158,7 +157,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         };
         contents.meshes.push(MeshEntry {
             source,
-            material: material(&m.material, base, &mut textures).map_err(what)?,
+            material: material(&m.material, base).map_err(what)?,
             transform: transform(&m.transform).map_err(what)?,
         });
     }
@@ -166,7 +165,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         let what = |m: String| invalid(format!("hair {}: {m}", i + 1));
         contents.hair.push(HairEntry {
             source: HairSource::File(base.join(at_frame(&h.file, frame))),
-            material: material(&h.material, base, &mut textures).map_err(what)?,
+            material: material(&h.material, base).map_err(what)?,
             transform: transform(&h.transform).map_err(what)?,
             radius_scale: h.radius_scale,
             file_colors: h.file_colors,
@@ -174,8 +173,8 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         });
     }
     for (i, h) in scene.hair_system.iter().enumerate() {
-        let entry = hair_system(h, base, contents.meshes.len(), &mut textures)
-            .map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
+        let entry =
+            hair_system(h, base, contents.meshes.len()).map_err(|m| invalid(format!("hair_system {}: {m}", i + 1)))?;
         contents.hair_systems.push(entry);
     }
     for (i, f) in scene.fur.iter().enumerate() {

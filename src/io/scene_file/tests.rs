@@ -7,7 +7,7 @@ use crate::film::PixelFilter;
 use crate::fur::{AttractorModel, FurDescription, Placement as FurPlacement};
 use crate::hair_system::{HairColors, HairSystem, Interp, NoiseMethod, Placement};
 use crate::light::Light;
-use crate::scene::GuideSource;
+use crate::scene::{GuideSource, LightSource, MaterialSource};
 use crate::shading::hair_bsdf::{Absorption, HairParams};
 use crate::shading::Material;
 use glam::Vec3;
@@ -52,11 +52,11 @@ material = { type = "tube", diffuse = [0.35, 0.2, 0.1], specular = [0.3, 0.3, 0.
     assert_eq!(d.contents.meshes[0].source, MeshSource::File(PathBuf::from("dir/torus.obj")));
     assert_eq!(d.contents.hair[0].source, HairSource::File(PathBuf::from("dir/hairy_torus.hair")));
     match &d.contents.hair[0].material {
-        Material::Tube(t) => assert_eq!(t.ambient, t.diffuse),
+        MaterialSource::Inline(Material::Tube(t)) => assert_eq!(t.ambient, t.diffuse),
         m => panic!("{m:?}"),
     }
     match d.contents.lights[0] {
-        Light::Distant { direction, .. } => assert!((direction.length() - 1.0).abs() < 1e-6),
+        LightSource::Inline(Light::Distant { direction, .. }) => assert!((direction.length() - 1.0).abs() < 1e-6),
         ref l => panic!("{l:?}"),
     }
 }
@@ -131,7 +131,7 @@ fn reads_a_hair_system_with_follicles_and_ramps() {
     assert_eq!(h.system.hair_color_scale.eval(1.0), Vec3::ONE);
     assert_eq!(h.system.noise_method, NoiseMethod::ClumpUv);
     // No material given: tube shading from the hair-system attributes.
-    assert_eq!(h.material, Material::Tube(h.system.tube()));
+    assert_eq!(h.material, Material::Tube(h.system.tube()).into());
     let d = parse(&format!("{HAIR_SYSTEM}[[hair_system]]\nfile = \"g.hair\"\nfollicles = {{ mesh = 1 }}\n"));
     assert!(d.unwrap_err().to_string().contains("hair_system 2: give exactly one"));
     let d = parse("[[hair_system]]\nfile = \"g.hair\"\ncolors = \"guides\"\ntransform = { scale = 2.0 }\n").unwrap();
@@ -209,7 +209,10 @@ fn lod_tables_take_defaults_and_reject_bad_values() {
 fn every_material_has_defaults() {
     let material = |kind: &str| {
         let d = parse(&format!("[[hair]]\nfile = \"h.hair\"\nmaterial = {{ type = \"{kind}\" }}\n"));
-        d.unwrap_or_else(|e| panic!("{kind}: {e}")).contents.hair[0].material.clone()
+        match d.unwrap_or_else(|e| panic!("{kind}: {e}")).contents.hair[0].material.clone() {
+            MaterialSource::Inline(m) => m,
+            m => panic!("{kind}: {m:?}"),
+        }
     };
     let grey = Material::DEFAULT_COLOR;
     assert_eq!(material("tube"), Material::Tube(crate::shading::tube::Tube::default()));
@@ -228,7 +231,7 @@ fn every_material_has_defaults() {
     assert_eq!(*p.params(), HairParams::default());
     // A tube's ambient colour follows its diffuse colour unless given.
     let d = parse("[[hair]]\nfile = \"h.hair\"\nmaterial = { type = \"tube\", diffuse = [0.2, 0.1, 0.05] }\n");
-    let Material::Tube(t) = &d.unwrap().contents.hair[0].material else { panic!("tube") };
+    let MaterialSource::Inline(Material::Tube(t)) = &d.unwrap().contents.hair[0].material else { panic!("tube") };
     assert_eq!((t.ambient, t.diffuse), (Vec3::new(0.2, 0.1, 0.05), Vec3::new(0.2, 0.1, 0.05)));
     assert_eq!((t.specular, t.specular_power), (Vec3::splat(0.3), 40.0));
 }
@@ -237,7 +240,7 @@ fn every_material_has_defaults() {
 fn physical_hair_material_takes_one_colour_source() {
     let hair = |m: &str| parse(&format!("[[hair]]\nfile = \"h.hair\"\nmaterial = {{ type = \"physical\", {m} }}\n"));
     let params = |m: &str| match &hair(m).unwrap().contents.hair[0].material {
-        Material::Physical(p) => *p.params(),
+        MaterialSource::Inline(Material::Physical(p)) => *p.params(),
         m => panic!("{m:?}"),
     };
     let p = params("eumelanin = 1.3");

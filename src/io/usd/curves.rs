@@ -186,7 +186,14 @@ fn curve_data(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<CurveData> 
 fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> HairEntry {
     let d = constant.unwrap_or(crate::hair_system::HairSystem::default().hair_color);
     let material = Material::Tube(Tube { ambient: d, diffuse: d, ..Tube::default() });
-    HairEntry { source: HairSource::Inline(set), material, transform, radius_scale: 1.0, file_colors: true, lod: None }
+    HairEntry {
+        source: HairSource::Inline(set),
+        material: material.into(),
+        transform,
+        radius_scale: 1.0,
+        file_colors: true,
+        lod: None,
+    }
 }
 
 /// Checks a primvar's length against what its interpolation needs.

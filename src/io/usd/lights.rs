@@ -11,7 +11,7 @@
 //! disk light of radius `radius` is drawn as the square of the same area and emission.
 //!
 //! A dome's `inputs:texture:file` (latitude-longitude, `texture:format` `automatic` or
-//! `latlong`) is an environment map times the emission, oriented as UsdLux specifies after
+//! `latlong`) is an environment map times the emission (read when the scene is prepared), oriented as UsdLux specifies after
 //! OpenEXR's latitude-longitude maps: the top row is +Y, the image's left edge longitude
 //! +π and its right edge −π, longitude 0 along +Z and π/2 along +X. That is tress's map
 //! layout turned 180° about +Y. `DomeLight_1` first turns its pole from +Y to its
@@ -20,7 +20,8 @@
 
 use super::values::{boolean, number, token, value, vec3, Res};
 use super::Notes;
-use crate::light::{EnvironmentMap, Light};
+use crate::light::{Light, MapPlacement};
+use crate::scene::{EnvironmentFile, LightSource, Projection};
 use glam::{Affine3A, Mat3, Vec3};
 use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
@@ -47,7 +48,7 @@ pub fn read_light(
     time: TimeCode,
     z_up: bool,
     notes: &mut Notes,
-) -> Res<Light> {
+) -> Res<LightSource> {
     let num = |name: &str, d: f32| -> Res<f32> {
         let x = number(input(prim, name, time)?, name)?.map_or(d, |x| x as f32);
         anyhow::ensure!(x.is_finite(), "`inputs:{name}` must be finite");
@@ -75,7 +76,7 @@ pub fn read_light(
         anyhow::ensure!(x >= 0.0, "`inputs:{name}` must not be negative");
         Ok(x)
     };
-    Ok(match kind {
+    Ok(LightSource::Inline(match kind {
         "DistantLight" => {
             let direction = transform.transform_vector3(Vec3::Z).normalize_or(Vec3::Y);
             // Irradiance is the emission whatever the angle (as USD's Storm and RenderMan
@@ -101,7 +102,10 @@ pub fn read_light(
             // +Y to +Z: 90° about +X.
             let pole = if pole_z { Mat3::from_rotation_x(0.5 * std::f32::consts::PI) } else { Mat3::IDENTITY };
             match dome_texture(prim, time, emission, notes)? {
-                Some(map) => Light::EnvironmentMap(map.rotated(crate::math::orthogonal_part(transform) * pole)),
+                Some(mut map) => {
+                    map.placement = map.placement.rotated(crate::math::orthogonal_part(transform) * pole);
+                    return Ok(LightSource::File(map));
+                }
                 None => Light::Environment { radiance: emission },
             }
         }
@@ -129,12 +133,13 @@ pub fn read_light(
             let radiance = if normalize && area > 0.0 { emission / area } else { emission };
             Light::Quad { corner, edge_u, edge_v, radiance }
         }
-    })
+    }))
 }
 
 /// A dome's texture as a map in its own frame (before its transform), times `emission`;
-/// `None` when it has none, or one that cannot be used (reported, naming the file).
-fn dome_texture(prim: &Prim, time: TimeCode, emission: Vec3, notes: &mut Notes) -> Res<Option<EnvironmentMap>> {
+/// `None` when it has none or names none that can be found (reported). `prepare` reads the
+/// file; one it cannot use lights the scene with the dome's colour × intensity instead.
+fn dome_texture(prim: &Prim, time: TimeCode, emission: Vec3, notes: &mut Notes) -> Res<Option<EnvironmentFile>> {
     let asset = match input(prim, "texture:file", time)? {
         Some(sdf::Value::AssetPath(a)) if !a.authored_path.is_empty() => a,
         _ => return Ok(None),
@@ -149,19 +154,13 @@ fn dome_texture(prim: &Prim, time: TimeCode, emission: Vec3, notes: &mut Notes) 
         notes.note(what, prim);
         return Ok(None);
     };
-    let map = crate::io::raster::read_rgb(&file, crate::io::raster::Encoding::Srgb).and_then(|mut image| {
-        for px in image.rgb.chunks_exact_mut(3) {
-            px.iter_mut().zip(emission.to_array()).for_each(|(v, e)| *v *= e);
-        }
+    Ok(Some(EnvironmentFile {
+        path: file,
+        projection: Projection::LatLong,
+        tint: emission,
+        illuminance: None,
         // OpenEXR's latitude-longitude layout is tress's turned 180° about +Y.
-        EnvironmentMap::from_pixels(image.width, image.height, &image.rgb, 180.0, 1.0)
-            .map_err(|m| crate::error::LoadError::invalid(&file, m))
-    });
-    match map {
-        Ok(map) => Ok(Some(map)),
-        Err(e) => {
-            notes.note(format!("{e}: the dome is lit by its colour × intensity"), prim);
-            Ok(None)
-        }
-    }
+        placement: MapPlacement::new(180.0, 1.0),
+        fallback: Some(emission),
+    }))
 }

@@ -6,7 +6,7 @@ use crate::accel::Shape;
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::io::ImportOptions;
 use crate::light::Light;
-use crate::scene::HairSource;
+use crate::scene::{HairSource, LightSource, MaterialSource};
 use proptest::prelude::*;
 
 const SCENE: &str = r#"#usda 1.0
@@ -80,7 +80,7 @@ fn basis_curves_and_meshes_import_with_widths_and_colours() {
     assert!(first.length() < 1e-5 && (last - Vec3::new(0.0, 3.0, 0.0)).length() < 1e-5, "{first} {last}");
     // Widths follow the basis with the same phantoms: 0.2 at the root, 0 at the tip.
     assert!((c.points[0][3] - 0.1).abs() < 1e-6 && c.points[c.points.len() - 1][3].abs() < 1e-6);
-    let Material::Tube(t) = &s.contents.hair[0].material else { panic!() };
+    let MaterialSource::Inline(Material::Tube(t)) = &s.contents.hair[0].material else { panic!() };
     assert_eq!(t.diffuse, Vec3::new(0.6, 0.4, 0.2));
     assert!(c.colors.is_none());
     // The prim's parent moves it up by one.
@@ -95,8 +95,8 @@ fn basis_curves_and_meshes_import_with_widths_and_colours() {
     let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert_eq!((m.positions.len(), m.indices.len()), (4, 2));
     assert_eq!(m.uvs.as_ref().unwrap()[2], [1.0, 1.0]);
-    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.3) });
-    assert_eq!(s.contents.lights[0], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::splat(0.3) }.into());
+    assert_eq!(s.contents.lights[0], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) }.into());
 }
 
 #[test]
@@ -137,7 +137,7 @@ fn export_then_import_keeps_points_widths_and_colours() {
     for (a, b) in m.indices.iter().zip(&mesh.indices) {
         assert_eq!(a.map(|i| m.positions[i as usize]), b.map(|i| mesh.positions[i as usize]));
     }
-    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.3, 0.4) });
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.3, 0.4) }.into());
 }
 
 #[test]
@@ -380,28 +380,28 @@ def DomeLight "Sky" { float inputs:intensity = 0.5 asset inputs:texture:file = @
 "#;
     let s = read_body(body);
     assert_eq!(s.contents.lights.len(), 6);
-    let Light::Quad { corner, edge_u, edge_v, radiance } = s.contents.lights[0] else {
+    let LightSource::Inline(Light::Quad { corner, edge_u, edge_v, radiance }) = s.contents.lights[0] else {
         panic!("{:?}", s.contents.lights[0])
     };
     // Normalized: the emission over the area (2); turned to face down from y = 5.
     assert!((radiance - Vec3::splat(1.5)).length() < 1e-6);
     assert!((edge_u.cross(edge_v).normalize() - Vec3::NEG_Y).length() < 1e-5, "{}", edge_u.cross(edge_v));
     assert!((corner + 0.5 * (edge_u + edge_v) - Vec3::new(0.0, 5.0, 0.0)).length() < 1e-5);
-    let Light::Quad { edge_u, edge_v, radiance, .. } = s.contents.lights[1] else { panic!() };
+    let LightSource::Inline(Light::Quad { edge_u, edge_v, radiance, .. }) = s.contents.lights[1] else { panic!() };
     // A disk of radius 0.5 as a square of the same area, 4 × 2^1 bright.
     assert!((edge_u.cross(edge_v).length() - std::f32::consts::PI * 0.25).abs() < 1e-5);
     assert_eq!(radiance, Vec3::splat(8.0));
-    let Light::Sphere { radius, radiance, .. } = s.contents.lights[2] else { panic!() };
+    let LightSource::Inline(Light::Sphere { radius, radiance, .. }) = s.contents.lights[2] else { panic!() };
     assert_eq!(radius, 0.5);
     assert!((radiance * std::f32::consts::PI - Vec3::new(10.0, 5.0, 2.5)).length() < 1e-4, "{radiance}");
     // A 2° sun: its irradiance (radiance × solid angle) is the intensity.
-    let Light::Sun { radiance, cos_max, .. } = s.contents.lights[3] else { panic!() };
+    let LightSource::Inline(Light::Sun { radiance, cos_max, .. }) = s.contents.lights[3] else { panic!() };
     assert!((cos_max - 1f32.to_radians().cos()).abs() < 1e-7);
     let irradiance = radiance * std::f32::consts::TAU * (1.0 - cos_max);
     assert!((irradiance - Vec3::splat(5.0)).length() < 1e-3, "{irradiance}");
     // A delta light, with an attribute spelled as before `inputs:`.
-    assert_eq!(s.contents.lights[4], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) });
-    assert_eq!(s.contents.lights[5], Light::Environment { radiance: Vec3::splat(0.5) });
+    assert_eq!(s.contents.lights[4], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) }.into());
+    assert_eq!(s.contents.lights[5], Light::Environment { radiance: Vec3::splat(0.5) }.into());
     // Its texture is missing: lit by its colour, said so with the file's name.
     assert!(s.warnings.iter().any(|w| w.contains("dome texture `sky.exr` is missing")), "{:?}", s.warnings);
 }
@@ -502,9 +502,9 @@ def Cube "Grey" {}
     assert_eq!(
         colors,
         vec![
-            Material::Diffuse { color: Vec3::new(0.8, 0.1, 0.1) },
-            Material::Diffuse { color: Vec3::new(0.0, 0.0, 1.0) },
-            Material::Diffuse { color: Vec3::splat(0.5) },
+            Material::Diffuse { color: Vec3::new(0.8, 0.1, 0.1) }.into(),
+            Material::Diffuse { color: Vec3::new(0.0, 0.0, 1.0) }.into(),
+            Material::Diffuse { color: Vec3::splat(0.5) }.into(),
         ]
     );
 }

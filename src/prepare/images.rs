@@ -1,5 +1,5 @@
 //! Raster images read as linear RGB floats: environment maps (OpenEXR, Radiance `.hdr`,
-//! PFM) and mesh textures (PNG, JPEG and the same high-dynamic-range formats).
+//! PFM) and textures (PNG, JPEG and the same high-dynamic-range formats).
 //!
 //! Eight-bit images (PNG, JPEG) hold sRGB-encoded colour: decoded to linear light for
 //! colours ([`Encoding::Srgb`]), or read as they are for data such as roughness
@@ -7,10 +7,11 @@
 //! must announce at most [`MAX_PIXELS`] pixels, and no more than the file's length can
 //! hold, so a forged header cannot make a reader allocate unbounded memory.
 
-use super::LoadError;
-use crate::light::EnvironmentMap;
+use crate::error::LoadError;
+use crate::film::{guarded_exr as guarded, MAX_EXPANSION};
+use crate::shading::texture::Texture;
 use std::io::Cursor;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Most pixels an image may have (a 16k x 8k environment map).
 pub const MAX_PIXELS: u64 = crate::light::MAX_ENVIRONMENT_PIXELS;
@@ -35,12 +36,22 @@ pub struct RgbImage {
     pub rgb: Vec<f32>,
 }
 
-/// Reads an equirectangular environment map (`.exr`, `.hdr`, `.pfm`, or an 8-bit `.png` /
-/// `.jpg` taken as sRGB) turned by `rotation` degrees about +y and scaled by `intensity`.
-pub fn read_environment(path: &Path, rotation: f32, intensity: f32) -> Result<EnvironmentMap, LoadError> {
-    let image = read_rgb(path, Encoding::Srgb)?;
-    EnvironmentMap::from_pixels(image.width, image.height, &image.rgb, rotation, intensity)
-        .map_err(|m| LoadError::invalid(path, m))
+/// Textures decoded so far, by file and encoding: a file that several materials name is
+/// decoded once and its pixels shared.
+#[derive(Default)]
+pub struct Textures(std::collections::HashMap<(PathBuf, Encoding), Texture>);
+
+impl Textures {
+    /// The texture of the image at `path` read with `encoding`, decoded on first use.
+    pub fn get(&mut self, path: &Path, encoding: Encoding) -> Result<Texture, LoadError> {
+        if let Some(t) = self.0.get(&(path.to_path_buf(), encoding)) {
+            return Ok(t.clone());
+        }
+        let image = read_rgb(path, encoding)?;
+        let t = Texture::from_pixels(image.width, image.height, &image.rgb).map_err(|m| LoadError::invalid(path, m))?;
+        self.0.insert((path.to_path_buf(), encoding), t.clone());
+        Ok(t)
+    }
 }
 
 /// Reads an image as linear RGB, choosing the decoder by the file's extension.
@@ -85,10 +96,6 @@ fn check_size(
     Ok(())
 }
 
-/// Upper bound on how many bytes deflate-style compression expands one byte into (its best
-/// ratio is about 1032:1), with room for headers.
-const MAX_EXPANSION: u64 = 1100;
-
 fn decode_exr(bytes: &[u8], path: &Path) -> Result<RgbImage, LoadError> {
     use exr::prelude::{ReadChannels, ReadLayers, ReadSpecificChannel};
     let meta = guarded(path, || exr::meta::MetaData::read_from_buffered(Cursor::new(bytes), false))?;
@@ -129,15 +136,6 @@ fn decode_exr(bytes: &[u8], path: &Path) -> Result<RgbImage, LoadError> {
     })?;
     let size = image.layer_data.size;
     Ok(RgbImage { width: size.0 as u32, height: size.1 as u32, rgb: image.layer_data.channel_data.pixels.1 })
-}
-
-/// Runs the exr crate on untrusted bytes; a panic in it becomes an error too.
-fn guarded<T>(path: &Path, f: impl FnOnce() -> exr::error::Result<T>) -> Result<T, LoadError> {
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
-        Ok(Ok(v)) => Ok(v),
-        Ok(Err(e)) => Err(LoadError::format(path, format!("not a readable exr file: {e}"))),
-        Err(_) => Err(LoadError::format(path, "not a readable exr file: the decoder failed on it")),
-    }
 }
 
 /// Radiance `.hdr`, PNG and JPEG through the `image` crate, with its decoder limits set to
@@ -265,6 +263,19 @@ fn decode_pfm(bytes: &[u8], path: &Path) -> Result<RgbImage, LoadError> {
 mod tests {
     use super::*;
 
+    /// `path` read as a latitude-longitude environment map.
+    fn read_environment(path: &Path) -> Result<crate::light::EnvironmentMap, LoadError> {
+        let file = crate::scene::EnvironmentFile {
+            path: path.to_path_buf(),
+            projection: crate::scene::Projection::LatLong,
+            tint: glam::Vec3::ONE,
+            illuminance: None,
+            placement: crate::light::MapPlacement::new(0.0, 1.0),
+            fallback: None,
+        };
+        super::super::environment::read(&file).map(|(map, _)| map)
+    }
+
     fn pfm(w: u32, h: u32, values: &[f32]) -> Vec<u8> {
         let mut bytes = format!("PF\n{w} {h}\n-1.0\n").into_bytes();
         values.iter().for_each(|v| bytes.extend_from_slice(&v.to_le_bytes()));
@@ -320,7 +331,7 @@ mod tests {
         let case = |name: &str, bytes: &[u8], expected: &str| {
             let path = dir.path().join(name);
             std::fs::write(&path, bytes).unwrap();
-            let e = read_environment(&path, 0.0, 1.0).unwrap_err().to_string();
+            let e = read_environment(&path).unwrap_err().to_string();
             assert!(e.starts_with(&path.display().to_string()) && e.contains(expected), "{name}: {e}");
         };
         case("garbage.exr", b"not an exr", "not a readable exr file");
@@ -341,12 +352,12 @@ mod tests {
         );
         use exr::prelude::WritableImage;
         exr::prelude::Image::from_layer(layer).write().to_file(&grey).unwrap();
-        let e = read_environment(&grey, 0.0, 1.0).unwrap_err().to_string();
+        let e = read_environment(&grey).unwrap_err().to_string();
         assert!(e.contains("grey.exr") && e.contains("needs R, G and B"), "{e}");
         let missing = dir.path().join("missing.exr");
-        let e = read_environment(&missing, 0.0, 1.0).unwrap_err().to_string();
+        let e = read_environment(&missing).unwrap_err().to_string();
         assert!(e.contains("missing.exr: could not open the file"), "{e}");
-        let e = read_environment(dir.path(), 0.0, 1.0).unwrap_err().to_string();
+        let e = read_environment(dir.path()).unwrap_err().to_string();
         assert!(e.contains("not a regular file"), "{e}");
     }
 }

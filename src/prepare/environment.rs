@@ -1,90 +1,73 @@
-//! pbrt's image infinite lights as tress environment maps.
+//! Environment maps read from the image files a description names ([`EnvironmentFile`]):
+//! decoded, resampled when the image is an equal-area square, tinted, scaled and placed.
 //!
-//! **pbrt-v3** (`mapname`) reads its map as a latitude-longitude image in the light's frame,
-//! +z up: the pixel at (s, t) in the unit square (t = 0 the top row) is the radiance from
-//! the direction (sin θ cos φ, sin θ sin φ, cos θ) with φ = 2π s, θ = π t (Pharr, Jakob and
-//! Humphreys, *Physically Based Rendering*, 3rd ed., §12.6 "Infinite Area Lights").
-//!
-//! **pbrt-v4** (`filename`) reads a square image in Clarberg's equal-area octahedral
-//! mapping of the sphere (Pharr, Jakob and Humphreys, 4th ed., §3.8.3 "Equal-Area
-//! Mapping"; P. Clarberg, "Fast Equal-Area Mapping of the (Hemi)Sphere using SIMD", Journal
-//! of Graphics Tools 13(3), 2008): every pixel subtends the same solid angle. It is
-//! resampled to a latitude-longitude image of the v3 layout, twice as wide as high, so both
-//! versions give the same kind of map.
-//!
-//! tress's environment maps ([`crate::light::EnvironmentMap`]) have +y up, the image's
-//! centre column along −z and the column a quarter to its right along +x. A direction
-//! (x, y, z) of pbrt's light frame is (−y, z, x) in the map's frame at the same pixel, an
-//! orthogonal change of axes (with a reflection: pbrt's φ turns counter-clockwise about +z,
-//! tress's columns clockwise about +y), handed to the map as part of its orientation, so
-//! latitude-longitude maps are not resampled.
+//! The equal-area square is Clarberg's octahedral mapping of the sphere (Pharr, Jakob and
+//! Humphreys, *Physically Based Rendering*, 4th ed., §3.8.3 "Equal-Area Mapping";
+//! P. Clarberg, "Fast Equal-Area Mapping of the (Hemi)Sphere using SIMD", Journal of
+//! Graphics Tools 13(3), 2008): every pixel subtends the same solid angle. It is resampled
+//! to a latitude-longitude image twice as wide as high, whose pixel at (s, t) in the unit
+//! square (t = 0 the top row) is the radiance from the direction
+//! (sin θ cos φ, sin θ sin φ, cos θ) of the square's frame with φ = 2π s, θ = π t (the
+//! layout of pbrt-v3's maps, 3rd ed., §12.6 "Infinite Area Lights").
 
-use crate::io::raster::RgbImage;
+use super::images::{read_rgb, Encoding, RgbImage};
+use crate::error::LoadError;
 use crate::light::EnvironmentMap;
-use glam::{Mat3, Vec3};
+use crate::math::Color;
+use crate::scene::{EnvironmentFile, Projection};
+use glam::Vec3;
 use std::f32::consts::PI;
-
-/// How a map's pixels cover the sphere.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Projection {
-    /// pbrt-v4's equal-area octahedral square.
-    EqualArea,
-    /// pbrt-v3's latitude-longitude image.
-    LatLong,
-}
 
 /// Longest side of the latitude-longitude image an equal-area map is resampled to (its
 /// width; the height is half of it), within the environment map's pixel limit.
 const MAX_RESAMPLED_HEIGHT: u32 = 8192;
 
-/// The map of a pbrt image infinite light: `image` read as `projection`, multiplied by
-/// `scale` (the light's `L` × `scale`) and, with pbrt-v4's `illuminance`, by the factor
-/// that makes the upper hemisphere (+z of the light's frame) give that illuminance, as pbrt
-/// does; oriented by `light_to_world`, the orthogonal part of the light's transform. A v4
-/// map that is not square is read as latitude-longitude, which the returned note says.
-pub fn environment_map(
-    image: &RgbImage,
-    projection: Projection,
-    scale: Vec3,
-    illuminance: Option<f32>,
-    light_to_world: Mat3,
-) -> Result<(EnvironmentMap, Option<String>), String> {
-    let (mut latlong, note) = match projection {
-        Projection::EqualArea if image.width == image.height => (resample_equal_area(image), None),
-        Projection::EqualArea => (
-            image.clone(),
-            Some(format!(
+/// The map of `file` (its pixels taken as sRGB when 8-bit), and a warning when its
+/// projection cannot be followed (an equal-area map that is not square, read as
+/// latitude-longitude). Errors name the file.
+pub fn read(file: &EnvironmentFile) -> Result<(EnvironmentMap, Option<String>), LoadError> {
+    let image = read_rgb(&file.path, Encoding::Srgb)?;
+    let (map, note) = from_image(image, file).map_err(|m| LoadError::invalid(&file.path, m))?;
+    Ok((map, note.map(|n| format!("{}: {n}", file.path.display()))))
+}
+
+/// The map of `file` from its decoded `image`: resampled as its projection says,
+/// multiplied by the tint and, with an illuminance, by the factor that makes the upper
+/// hemisphere give it, as pbrt-v4 does; placed as the file says.
+fn from_image(image: RgbImage, file: &EnvironmentFile) -> Result<(EnvironmentMap, Option<String>), String> {
+    let (mut latlong, note) = match file.projection {
+        Projection::EqualArea if image.width == image.height => (resample_equal_area(&image), None),
+        Projection::EqualArea => {
+            let note = format!(
                 "a pbrt-v4 image light's map is a square in the equal-area mapping; this one is {}x{}, read as \
                  latitude-longitude",
                 image.width, image.height
-            )),
-        ),
-        Projection::LatLong => (image.clone(), None),
+            );
+            (image, Some(note))
+        }
+        Projection::LatLong => (image, None),
     };
-    let k = match illuminance {
+    let k = match file.illuminance {
         Some(e) => match upper_hemisphere_illuminance(&latlong) {
             up if up > 0.0 => e / up,
             _ => return Err("the map is black over its upper hemisphere: no scale gives it an illuminance".into()),
         },
         None => 1.0,
     };
-    let scale = scale * k;
-    for px in latlong.rgb.chunks_exact_mut(3) {
-        px[0] *= scale.x;
-        px[1] *= scale.y;
-        px[2] *= scale.z;
+    let tint = file.tint * k;
+    if tint != Color::ONE {
+        for px in latlong.rgb.chunks_exact_mut(3) {
+            px[0] *= tint.x;
+            px[1] *= tint.y;
+            px[2] *= tint.z;
+        }
     }
-    let map = EnvironmentMap::from_pixels(latlong.width, latlong.height, &latlong.rgb, 0.0, 1.0)?;
-    Ok((map.rotated(light_to_world * pbrt_to_map().transpose()), note))
+    let map = EnvironmentMap::placed(latlong.width, latlong.height, &latlong.rgb, file.placement)?;
+    Ok((map, note))
 }
 
-/// The change of axes from pbrt's light frame to tress's map frame: (x, y, z) ↦ (−y, z, x).
-fn pbrt_to_map() -> Mat3 {
-    Mat3::from_cols(Vec3::Z, -Vec3::X, Vec3::Y)
-}
-
-/// The illuminance a latitude-longitude map in pbrt's layout gives a surface facing its
-/// +z pole (the upper hemisphere's ∫ Y cos θ dω), which pbrt-v4's `illuminance` parameter
+/// The illuminance a latitude-longitude map gives a surface facing its pole (the top row;
+/// +z of pbrt's layout) (the upper hemisphere's ∫ Y cos θ dω), which pbrt-v4's `illuminance` parameter
 /// sets. Pixel (i, j) spans dω = (2π / w)(π / h) sin θ.
 fn upper_hemisphere_illuminance(image: &RgbImage) -> f32 {
     let (w, h) = (image.width as usize, image.height as usize);
@@ -159,6 +142,29 @@ fn resample_equal_area(square: &RgbImage) -> RgbImage {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::light::MapPlacement;
+    use glam::Mat3;
+
+    /// The map of a pbrt image light of colour `tint` whose light frame is turned by
+    /// `light_to_world`.
+    fn environment_map(
+        image: &RgbImage,
+        projection: Projection,
+        tint: Vec3,
+        illuminance: Option<f32>,
+        light_to_world: Mat3,
+    ) -> Result<(EnvironmentMap, Option<String>), String> {
+        let turn = light_to_world * crate::io::pbrt::pbrt_to_map().transpose();
+        let file = EnvironmentFile {
+            path: "map.exr".into(),
+            projection,
+            tint,
+            illuminance,
+            placement: MapPlacement::new(0.0, 1.0).rotated(turn),
+            fallback: None,
+        };
+        from_image(image.clone(), &file)
+    }
 
     /// The inverse mapping, from PBR 4th ed. §3.8.3: with u, v in [−1, 1], the signed
     /// distance 1 − |u| − |v| to the diamond's edge gives r and the hemisphere, and
