@@ -14,10 +14,11 @@
 //!   in its rest pose, from the shape its deformers start from (the intermediate `…Orig`).
 //! - **nurbsCurve**: the `.cc` block (degree, spans, form, rational, knots, CVs), sampled
 //!   by de Boor's algorithm at its knots and [`SAMPLES_PER_SPAN`] points per span. A
-//!   follicle's start curve is a guide of its hair system; other open curves are drawn as
-//!   hairs as wide as the file's first hair system draws its hairs (`hairWidth`), or,
-//!   without one, [`RELATIVE_WIDTH`] of the scene's size (reported); closed curves (rig
-//!   controls) are skipped.
+//!   follicle's start curve is a guide of its hair system; other curves are drawn as hairs
+//!   as wide as Arnold draws them (`aiCurveWidth`, the `aiCurveCollector`'s, MtoA's default
+//!   for a curve marked `aiRenderCurve`), else as the file's first hair system draws its
+//!   hairs (`hairWidth`), or, without one, [`RELATIVE_WIDTH`] of the scene's size
+//!   (reported); closed curves Arnold is not told to render (rig controls) are skipped.
 //! - **hairSystem** with its **follicles** (`follicle.oha → hairSystem.ih[i]`): the render
 //!   attributes of spec section 5 by short or long name, ramps included, and one guide per
 //!   follicle with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
@@ -70,6 +71,8 @@ const PROCEDURAL_MESHES: &[&str] = &["polySphere", "polyPlane", "polyTorus"];
 /// from to the deformed one: a shape's `inMesh` and `create`, a deformer's
 /// `input[i].inputGeometry`, `groupParts.inputGeometry`.
 const GEOMETRY_INPUTS: &[&str] = &["i", "inMesh", "cr", "create", "ig", "inputGeometry"];
+/// MtoA's default `aiCurveWidth`, in centimetres.
+const ARNOLD_CURVE_WIDTH: f64 = 0.01;
 /// Linear pieces per span when sampling a curve of degree 2 or more.
 pub const SAMPLES_PER_SPAN: usize = 8;
 /// Most control points one curve may have.
@@ -106,7 +109,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 44] = [
+const KNOWN: [&str; 45] = [
     "transform",
     "mesh",
     "nurbsCurve",
@@ -120,6 +123,7 @@ const KNOWN: [&str; 44] = [
     "areaLight",
     "aiSkyDomeLight",
     "aiAreaLight",
+    "aiCurveCollector",
     "FurDescription",
     "FurFeedback",
     "FurGlobals",
@@ -170,6 +174,8 @@ struct Reader<'g> {
     /// Shapes drawn in their rest pose (their deformers not evaluated), and the node types
     /// their deformation passes through.
     rest_posed: (std::collections::BTreeSet<usize>, std::collections::BTreeSet<String>),
+    /// Arnold curve collector shapes, by the transform holding them.
+    collectors: HashMap<usize, usize>,
 }
 
 impl<'g> Reader<'g> {
@@ -183,6 +189,7 @@ impl<'g> Reader<'g> {
             wanted_camera: None,
             off_uv: None,
             rest_posed: Default::default(),
+            collectors: HashMap::new(),
         }
     }
 
@@ -423,8 +430,12 @@ impl<'g> Reader<'g> {
         while let Some(c) = queue.pop_front() {
             if c != n {
                 if stores(self, c) {
-                    self.rest_posed.0.insert(n);
-                    self.rest_posed.1.extend(passed);
+                    // `groupParts` passes the geometry on as it is: not a deformation.
+                    passed.remove("groupParts");
+                    if !passed.is_empty() {
+                        self.rest_posed.0.insert(n);
+                        self.rest_posed.1.extend(passed);
+                    }
                     return Some(c);
                 }
                 passed.insert(self.kind(c).to_string());
@@ -706,8 +717,41 @@ impl<'g> Reader<'g> {
         Ok(Some(points))
     }
 
+    /// The width Arnold draws a free curve with, in the file's unit: its own
+    /// `aiCurveWidth` (`cwdth`), else that of the `aiCurveCollector` it is under, else MtoA's
+    /// default [`ARNOLD_CURVE_WIDTH`] for a curve marked for Arnold (`aiRenderCurve`,
+    /// `rcurve`) or collected; `None` for a curve Arnold is not told about. MtoA takes the
+    /// width in centimetres, Maya's internal unit.
+    fn arnold_curve_width(&self, n: usize) -> Res<Option<f32>> {
+        let g = self.g;
+        let names = ["cwdth", "ai_curve_width", "aiCurveWidth"];
+        let cm = |w: f64| Some((w / g.centimeters_per_unit) as f32);
+        if attr(g, n, &names).is_some() {
+            return Ok(cm(scalar(g, n, &names, ARNOLD_CURVE_WIDTH)?));
+        }
+        // Up the DAG, to a transform holding a curve collector shape (at most as deep as
+        // the file has nodes: a parent cycle is an error elsewhere).
+        let mut cur = g.parent(n);
+        for _ in 0..g.nodes.len() {
+            let Some(p) = cur else { break };
+            if let Some(&c) = self.collectors.get(&p) {
+                return Ok(cm(scalar(g, c, &names, ARNOLD_CURVE_WIDTH)?));
+            }
+            cur = g.parent(p);
+        }
+        let render_curve = scalar(g, n, &["rcurve", "ai_render_curve", "aiRenderCurve"], 0.0)? != 0.0;
+        Ok(if render_curve { cm(ARNOLD_CURVE_WIDTH) } else { None })
+    }
+
     fn free_curves(&mut self, used: &[bool]) -> Res<()> {
+        let g = self.g;
+        self.collectors = (0..g.nodes.len())
+            .filter(|&c| g.nodes[c].kind == "aiCurveCollector")
+            .filter_map(|c| Some((g.parent(c)?, c)))
+            .collect();
         let mut set = StrandSet::new();
+        // Each strand's width when Arnold gives it one.
+        let mut widths: Vec<Option<f32>> = Vec::new();
         let mut closed = 0;
         for n in self.of_kind("nurbsCurve").collect::<Vec<_>>() {
             if used[n] || self.hidden(n)? {
@@ -717,15 +761,19 @@ impl<'g> Reader<'g> {
                 Some(Value::Curve(w)) => w.get(2).copied().unwrap_or(0.0),
                 _ => continue,
             };
-            if form != 0.0 {
+            let width = self.arnold_curve_width(n)?;
+            // A closed curve is a rig control, unless Arnold is told to render it.
+            if form != 0.0 && width.is_none() {
                 closed += 1;
                 continue;
             }
             if let Some(p) = self.curve_points(n)? {
                 set.push_strand(p.into_iter().map(|q| (q, 0.0)));
+                widths.push(width);
             }
         }
-        if set.strand_count() > 0 {
+        let unset = widths.iter().filter(|w| w.is_none()).count();
+        if unset > 0 {
             let system = self.of_kind("hairSystem").next().map(|n| hair_attributes(self.g, n)).transpose()?;
             let width = match system {
                 Some(h) => h.hair_width * h.hair_width_scale.eval(0.0),
@@ -736,16 +784,18 @@ impl<'g> Reader<'g> {
                     }
                     let w = relative_width(&b);
                     self.out.warnings.push(format!(
-                        "{} curve(s) outside hair systems have no width: drawn {w:.3e} wide ({} of the scene's size)",
-                        set.strand_count(),
+                        "{unset} curve(s) outside hair systems have no width: drawn {w:.3e} wide ({} of the scene's size)",
                         RELATIVE_WIDTH
                     ));
                     w
                 }
             };
-            for p in &mut set.points {
-                p[3] = 0.5 * width;
-            }
+            widths.iter_mut().for_each(|w| *w = Some(w.unwrap_or(width)));
+        }
+        for (i, w) in widths.iter().enumerate() {
+            let r = 0.5 * w.unwrap_or_default();
+            let (a, b) = (set.offsets[i] as usize, set.offsets[i + 1] as usize);
+            set.points[a..b].iter_mut().for_each(|p| p[3] = r);
         }
         if closed > 0 {
             self.out.warnings.push(format!("skipped {closed} closed or periodic curve(s) (rig controls, not hair)"));

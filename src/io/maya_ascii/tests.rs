@@ -581,3 +581,51 @@ fn lights_of_a_file_arnold_renders_light_as_arnold_does() {
     assert!((quad("\tsetAttr \".ai_exposure\" 1;\n") - Vec3::new(16.0, 8.0, 0.0) / area_cm2).length() < 1e-9);
     assert_eq!(quad("\tsetAttr \".ai_normalize\" 0;\n"), Vec3::new(8.0, 4.0, 0.0));
 }
+
+#[test]
+fn curves_arnold_renders_take_arnolds_width() {
+    let open = |name: &str, parent: &str, attrs: &str| {
+        format!(
+            "createNode transform -n {name} {parent};\ncreateNode nurbsCurve -n {name}s -p {name};\n{attrs}\
+             setAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 30 0;\n"
+        )
+    };
+    let closed = |name: &str, attrs: &str| {
+        format!(
+            "createNode transform -n {name};\ncreateNode nurbsCurve -n {name}s -p {name};\n{attrs}\
+             setAttr \".cc\" -type \"nurbsCurve\" 1 3 1 no 3 4 0 1 2 3 4 0 0 0 1 0 0 1 1 0 0 0 0;\n"
+        )
+    };
+    let text = |unit: &str| {
+        [
+            format!("currentUnit -l {unit};\n"),
+            open("own", "", "setAttr \".cwdth\" 0.5;\n"),
+            "createNode transform -n col;\ncreateNode aiCurveCollector -n cols -p col;\nsetAttr \".aiCurveWidth\" 0.2;\n\
+             createNode transform -n grp -p col;\n"
+                .to_string(),
+            open("collected", "-p grp", ""),
+            open("marked", "", "setAttr \".rcurve\" yes;\n"),
+            open("plain", "", ""),
+            closed("ring", "setAttr \".rcurve\" yes;\n"),
+            closed("control", ""),
+        ]
+        .concat()
+    };
+    let radii = |s: &Imported| {
+        let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
+        (0..set.strand_count()).map(|i| set.points[set.offsets[i] as usize][3]).collect::<Vec<_>>()
+    };
+    let s = read(&text("centimeter")).unwrap();
+    let r = radii(&s);
+    // Own width 0.5, the collector's 0.2, MtoA's default 0.01, a thousandth of the scene (30
+    // units tall) for the plain curve, and the closed render curve at 0.01.
+    let want = [0.25, 0.1, 0.005, 0.5 * 0.03, 0.005];
+    assert_eq!(r.len(), want.len(), "{r:?}");
+    assert!(r.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-3 * b), "{r:?}");
+    assert!(s.warnings.iter().any(|w| w.starts_with("1 curve(s) outside hair systems")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("skipped 1 closed")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().all(|w| !w.contains("aiCurveCollector")), "a node tress reads: {:?}", s.warnings);
+    // MtoA's widths are centimetres whatever the file's unit.
+    let r = radii(&read(&text("meter")).unwrap());
+    assert!((r[0] - 0.0025).abs() < 1e-8 && (r[1] - 0.001).abs() < 1e-8, "{r:?}");
+}
