@@ -457,7 +457,9 @@ impl Parser {
                 false => format!("{} {}", q.ty, q.name),
             };
             let key = (format!("{directive} \"{kind}\""), decl);
-            self.unused.entry(key).or_insert_with(|| (self.file_name.clone(), q.line, 0)).2 += 1;
+            // An included file is named; the file read is named by every warning already.
+            let file = if self.chain.len() > 1 { self.file_name.clone() } else { String::new() };
+            self.unused.entry(key).or_insert_with(|| (file, q.line, 0)).2 += 1;
         }
     }
 
@@ -961,7 +963,11 @@ impl Parser {
                 1 => String::new(),
                 n => format!(" (and {} more times)", n - 1),
             };
-            self.warnings.insert(format!("{file}: line {line}: {directive}: parameter \"{decl}\" is not used{more}"));
+            let at = match file.is_empty() {
+                true => format!("line {line}"),
+                false => format!("{file}: line {line}"),
+            };
+            self.warnings.insert(format!("{at}: {directive}: parameter \"{decl}\" is not used{more}"));
         }
         for (m, set) in std::mem::take(&mut self.strands) {
             self.out.contents.hair.push(HairEntry {
