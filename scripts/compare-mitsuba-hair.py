@@ -121,7 +121,9 @@ def main():
         with open(toml, "w") as f:
             f.write(f'[camera]\neye = {cam["eye"]}\ntarget = {cam["target"]}\nup = {cam["up"]}\n'
                     f'vfov = {cam["vfov_deg"]}\n\n[render]\nresolution = [{w}, {h}]\nspp = {a.spp}\n'
-                    f'integrator = "{integrator}"\nmax_depth = {max_depth}\n\n{lights}'
+                    f'integrator = "{integrator}"\nmax_depth = {max_depth}\n'
+                    # Unbiased: no path regularization, as Mitsuba's `path`.
+                    f'indirect_hair_roughness = 0\n\n{lights}'
                     f'[[mesh]]\nfile = "{os.path.abspath(os.path.join(a.dir, s["meshes"][0]["obj"]))}"\n'
                     f'material = {{ type = "diffuse", color = {s["meshes"][0]["diffuse"]} }}\n\n'
                     f'[[hair]]\nfile = "curves.hair"\nfile_colors = false\n'

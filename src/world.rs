@@ -45,6 +45,11 @@ pub struct RenderSettings {
     pub seed: u32,
     /// Maximum number of specular bounces (mirror, glass) after the camera ray.
     pub max_depth: u32,
+    /// Path tracing: the smallest roughness (β_m and β_n) of physical hair at the vertices
+    /// after the camera hit, whose narrow lobes it widens (path regularization: less noise
+    /// for a small bias; docs/validation.md measures it); 0 leaves every vertex as the
+    /// material says, the unbiased path tracer.
+    pub indirect_hair_roughness: f32,
     /// Worker threads; 0 uses every core.
     pub threads: usize,
     /// Level of detail for the strand sets that ask for it; `false` renders every strand.
@@ -92,7 +97,8 @@ pub enum Integrator {
     Direct,
     /// Direct light plus one gathered bounce of indirect light (Turtle's final gather).
     FinalGather,
-    /// Unbiased path tracing with next-event estimation and multiple importance sampling.
+    /// Path tracing with next-event estimation and multiple importance sampling, unbiased
+    /// without path regularization ([`RenderSettings::indirect_hair_roughness`]).
     Path,
 }
 
@@ -132,6 +138,7 @@ impl Default for RenderSettings {
             spp: 16,
             seed: 0,
             max_depth: 5,
+            indirect_hair_roughness: 0.5,
             threads: 0,
             integrator: Integrator::Direct,
             transparency_layers: 8,

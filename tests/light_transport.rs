@@ -60,13 +60,52 @@ fn hair_ball(count: u32, (r0, r1): (f32, f32)) -> StrandSet {
     s
 }
 
-fn white_hair() -> Material {
+fn white_hair(beta: f32) -> Material {
     Material::Physical(PhysicalHair::new(HairParams {
         absorption: Absorption::Color(Color::ONE),
-        beta_m: 0.3,
-        beta_n: 0.3,
+        beta_m: beta,
+        beta_n: beta,
         ..Default::default()
     }))
+}
+
+/// A diffuse albedo-1 sphere and a ball of hair of `material` (strand radii `radii` at the
+/// root and the tip) in a uniform environment of radiance 1.
+fn furnace(radii: (f32, f32), material: Material, settings: RenderSettings) -> Description {
+    Description {
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 0.0, 4.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov: 40.0,
+            ..Default::default()
+        },
+        settings,
+        contents: Contents {
+            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
+            meshes: vec![mesh(
+                TriangleMesh::sphere(0.5, 48),
+                Material::Diffuse { color: Color::ONE },
+                Affine3A::from_translation(Vec3::new(-0.7, 0.0, 0.0)),
+            )],
+            hair: vec![hair(
+                {
+                    let mut b = hair_ball(300, radii);
+                    b.transform(&Affine3A::from_translation(Vec3::new(0.7, 0.0, 0.0)));
+                    b
+                },
+                material,
+            )],
+            ..Default::default()
+        },
+    }
+}
+
+/// The mean of the image and of its hair pixels.
+fn furnace_means(film: &Film) -> (Vec3, f32) {
+    let hair_pixels: Vec<f32> = film.pixels.iter().filter(|p| p.strand_id >= 0.0).map(|p| p.color.x).collect();
+    assert!(hair_pixels.len() > 20, "the hair ball is seen: {}", hair_pixels.len());
+    (mean(film), hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32)
 }
 
 #[test]
@@ -75,49 +114,53 @@ fn path_tracer_white_furnace() {
     // radiance 1: every pixel's expected value is 1, for strands of constant radius and
     // tapered ones (which rays leaving a strand must not hit again where they start).
     for radii in [(0.01, 0.01), (0.02, 0.004)] {
-        let desc = Description {
-            camera: CameraDesc {
-                eye: Vec3::new(0.0, 0.0, 4.0),
-                target: Vec3::ZERO,
-                up: Vec3::Y,
-                vfov: 40.0,
-                ..Default::default()
-            },
-            settings: settings(24, 24, 64, 64, Integrator::Path),
-            contents: Contents {
-                lights: vec![Light::Environment { radiance: Color::ONE }.into()],
-                meshes: vec![mesh(
-                    TriangleMesh::sphere(0.5, 48),
-                    Material::Diffuse { color: Color::ONE },
-                    Affine3A::from_translation(Vec3::new(-0.7, 0.0, 0.0)),
-                )],
-                hair: vec![hair(
-                    {
-                        let mut b = hair_ball(300, radii);
-                        b.transform(&Affine3A::from_translation(Vec3::new(0.7, 0.0, 0.0)));
-                        b
-                    },
-                    white_hair(),
-                )],
-                ..Default::default()
-            },
-        };
+        let desc = furnace(radii, white_hair(0.3), settings(24, 24, 64, 64, Integrator::Path));
         let film = render(&desc, 2);
-        let hair_pixels: Vec<f32> = film.pixels.iter().filter(|p| p.strand_id >= 0.0).map(|p| p.color.x).collect();
-        assert!(hair_pixels.len() > 20, "the hair ball is seen: {}", hair_pixels.len());
-        let m = mean(&film);
-        println!(
-            "furnace, radii {radii:?}: image mean {m}, hair pixels' mean {}",
-            hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32
-        );
+        let (m, hm) = furnace_means(&film);
+        println!("furnace, radii {radii:?}: image mean {m}, hair pixels' mean {hm}");
         assert!((m - Vec3::ONE).abs().max_element() < 0.01, "image mean {m}");
-        let hm = hair_pixels.iter().sum::<f32>() / hair_pixels.len() as f32;
         assert!((hm - 1.0).abs() < 0.01, "hair mean {hm}");
         // The sphere alone is exact for every sample (cosine sampling of an albedo-1 Lambertian).
         for p in film.pixels.iter().filter(|p| p.object_id == 0.0 && p.coverage == 1.0) {
             assert!((p.color - Vec3::ONE).abs().max_element() < 1e-4, "{}", p.color);
         }
     }
+}
+
+#[test]
+fn regularized_path_tracer_white_furnace() {
+    // Narrow non-absorbing hair whose lobes path regularization widens past the camera hit
+    // still reflects all the light: the widened lobes conserve energy.
+    let s = RenderSettings { indirect_hair_roughness: 0.6, ..settings(24, 24, 64, 64, Integrator::Path) };
+    let film = render(&furnace((0.01, 0.01), white_hair(0.1), s), 2);
+    let (m, hm) = furnace_means(&film);
+    println!("regularized furnace: image mean {m}, hair pixels' mean {hm}");
+    assert!((m - Vec3::ONE).abs().max_element() < 0.01, "image mean {m}");
+    assert!((hm - 1.0).abs() < 0.01, "hair mean {hm}");
+}
+
+#[test]
+fn hair_regularization_leaves_the_camera_hit_and_rough_hair_alone() {
+    // Sunlit hair against a dim sky: the camera hit is never widened (with max_depth 0 the
+    // image is the one without regularization, bit for bit), nor hair already as rough;
+    // narrower hair past the camera hit is.
+    let lit = |beta: f32, max_depth: u32, r: f32| {
+        let s = RenderSettings { indirect_hair_roughness: r, ..settings(24, 24, 4, max_depth, Integrator::Path) };
+        let mut desc = furnace((0.01, 0.01), white_hair(beta), s);
+        desc.contents.lights = vec![
+            Light::Environment { radiance: Color::splat(0.1) }.into(),
+            Light::Sun {
+                direction: Vec3::new(0.3, 1.0, 0.5).normalize(),
+                radiance: Color::splat(1000.0),
+                cos_max: 0.9995,
+            }
+            .into(),
+        ];
+        render(&desc, 2).pixels.iter().map(|p| p.color).collect::<Vec<_>>()
+    };
+    assert_eq!(lit(0.1, 0, 0.9), lit(0.1, 0, 0.0), "camera hit widened");
+    assert_eq!(lit(0.4, 4, 0.3), lit(0.4, 4, 0.0), "rough hair widened");
+    assert_ne!(lit(0.1, 4, 0.6), lit(0.1, 4, 0.0), "narrow hair past the camera hit not widened");
 }
 
 /// A diffuse ground and sphere under a quad light, a sphere light and the sun.

@@ -18,8 +18,8 @@ class Description:
     def warnings(self) -> list[str]: ...
     @property
     def settings(self) -> dict[str, Any]:
-        """The ``[render]`` settings: resolution, spp, seed, max_depth, threads, lod,
-        integrator, transparency_layers, gather_rays."""
+        """The ``[render]`` settings: resolution, spp, seed, max_depth,
+        indirect_hair_roughness, threads, lod, integrator, transparency_layers, gather_rays."""
 
 class Mesh:
     """A triangle mesh from arrays: points (n, 3), triangles (t, 3), optional normals

@@ -13,6 +13,15 @@
 //!
 //! `max_depth` counts scattering vertices after the first: with 0, the camera hit's direct
 //! light only (the direct integrator's image); with 1, one bounce of indirect light.
+//!
+//! Path regularization (Kaplanyan and Dachsbacher 2013, "Path Space Regularization for
+//! Holistic and Robust Light Transport"): with `indirect_hair_roughness` above 0, physical
+//! hair at every vertex after the camera hit has its lobes widened to at least that
+//! roughness, for its light samples, its evaluation and its sampling alike. The narrow TT
+//! and TRT peaks that line up with a small bright light (an environment map's sun) from deep
+//! inside light hair are the noise of such scenes; widened, they carry the same energy over
+//! more directions. The camera hit keeps its sharp highlights; the bias is a slightly
+//! softer multiple scattering.
 
 use super::interaction::{FirstHit, Interaction};
 use super::tracer::{CameraHint, LayerWalk, Tracer};
@@ -21,6 +30,7 @@ use crate::light::Light;
 use crate::math::rng::PixelSampler;
 use crate::math::sampling::power_heuristic;
 use crate::math::{Color, Ray};
+use crate::shading::Material;
 use crate::world::World;
 
 /// True for lights a material-sampled ray can hit, which MIS weighs.
@@ -58,8 +68,16 @@ fn next_hit(tracer: &mut Tracer, ray: &Ray, sampler: &mut PixelSampler, walk: &m
 /// Next-event estimation at a path vertex of throughput `beta`, added to `radiance`: one
 /// sample of every light but the constant environment (which material sampling reaches), shadowed,
 /// weighted by MIS against the material sample for lights that sample can hit.
-fn next_event(tracer: &mut Tracer, at: &Interaction, beta: Color, sampler: &mut PixelSampler, radiance: &mut Color) {
-    let (sp, material) = (&at.sp, at.material);
+/// `material` is the hit's, regularized or not.
+fn next_event(
+    tracer: &mut Tracer,
+    at: &Interaction,
+    material: &Material,
+    beta: Color,
+    sampler: &mut PixelSampler,
+    radiance: &mut Color,
+) {
+    let sp = &at.sp;
     for light in tracer.world.lights.iter().filter(|l| l.background() == Color::ZERO) {
         let Some(ls) = light.sample(sp.p, Some(sp.normal), sampler.next_2d()) else { continue };
         let f = material.response(sp, at.wo, ls.dir);
@@ -121,9 +139,15 @@ pub(super) fn trace_camera(
         if vertex == 0 {
             first = Some(at.first_hit());
         }
-        next_event(tracer, &at, beta, sampler, &mut radiance);
+        // Path regularization past the camera hit (see the module documentation).
+        let widened = match world.settings.indirect_hair_roughness {
+            r if vertex > 0 && r > 0.0 => at.material.regularized(r),
+            _ => None,
+        };
+        let material = widened.as_ref().unwrap_or(at.material);
+        next_event(tracer, &at, material, beta, sampler, &mut radiance);
 
-        let Some(s) = at.material.sample_scatter(&at.sp, at.wo, sampler) else { break };
+        let Some(s) = material.sample_scatter(&at.sp, at.wo, sampler) else { break };
         beta *= s.weight;
         scatter_pdf = (!s.is_specular()).then_some(s.pdf);
         // Russian roulette (PBR 4th ed. 13.1.1): paths that carry little go on rarely,

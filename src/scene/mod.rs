@@ -221,6 +221,10 @@ impl Description {
         if s.max_depth > 64 {
             return Err(PrepareError::Invalid(format!("max_depth {} is out of range (0 to 64)", s.max_depth)));
         }
+        let r = s.indirect_hair_roughness;
+        if !(0.0..=1.0).contains(&r) {
+            return Err(PrepareError::Invalid(format!("indirect_hair_roughness {r} is out of range (0 to 1)")));
+        }
         self.contents.validate()
     }
 }

@@ -153,15 +153,7 @@ impl PhysicalHair {
     pub fn new(params: HairParams) -> PhysicalHair {
         let beta_m = params.beta_m.clamp(MIN_BETA, 1.0);
         let beta_n = params.beta_n.clamp(MIN_BETA, 1.0);
-        // Chiang §4.1: the variance that makes β_m look alike for every lobe; TT is
-        // narrower and TRT wider, following Marschner et al. 2003's lobe widths.
-        let v0 = (0.726 * beta_m + 0.812 * beta_m.powi(2) + 3.7 * beta_m.powi(20)).powi(2);
-        let v = [v0, 0.25 * v0, 4.0 * v0, 4.0 * v0];
-        // 2 v sinh(1/v) = v e^(1/v) (1 - e^(-2/v)); its exponential part goes with I0 in
-        // `longitudinal`, so neither overflows for small v.
-        let ln_norm = v.map(|v| -v.ln() - (-(-2.0 / v).exp_m1()).ln());
-        // Chiang §4.1: logistic scale from β_n.
-        let s = (PI / 8.0).sqrt() * (0.265 * beta_n + 1.194 * beta_n.powi(2) + 5.372 * beta_n.powi(22));
+        let (v, ln_norm, s, trim) = lobe_widths(beta_m, beta_n);
         // Cuticle tilt (Marschner et al. 2003's lobe shifts): the R highlight moves by 2α, TT by -α
         // and TRT by -3α (their α_TT = -α_R / 2, α_TRT = -3 α_R / 2). Shifting θ_o by the
         // opposite amount moves the lobe's peak in θ_i by that much.
@@ -174,8 +166,23 @@ impl PhysicalHair {
             Absorption::Color(c) => sigma_a_from_color(c, beta_n),
             Absorption::FromStrands => Color::ZERO,
         };
-        let trim = 1.0 / (PI / (2.0 * s)).tanh();
         PhysicalHair { params, v, ln_norm, s, trim, shift, sigma_a }
+    }
+
+    /// The same fibre with lobes no narrower than those of roughness `min_roughness`
+    /// (β_m and β_n each raised to it), for path regularization (Kaplanyan and
+    /// Dachsbacher 2013, "Path Space Regularization for Holistic and Robust Light
+    /// Transport"): the absorption, the attenuations `A_p` and the lobes' centres stay,
+    /// so the widened lobes still integrate to the fibre's albedo, and evaluation, density
+    /// and sampling stay consistent. `None` when both roughnesses are already that large.
+    pub fn widened(&self, min_roughness: f32) -> Option<PhysicalHair> {
+        let (beta_m, beta_n) = (self.params.beta_m.clamp(MIN_BETA, 1.0), self.params.beta_n.clamp(MIN_BETA, 1.0));
+        let min = min_roughness.min(1.0);
+        if beta_m >= min && beta_n >= min {
+            return None;
+        }
+        let (v, ln_norm, s, trim) = lobe_widths(beta_m.max(min), beta_n.max(min));
+        Some(PhysicalHair { v, ln_norm, s, trim, ..self.clone() })
     }
 
     /// The parameters the material was made from.
@@ -243,6 +250,22 @@ impl PhysicalHair {
         let fr = FibreFrame::new(tangent, normal, wo);
         self.at(self.sigma_a(strand_color), fr.h).pdf(fr.to_local(wo), fr.to_local(wi))
     }
+}
+
+/// The lobes' widths for roughnesses `beta_m` and `beta_n` in [0.001, 1]: the longitudinal
+/// variance v_p per lobe, the log of each M_p's normalisation, the logistic scale s and
+/// the inverse of its mass on [-π, π].
+fn lobe_widths(beta_m: f32, beta_n: f32) -> ([f32; LOBES], [f32; LOBES], f32, f32) {
+    // Chiang §4.1: the variance that makes β_m look alike for every lobe; TT is
+    // narrower and TRT wider, following Marschner et al. 2003's lobe widths.
+    let v0 = (0.726 * beta_m + 0.812 * beta_m.powi(2) + 3.7 * beta_m.powi(20)).powi(2);
+    let v = [v0, 0.25 * v0, 4.0 * v0, 4.0 * v0];
+    // 2 v sinh(1/v) = v e^(1/v) (1 - e^(-2/v)); its exponential part goes with I0 in
+    // `longitudinal`, so neither overflows for small v.
+    let ln_norm = v.map(|v| -v.ln() - (-(-2.0 / v).exp_m1()).ln());
+    // Chiang §4.1: logistic scale from β_n.
+    let s = (PI / 8.0).sqrt() * (0.265 * beta_n + 1.194 * beta_n.powi(2) + 5.372 * beta_n.powi(22));
+    (v, ln_norm, s, 1.0 / (PI / (2.0 * s)).tanh())
 }
 
 /// The denominator of Chiang §4.2's colour inversion: a fit of how much a colour darkens per unit of √σ_a.

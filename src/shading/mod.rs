@@ -187,6 +187,16 @@ impl Material {
         }
     }
 
+    /// The material with its lobes widened to at least roughness `min_roughness`, for path
+    /// regularization ([`hair_bsdf::PhysicalHair::widened`]): only physical hair narrower
+    /// than that changes; `None` for every other material and for hair already as rough.
+    pub fn regularized(&self, min_roughness: f32) -> Option<Material> {
+        match self {
+            Material::Physical(h) => h.widened(min_roughness).map(Material::Physical),
+            _ => None,
+        }
+    }
+
     /// A direction `wi` drawn in proportion to the material's response, and its
     /// solid-angle density, for materials that can importance-sample themselves: the hair
     /// BSDF on hair. `None` for the others, which then draw nothing from `sampler`.

@@ -23,6 +23,10 @@ pub struct Overrides {
     /// Light transport: direct, final-gather or path.
     #[arg(short, long, value_parser = parse_integrator)]
     pub integrator: Option<tress::world::Integrator>,
+    /// Path tracing: the smallest roughness of physical hair after the camera hit (path
+    /// regularization; 0 turns it off).
+    #[arg(long, value_name = "R")]
+    pub indirect_hair_roughness: Option<f32>,
     /// Partial hits collected per traversal through semi-transparent hair (1 re-traces
     /// after every hit, the slow way).
     #[arg(long)]
@@ -152,6 +156,9 @@ fn apply(desc: &mut Description, o: &Overrides) {
     }
     if let Some(k) = o.transparency_layers {
         s.transparency_layers = k;
+    }
+    if let Some(r) = o.indirect_hair_roughness {
+        s.indirect_hair_roughness = r;
     }
     if let Some(f) = o.filter {
         s.filter = f;

@@ -121,6 +121,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         spp: r.spp,
         seed: r.seed,
         max_depth: r.max_depth,
+        indirect_hair_roughness: r.indirect_hair_roughness,
         threads: r.threads,
         lod: r.lod,
         integrator,

@@ -128,6 +128,7 @@ pub(super) struct RenderToml {
     pub(super) spp: u32,
     pub(super) seed: u32,
     pub(super) max_depth: u32,
+    pub(super) indirect_hair_roughness: f32,
     pub(super) threads: usize,
     pub(super) lod: bool,
     /// `direct`, `final-gather` or `path`.
@@ -147,6 +148,7 @@ impl Default for RenderToml {
             spp: d.spp,
             seed: d.seed,
             max_depth: d.max_depth,
+            indirect_hair_roughness: d.indirect_hair_roughness,
             threads: d.threads,
             lod: d.lod,
             integrator: None,

@@ -428,6 +428,54 @@ fn importance_weights_match_evaluation() {
 }
 
 #[test]
+fn widened_lobes_keep_the_energy_and_are_sampled_by_their_density() {
+    // Path regularization widens narrow lobes: the fibre scatters exactly as much light
+    // (A_p unchanged, each lobe still normalised), the peaks fall, sampling follows the
+    // widened density, and hair that is already as rough is left alone.
+    let narrow = hair(0.1, 0.15, 2.0);
+    assert!(hair(0.5, 0.6, 2.0).widened(0.5).is_none() && narrow.widened(0.0).is_none());
+    let wide = narrow.widened(0.5).unwrap();
+    assert_eq!((wide.params(), wide.sigma_a(None)), (narrow.params(), narrow.sigma_a(None)));
+    // The widened fibre is the fibre of the raised roughness, lobe for lobe.
+    let rough = hair(0.5, 0.5, 2.0);
+    let mut rng = GenRng::seed_from_u64(5);
+    for _ in 0..1000 {
+        let [wo, wi] = [0; 2].map(|_| crate::math::sampling::uniform_sphere(rng.random(), rng.random()));
+        let (a, b) = (wide.at(Color::splat(0.2), 0.4), rough.at(Color::splat(0.2), 0.4));
+        assert_eq!((a.eval(wo, wi), a.pdf(wo, wi)), (b.eval(wo, wi), b.pdf(wo, wi)));
+    }
+    assert!(wide.v[1] > 10.0 * narrow.v[1] && wide.s > 2.0 * narrow.s, "{:?} {}", wide.v, wide.s);
+    let threshold = 1.0 - (1.0 - 0.01f64).powf(1.0 / 3.0);
+    for (k, &(sigma_a, h, wo)) in [
+        (Color::ZERO, 0.3, dir(0.4, 0.0)),
+        (EUMELANIN_SIGMA_A * 0.25 + PHEOMELANIN_SIGMA_A * 0.08, -0.6, dir(-0.9, 1.0)), // blonde
+        (EUMELANIN_SIGMA_A * 1.3, 0.9, dir(1.2, -2.0)),                                // brown
+    ]
+    .iter()
+    .enumerate()
+    {
+        let (before, after) = (narrow.at(sigma_a, h), wide.at(sigma_a, h));
+        let e0 = albedo(&before, wo, grid_for(&narrow));
+        let e1 = albedo(&after, wo, grid_for(&narrow));
+        println!("widened to 0.5: σ_a {sigma_a} h {h}: albedo {e0} -> {e1}");
+        assert!((e1 - e0).abs().max_element() < 0.01 * e0.max_element().max(0.05), "{e0} vs {e1}");
+        if sigma_a == Color::ZERO {
+            assert!((e1 - Color::ONE).abs().max_element() < 0.01, "white furnace: {e1}");
+        }
+        let peak = |b: &HairBsdf| {
+            let mut rng = GenRng::seed_from_u64(3);
+            (0..20_000)
+                .map(|_| b.eval(wo, crate::math::sampling::uniform_sphere(rng.random(), rng.random())).max_element())
+                .fold(0.0f32, f32::max)
+        };
+        assert!(peak(&after) < 0.5 * peak(&before), "peaks {} -> {}", peak(&before), peak(&after));
+        let p = chi_square(&after, wo, 200_000, 1000 + k as u64);
+        println!("chi-square of the widened lobes, σ_a {sigma_a}: p = {p:.4}");
+        assert!(p > threshold, "config {k}: p-value {p} below {threshold}");
+    }
+}
+
+#[test]
 fn colour_inversion_follows_chiang_and_melanin_browns() {
     // Chiang §4.2: a colour of exp(-poly(β_n)) has σ_a = 1, and white has none.
     let beta_n = 0.3;
