@@ -28,7 +28,7 @@ CAPTIONS=$OUT/gallery.md
 # name | scene file | integrator | spp | resolution | extra options
 GALLERY=(
     "groom_brown|scenes/groom_brown.toml|path|48|1280x720|"
-    "groom_blonde|scenes/groom_blonde.toml|path|96|1280x720|"
+    "groom_blonde|scenes/groom_blonde.toml|path|48|1280x720|"
     "groom_red|scenes/groom_red.toml|path|48|1280x720|"
     "rings_of_fur|scenes/rings_of_fur.toml|direct|16|1280x720|"
     "furry_pillow|scenes/furry_pillow.toml|direct|16|1280x720|"
