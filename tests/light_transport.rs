@@ -69,17 +69,16 @@ fn white_hair(beta: f32) -> Material {
     }))
 }
 
+/// A camera on +z looking at the origin, which the furnace and lone-strand scenes frame.
+fn front_camera() -> CameraDesc {
+    CameraDesc { eye: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov: 40.0, ..Default::default() }
+}
+
 /// A diffuse albedo-1 sphere and a ball of hair of `material` (strand radii `radii` at the
 /// root and the tip) in a uniform environment of radiance 1.
 fn furnace(radii: (f32, f32), material: Material, settings: RenderSettings) -> Description {
     Description {
-        camera: CameraDesc {
-            eye: Vec3::new(0.0, 0.0, 4.0),
-            target: Vec3::ZERO,
-            up: Vec3::Y,
-            vfov: 40.0,
-            ..Default::default()
-        },
+        camera: front_camera(),
         settings,
         contents: Contents {
             lights: vec![Light::Environment { radiance: Color::ONE }.into()],
@@ -499,13 +498,7 @@ fn lone_strand(r0: f32, r1: f32, material: Material, integrator: Integrator, max
         (Vec3::new(0.0, -1.0 + 2.0 * f, 0.0), r0 + (r1 - r0) * f)
     }));
     Description {
-        camera: CameraDesc {
-            eye: Vec3::new(0.0, 0.0, 4.0),
-            target: Vec3::ZERO,
-            up: Vec3::Y,
-            vfov: 40.0,
-            ..Default::default()
-        },
+        camera: front_camera(),
         settings: RenderSettings { gather_rays: 4, ..settings(8, 8, 1, max_depth, integrator) },
         contents: Contents {
             lights: vec![Light::Environment { radiance: Color::ONE }.into()],
