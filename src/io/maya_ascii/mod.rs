@@ -13,7 +13,8 @@
 //!   are skipped; a deformed shape (a mesh or curve with no geometry of its own) is drawn
 //!   in its rest pose, from the shape its deformers start from (the intermediate `…Orig`).
 //! - **nurbsCurve**: the `.cc` block (degree, spans, form, rational, knots, CVs), sampled
-//!   by de Boor's algorithm at its knots and [`SAMPLES_PER_SPAN`] points per span. A
+//!   by de Boor's algorithm at its knots and [`SAMPLES_PER_SPAN`] points per span, or the
+//!   circle a `makeNurbCircle` node builds for it ([`history`]). A
 //!   follicle's start curve is a guide of its hair system; other curves are drawn as hairs
 //!   as wide as Arnold draws them (`aiCurveWidth`, the `aiCurveCollector`'s, MtoA's default
 //!   for a curve marked `aiRenderCurve`), else as the file's first hair system draws its
@@ -47,6 +48,7 @@
 //! Every other node type is skipped, all of them together in one warning.
 
 pub mod fur_nodes;
+pub mod history;
 pub mod parse;
 
 use self::parse::{Face, Graph, Value};
@@ -109,7 +111,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 45] = [
+const KNOWN: [&str; 46] = [
     "transform",
     "mesh",
     "nurbsCurve",
@@ -136,6 +138,7 @@ const KNOWN: [&str; 45] = [
     "polySphere",
     "polyPlane",
     "polyTorus",
+    "makeNurbCircle",
     "materialInfo",
     "partition",
     "lightLinker",
@@ -176,6 +179,8 @@ struct Reader<'g> {
     rest_posed: (std::collections::BTreeSet<usize>, std::collections::BTreeSet<String>),
     /// Arnold curve collector shapes, by the transform holding them.
     collectors: HashMap<usize, usize>,
+    /// Curves built by history tress does not evaluate: how many, and the node types.
+    unbuilt_curves: (usize, std::collections::BTreeSet<String>),
 }
 
 impl<'g> Reader<'g> {
@@ -190,6 +195,7 @@ impl<'g> Reader<'g> {
             off_uv: None,
             rest_posed: Default::default(),
             collectors: HashMap::new(),
+            unbuilt_curves: Default::default(),
         }
     }
 
@@ -230,6 +236,14 @@ impl<'g> Reader<'g> {
             }
         }
         self.free_curves(&used_curves)?;
+        if self.unbuilt_curves.0 > 0 {
+            let kinds: Vec<&str> = self.unbuilt_curves.1.iter().map(String::as_str).collect();
+            self.out.warnings.push(format!(
+                "{} curve(s) built by history tress does not evaluate ({}): skipped",
+                self.unbuilt_curves.0,
+                kinds.join(", ")
+            ));
+        }
         if !self.rest_posed.0.is_empty() {
             let kinds: Vec<&str> = self.rest_posed.1.iter().map(String::as_str).collect();
             self.out.warnings.push(format!(
@@ -649,7 +663,7 @@ impl<'g> Reader<'g> {
             let points = match curve {
                 Some(c) => {
                     used[c] = true;
-                    self.curve_points(c)?
+                    self.curve_points(c)?.map(|(p, _)| p)
                 }
                 None => None,
             };
@@ -685,36 +699,59 @@ impl<'g> Reader<'g> {
 
     // ----- curves -----
 
-    /// The `.cc` block a curve is drawn from: its own, or, for a deformed curve, that of
-    /// the curve its deformers start from ([`Self::rest_shape`]); `None` for a curve Maya
-    /// builds from other history.
-    fn curve_block(&mut self, n: usize) -> Option<&'g parse::Attr> {
-        let g = self.g;
-        let block = |m: usize| g.nodes[m].attrs.iter().rev().find(|a| a.name == "cc" || a.name == "cached");
-        if let Some(a) = block(n) {
-            return Some(a);
-        }
-        let rest = self.rest_shape(n, |r, m| r.kind(m) == "nurbsCurve" && block(m).is_some())?;
-        block(rest)
-    }
-
-    /// The world-space samples of a curve node (placed by its own transforms, its `.cc`
-    /// block by [`Self::curve_block`]); `None` for one Maya builds from other history.
-    fn curve_points(&mut self, n: usize) -> Res<Option<Vec<Vec3>>> {
+    /// The curve a curve node is drawn as, and whether it is closed: its own `.cc` block,
+    /// or, for a deformed curve, that of the curve its deformers start from
+    /// ([`Self::rest_shape`]), or the circle a `makeNurbCircle` node builds for it
+    /// ([`history`]). `None` for a curve with no geometry, or one Maya builds from other
+    /// history (counted for one warning).
+    fn curve_nurbs(&mut self, n: usize) -> Res<Option<(Nurbs, bool)>> {
         let g = self.g;
         let node = &g.nodes[n];
-        let Some(a) = self.curve_block(n) else { return Ok(None) };
+        let block = |m: usize| g.nodes[m].attrs.iter().rev().find(|a| a.name == "cc" || a.name == "cached");
+        let from = match block(n) {
+            Some(_) => n,
+            None => {
+                let builds = |r: &Self, m: usize| {
+                    r.kind(m) == "nurbsCurve" && block(m).is_some() || r.kind(m) == "makeNurbCircle"
+                };
+                match self.rest_shape(n, builds) {
+                    Some(m) => m,
+                    None => {
+                        if let Some(&src) = self.inputs(n, &["cr", "create"]).first() {
+                            self.unbuilt_curves.0 += 1;
+                            self.unbuilt_curves.1.insert(self.kind(src).to_string());
+                        }
+                        return Ok(None);
+                    }
+                }
+            }
+        };
+        if self.kind(from) == "makeNurbCircle" {
+            return history::nurb_circle(g, from, &mut self.out.warnings).map(Some);
+        }
+        let Some(a) = block(from) else { return Ok(None) };
         let Value::Curve(words) = &a.value else {
             return Err((a.line, format!("curve {}: `.cc` must have -type \"nurbsCurve\"", node.name)));
         };
         let curve = nurbs_block(words).map_err(|e| (a.line, format!("curve {}: {e}", node.name)))?;
+        // The form: 0 open, 1 closed, 2 periodic.
+        let closed = words.get(2).copied().unwrap_or(0.0) != 0.0;
+        Ok(Some((curve, closed)))
+    }
+
+    /// The world-space samples of a curve node (placed by its own transforms, its curve by
+    /// [`Self::curve_nurbs`]) and whether it is closed; `None` for a curve tress cannot build.
+    fn curve_points(&mut self, n: usize) -> Res<Option<(Vec<Vec3>, bool)>> {
+        let g = self.g;
+        let node = &g.nodes[n];
+        let Some((curve, closed)) = self.curve_nurbs(n)? else { return Ok(None) };
         let world = self.world(n)?;
         let m = finite_affine(g, n, &world)?;
         let points: Vec<Vec3> = curve.sample(SAMPLES_PER_SPAN).into_iter().map(|p| m.transform_point3(p)).collect();
         if points.iter().any(|p| !p.is_finite()) {
-            return Err((a.line, format!("curve {}: its points overflow single precision", node.name)));
+            return Err((node.line, format!("curve {}: its points overflow single precision", node.name)));
         }
-        Ok(Some(points))
+        Ok(Some((points, closed)))
     }
 
     /// The width Arnold draws a free curve with, in the file's unit: its own
@@ -757,20 +794,15 @@ impl<'g> Reader<'g> {
             if used[n] || self.hidden(n)? {
                 continue;
             }
-            let form = match self.curve_block(n).map(|a| &a.value) {
-                Some(Value::Curve(w)) => w.get(2).copied().unwrap_or(0.0),
-                _ => continue,
-            };
+            let Some((p, is_closed)) = self.curve_points(n)? else { continue };
             let width = self.arnold_curve_width(n)?;
             // A closed curve is a rig control, unless Arnold is told to render it.
-            if form != 0.0 && width.is_none() {
+            if is_closed && width.is_none() {
                 closed += 1;
                 continue;
             }
-            if let Some(p) = self.curve_points(n)? {
-                set.push_strand(p.into_iter().map(|q| (q, 0.0)));
-                widths.push(width);
-            }
+            set.push_strand(p.into_iter().map(|q| (q, 0.0)));
+            widths.push(width);
         }
         let unset = widths.iter().filter(|w| w.is_none()).count();
         if unset > 0 {

@@ -629,3 +629,110 @@ fn curves_arnold_renders_take_arnolds_width() {
     let r = radii(&read(&text("meter")).unwrap());
     assert!((r[0] - 0.0025).abs() < 1e-8 && (r[1] - 0.001).abs() < 1e-8, "{r:?}");
 }
+
+/// A curve shape `name` built by a `makeNurbCircle` node with `attrs`, marked for Arnold.
+fn circle_scene(name: &str, attrs: &str) -> String {
+    format!(
+        "createNode transform -n {name};\ncreateNode nurbsCurve -n {name}Shape -p {name};\n\tsetAttr \".rcurve\" yes;\n\
+         createNode makeNurbCircle -n make_{name};\n{attrs}connectAttr \"make_{name}.oc\" \"{name}Shape.cr\";\n"
+    )
+}
+
+fn strands(s: &Imported) -> Vec<Vec<Vec3>> {
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
+    (0..set.strand_count())
+        .map(|i| {
+            let (a, b) = (set.offsets[i] as usize, set.offsets[i + 1] as usize);
+            set.points[a..b].iter().map(|p| Vec3::new(p[0], p[1], p[2])).collect()
+        })
+        .collect()
+}
+
+#[test]
+fn make_nurb_circle_builds_the_curve_maya_writes_for_it() {
+    // Maya's default circle from the menu (normal +Y, radius 1, 8 sections) as Maya writes
+    // its `.cc`, beside the same circle built from its history node.
+    let written = "createNode transform -n written;\ncreateNode nurbsCurve -n writtenShape -p written;\n\
+        \tsetAttr \".rcurve\" yes;\n\tsetAttr \".cc\" -type \"nurbsCurve\"\n\t\t3 8 2 no 3\n\
+        \t\t13 -2 -1 0 1 2 3 4 5 6 7 8 9 10\n\t\t11\n\
+        \t\t0.78361162489122504 4.7982373409884682e-17 -0.78361162489122382\n\
+        \t\t6.7857323231109134e-17 6.7857323231109146e-17 -1.1081941875543879\n\
+        \t\t-0.78361162489122427 4.7982373409884713e-17 -0.78361162489122427\n\
+        \t\t-1.1081941875543879 1.9663354616187859e-32 -3.2112695072372299e-16\n\
+        \t\t-0.78361162489122449 -4.7982373409884694e-17 0.78361162489122405\n\
+        \t\t-1.1100856969603225e-16 -6.7857323231109171e-17 1.1081941875543883\n\
+        \t\t0.78361162489122382 -4.7982373409884719e-17 0.78361162489122438\n\
+        \t\t1.1081941875543879 -3.6446300679047921e-32 5.9521325992805852e-16\n\
+        \t\t0.78361162489122504 4.7982373409884682e-17 -0.78361162489122382\n\
+        \t\t6.7857323231109134e-17 6.7857323231109146e-17 -1.1081941875543879\n\
+        \t\t-0.78361162489122427 4.7982373409884713e-17 -0.78361162489122427\n\t\t;\n";
+    let built = circle_scene("built", "\tsetAttr \".nr\" -type \"double3\" 0 1 0 ;\n");
+    let s = read(&format!("{written}{built}")).unwrap();
+    let c = strands(&s);
+    assert_eq!(c.len(), 2, "{:?}", s.warnings);
+    assert_eq!(c[0].len(), 8 * SAMPLES_PER_SPAN + 1);
+    assert_eq!(c[0].len(), c[1].len());
+    assert!(c[0].iter().zip(&c[1]).all(|(a, b)| (*a - *b).length() < 1e-5), "{:?}\n{:?}", c[0], c[1]);
+    assert!(s.warnings.iter().all(|w| !w.contains("makeNurbCircle")), "{:?}", s.warnings);
+}
+
+#[test]
+fn make_nurb_circle_lies_at_its_radius_in_the_plane_of_its_normal() {
+    let attrs = "\tsetAttr \".c\" -type \"double3\" 1 2 3 ;\n\tsetAttr \".nr\" -type \"double3\" 1 1 0 ;\n\
+                 \tsetAttr \".r\" 2.5;\n\tsetAttr \".s\" 12;\n";
+    let s = read(&circle_scene("ring", attrs)).unwrap();
+    let c = &strands(&s)[0];
+    let (center, normal) = (Vec3::new(1.0, 2.0, 3.0), Vec3::new(1.0, 1.0, 0.0).normalize());
+    assert_eq!(c.len(), 12 * SAMPLES_PER_SPAN + 1);
+    assert!(close(c[0], c[c.len() - 1]), "a closed circle");
+    for (i, p) in c.iter().enumerate() {
+        let d = *p - center;
+        assert!(d.dot(normal).abs() < 1e-5, "point {i} {p} off the plane");
+        // On the circle at each knot; a 12-span cubic strays 0.05 % between them.
+        let r = d.length();
+        match i % SAMPLES_PER_SPAN {
+            0 => assert!((r - 2.5).abs() < 1e-5, "knot point {i} at radius {r}"),
+            _ => assert!((r - 2.5).abs() < 2.5 * 5e-4, "point {i} at radius {r}"),
+        }
+    }
+    // An arc of 90° (in the file's degrees) with one linear section per 15°: an open curve
+    // whose corners are on the circle, drawn without being marked for Arnold.
+    let arc = circle_scene("arc", "\tsetAttr \".sw\" 90;\n\tsetAttr \".d\" 1;\n\tsetAttr \".s\" 6;\n")
+        .replace("\tsetAttr \".rcurve\" yes;\n", "");
+    let s = read(&arc).unwrap();
+    let c = &strands(&s)[0];
+    assert_eq!(c.len(), 7);
+    assert!(c.iter().all(|p| (p.length() - 1.0).abs() < 1e-5 && p.z.abs() < 1e-6), "{c:?}");
+    assert!(close(c[0], Vec3::X) && close(c[6], Vec3::Y), "from the first point +X, turning about +Z: {c:?}");
+    // A full circle not marked for Arnold is a rig control.
+    let control = circle_scene("control", "").replace("\tsetAttr \".rcurve\" yes;\n", "");
+    let s = read(&control).unwrap();
+    assert!(s.contents.hair.is_empty());
+    assert!(s.warnings.iter().any(|w| w.contains("skipped 1 closed")), "{:?}", s.warnings);
+}
+
+#[test]
+fn make_nurb_circle_refuses_or_clamps_bad_values() {
+    let err = |attrs: &str| read(&circle_scene("c", attrs)).unwrap_err().to_string();
+    assert!(err("\tsetAttr \".r\" 0;\n").contains("radius 0"), "{}", err("\tsetAttr \".r\" 0;\n"));
+    assert!(err("\tsetAttr \".d\" 2;\n").contains("degree 2"));
+    assert!(err("\tsetAttr \".nr\" -type \"double3\" 0 0 0 ;\n").contains("no direction"));
+    assert!(err("\tsetAttr \".sw\" 0;\n").contains("sweep"));
+    assert!(err("\tsetAttr \".r\" nan;\n").contains("line 5"));
+    for (sections, want) in [("-3", 3), ("1e12", history::MAX_SECTIONS)] {
+        let s = read(&circle_scene("c", &format!("\tsetAttr \".s\" {sections};\n"))).unwrap();
+        assert_eq!(strands(&s)[0].len(), want * SAMPLES_PER_SPAN + 1);
+        assert!(s.warnings.iter().any(|w| w.contains("clamped")), "{:?}", s.warnings);
+    }
+    // With its tolerance used, the fewest sections keeping within it.
+    let s = read(&circle_scene("c", "\tsetAttr \".ut\" yes;\n\tsetAttr \".tol\" 0.001;\n")).unwrap();
+    let c = &strands(&s)[0];
+    let sections = (c.len() - 1) / SAMPLES_PER_SPAN;
+    assert!(c.iter().all(|p| (p.length() - 1.0).abs() <= 0.001 + 1e-6));
+    assert!((4..=12).contains(&sections), "{sections}");
+    // History tress cannot evaluate is said, not silently dropped.
+    let s =
+        read("createNode nurbsCurve -n shape;\ncreateNode rebuildCurve -n rb;\nconnectAttr \"rb.oc\" \"shape.cr\";\n")
+            .unwrap();
+    assert!(s.warnings.iter().any(|w| w.contains("1 curve(s) built by history") && w.contains("rebuildCurve")));
+}
