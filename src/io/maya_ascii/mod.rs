@@ -14,12 +14,13 @@
 //!   in its rest pose, from the shape its deformers start from (the intermediate `…Orig`).
 //! - **nurbsCurve**: the `.cc` block (degree, spans, form, rational, knots, CVs), sampled
 //!   by de Boor's algorithm at its knots and [`SAMPLES_PER_SPAN`] points per span, or the
-//!   circle a `makeNurbCircle` node builds for it ([`history`]). A
-//!   follicle's start curve is a guide of its hair system; other curves are drawn as hairs
-//!   as wide as Arnold draws them (`aiCurveWidth`, the `aiCurveCollector`'s, MtoA's default
-//!   for a curve marked `aiRenderCurve`), else as the file's first hair system draws its
-//!   hairs (`hairWidth`), or, without one, [`RELATIVE_WIDTH`] of the scene's size
-//!   (reported); closed curves Arnold is not told to render (rig controls) are skipped.
+//!   circle a `makeNurbCircle` node builds for it ([`history`]). A follicle's start curve
+//!   is a guide of its hair system; other curves are drawn as hairs as wide as Arnold draws
+//!   them (`aiCurveWidth`, the `aiCurveCollector`'s, MtoA's default for a curve marked
+//!   `aiRenderCurve`; a collector's width profile `widthProfile` narrows its curves root to
+//!   tip), else as the file's first hair system draws its hairs (`hairWidth` ×
+//!   `hairWidthScale` along the curve), or, without one, [`RELATIVE_WIDTH`] of the scene's
+//!   size (reported); closed curves Arnold is not told to render (rig controls) are skipped.
 //! - **hairSystem** with its **follicles** (`follicle.oha → hairSystem.ih[i]`): the render
 //!   attributes of spec section 5 by short or long name, ramps included, and one guide per
 //!   follicle with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
@@ -758,26 +759,42 @@ impl<'g> Reader<'g> {
     /// `aiCurveWidth` (`cwdth`), else that of the `aiCurveCollector` it is under, else MtoA's
     /// default [`ARNOLD_CURVE_WIDTH`] for a curve marked for Arnold (`aiRenderCurve`,
     /// `rcurve`) or collected; `None` for a curve Arnold is not told about. MtoA takes the
-    /// width in centimetres, Maya's internal unit.
-    fn arnold_curve_width(&self, n: usize) -> Res<Option<f32>> {
+    /// width in centimetres, Maya's internal unit. Second, the collector the curve is
+    /// under, if any.
+    fn arnold_curve_width(&self, n: usize) -> Res<(Option<f32>, Option<usize>)> {
         let g = self.g;
         let names = ["cwdth", "ai_curve_width", "aiCurveWidth"];
         let cm = |w: f64| Some((w / g.centimeters_per_unit) as f32);
-        if attr(g, n, &names).is_some() {
-            return Ok(cm(scalar(g, n, &names, ARNOLD_CURVE_WIDTH)?));
-        }
         // Up the DAG, to a transform holding a curve collector shape (at most as deep as
         // the file has nodes: a parent cycle is an error elsewhere).
+        let mut collector = None;
         let mut cur = g.parent(n);
         for _ in 0..g.nodes.len() {
             let Some(p) = cur else { break };
             if let Some(&c) = self.collectors.get(&p) {
-                return Ok(cm(scalar(g, c, &names, ARNOLD_CURVE_WIDTH)?));
+                collector = Some(c);
+                break;
             }
             cur = g.parent(p);
         }
+        if attr(g, n, &names).is_some() {
+            return Ok((cm(scalar(g, n, &names, ARNOLD_CURVE_WIDTH)?), collector));
+        }
+        if let Some(c) = collector {
+            return Ok((cm(scalar(g, c, &names, ARNOLD_CURVE_WIDTH)?), collector));
+        }
         let render_curve = scalar(g, n, &["rcurve", "ai_render_curve", "aiRenderCurve"], 0.0)? != 0.0;
-        Ok(if render_curve { cm(ARNOLD_CURVE_WIDTH) } else { None })
+        Ok((if render_curve { cm(ARNOLD_CURVE_WIDTH) } else { None }, None))
+    }
+
+    /// The width profile of an `aiCurveCollector` (`widthProfile`, `.wdthP`): a ramp of
+    /// factors on the width from root (0) to tip (1) of each curve it collects; flat 1 when
+    /// unset.
+    fn width_profile(&self, c: usize) -> Res<Ramp<f32>> {
+        match ramp_keys(self.g, c, "wdthP", "widthProfile", 1)? {
+            Some(keys) => build_ramp(self.g, c, "widthProfile", keys, |v| v[0] as f32),
+            None => Ok(Ramp::constant(1.0)),
+        }
     }
 
     fn free_curves(&mut self, used: &[bool]) -> Res<()> {
@@ -787,28 +804,53 @@ impl<'g> Reader<'g> {
             .filter_map(|c| Some((g.parent(c)?, c)))
             .collect();
         let mut set = StrandSet::new();
-        // Each strand's width when Arnold gives it one.
+        // Each strand's width when Arnold gives it one, and its width profile: its
+        // collector's, else, for a curve drawn as the hair system draws hairs, the system's
+        // `hairWidthScale`.
         let mut widths: Vec<Option<f32>> = Vec::new();
+        let mut profiles: Vec<Option<usize>> = Vec::new();
+        let mut ramps: Vec<Ramp<f32>> = Vec::new();
+        let mut ramp_of: HashMap<usize, usize> = HashMap::new();
         let mut closed = 0;
         for n in self.of_kind("nurbsCurve").collect::<Vec<_>>() {
             if used[n] || self.hidden(n)? {
                 continue;
             }
             let Some((p, is_closed)) = self.curve_points(n)? else { continue };
-            let width = self.arnold_curve_width(n)?;
+            let (width, collector) = self.arnold_curve_width(n)?;
             // A closed curve is a rig control, unless Arnold is told to render it.
             if is_closed && width.is_none() {
                 closed += 1;
                 continue;
             }
+            let profile = match collector {
+                Some(c) => Some(match ramp_of.get(&c) {
+                    Some(&i) => i,
+                    None => {
+                        ramps.push(self.width_profile(c)?);
+                        ramp_of.insert(c, ramps.len() - 1);
+                        ramps.len() - 1
+                    }
+                }),
+                None => None,
+            };
             set.push_strand(p.into_iter().map(|q| (q, 0.0)));
             widths.push(width);
+            profiles.push(profile);
         }
         let unset = widths.iter().filter(|w| w.is_none()).count();
         if unset > 0 {
             let system = self.of_kind("hairSystem").next().map(|n| hair_attributes(self.g, n)).transpose()?;
             let width = match system {
-                Some(h) => h.hair_width * h.hair_width_scale.eval(0.0),
+                Some(h) => {
+                    ramps.push(h.hair_width_scale);
+                    for (w, p) in widths.iter().zip(profiles.iter_mut()) {
+                        if w.is_none() {
+                            *p = Some(ramps.len() - 1);
+                        }
+                    }
+                    h.hair_width
+                }
                 None => {
                     let mut b = self.out.contents.bounds();
                     for p in &set.points {
@@ -824,14 +866,25 @@ impl<'g> Reader<'g> {
             };
             widths.iter_mut().for_each(|w| *w = Some(w.unwrap_or(width)));
         }
-        for (i, w) in widths.iter().enumerate() {
+        for (i, (w, profile)) in widths.iter().zip(&profiles).enumerate() {
             let r = 0.5 * w.unwrap_or_default();
             let (a, b) = (set.offsets[i] as usize, set.offsets[i + 1] as usize);
-            set.points[a..b].iter_mut().for_each(|p| p[3] = r);
+            // The profile runs along the curve's samples (evenly spaced in each span's
+            // parameter), root 0 to tip 1.
+            let last = (b - a).saturating_sub(1).max(1) as f32;
+            for (k, p) in set.points[a..b].iter_mut().enumerate() {
+                p[3] = r * profile.map_or(1.0, |j| ramps[j].eval(k as f32 / last).max(0.0));
+            }
         }
         if closed > 0 {
             self.out.warnings.push(format!("skipped {closed} closed or periodic curve(s) (rig controls, not hair)"));
         }
+        self.push_curves(set);
+        Ok(())
+    }
+
+    /// Adds strands drawn with a hair system's default look, if there are any.
+    fn push_curves(&mut self, set: StrandSet) {
         if set.strand_count() > 0 {
             let material = Material::Tube(HairSystem::default().tube());
             self.out.contents.hair.push(HairEntry {
@@ -843,7 +896,6 @@ impl<'g> Reader<'g> {
                 lod: None,
             });
         }
-        Ok(())
     }
 
     // ----- fur -----
@@ -1532,8 +1584,16 @@ type RawKey = (Option<f64>, Option<Vec<f64>>, Option<f64>);
 fn ramp_keys(g: &Graph, n: usize, short: &str, long: &str, k: usize) -> Res<Option<BTreeMap<usize, (RawKey, u32)>>> {
     let mut keys: BTreeMap<usize, (RawKey, u32)> = BTreeMap::new();
     let node = &g.nodes[n];
-    let value_children =
-        [format!("{short}fv"), format!("{short}c"), format!("{long}_FloatValue"), format!("{long}_Color")];
+    // Children by short name (`cwsp`), long name (`clumpWidthScale_Position`), or, as MtoA
+    // names its ramps' children, the short name with the long suffix (`wdthP_Position`).
+    let value_children = [
+        format!("{short}fv"),
+        format!("{short}c"),
+        format!("{long}_FloatValue"),
+        format!("{long}_Color"),
+        format!("{short}_FloatValue"),
+        format!("{short}_Color"),
+    ];
     for a in &node.attrs {
         let Some(base) = [short, long].into_iter().find(|b| a.name.starts_with(&format!("{b}["))) else { continue };
         let Some(close) = a.name.find(']') else { continue };
@@ -1554,14 +1614,20 @@ fn ramp_keys(g: &Graph, n: usize, short: &str, long: &str, k: usize) -> Res<Opti
             }
             Some(child) => {
                 let entry = &mut keys.entry(start).or_insert(((None, None, None), a.line)).0;
-                if child == format!("{short}p") || child == format!("{long}_Position") {
+                if [format!("{short}p"), format!("{long}_Position"), format!("{short}_Position")]
+                    .iter()
+                    .any(|c| c == child)
+                {
                     entry.0 = Some(*v.first().ok_or_else(|| bad("has no value"))?);
                 } else if value_children.iter().any(|c| c == child) {
                     if v.len() != k {
                         return Err(bad(&format!("needs {k} number(s)")));
                     }
                     entry.1 = Some(v.clone());
-                } else if child == format!("{short}i") || child == format!("{long}_Interp") {
+                } else if [format!("{short}i"), format!("{long}_Interp"), format!("{short}_Interp")]
+                    .iter()
+                    .any(|c| c == child)
+                {
                     entry.2 = Some(*v.first().ok_or_else(|| bad("has no value"))?);
                 }
             }

@@ -736,3 +736,37 @@ fn make_nurb_circle_refuses_or_clamps_bad_values() {
             .unwrap();
     assert!(s.warnings.iter().any(|w| w.contains("1 curve(s) built by history") && w.contains("rebuildCurve")));
 }
+
+#[test]
+fn a_curve_collectors_width_profile_scales_widths_root_to_tip() {
+    // A five-point polyline under a collector 0.2 wide whose profile falls linearly from 1
+    // at the root to 0.2 at the tip, written whole, then by child as MtoA names them.
+    let curve = "createNode transform -n grp -p col;\ncreateNode transform -n c1 -p grp;\n\
+                 createNode nurbsCurve -n c1s -p c1;\n\
+                 setAttr \".cc\" -type \"nurbsCurve\" 1 4 0 no 3 5 0 1 2 3 4 5 0 0 0 0 1 0 0 2 0 0 3 0 0 4 0;\n";
+    let head = "createNode transform -n col;\ncreateNode aiCurveCollector -n cols -p col;\n\
+                setAttr \".aiCurveWidth\" 0.2;\n";
+    let whole = "setAttr -s 2 \".wdthP[0:1]\" 0 1 1 1 0.2 1;\n";
+    let by_child = "setAttr \".wdthP[0].wdthP_Position\" 0;\nsetAttr \".wdthP[0].wdthP_FloatValue\" 1;\n\
+                    setAttr \".wdthP[0].wdthP_Interp\" 1;\nsetAttr \".wdthP[1].wdthP_Position\" 1;\n\
+                    setAttr \".wdthP[1].wdthP_FloatValue\" 0.2;\nsetAttr \".wdthP[1].wdthP_Interp\" 1;\n";
+    for profile in [whole, by_child] {
+        let s = read(&format!("{head}{profile}{curve}")).unwrap();
+        let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
+        let r: Vec<f32> = set.points.iter().map(|p| p[3]).collect();
+        let want: Vec<f32> = (0..5).map(|k| 0.1 * (1.0 - 0.8 * k as f32 / 4.0)).collect();
+        assert!(r.iter().zip(&want).all(|(a, b)| (a - b).abs() < 1e-6), "{r:?} {want:?}");
+    }
+    // Without a profile the width is the same all along.
+    let s = read(&format!("{head}{curve}")).unwrap();
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
+    assert!(set.points.iter().all(|p| (p[3] - 0.1).abs() < 1e-6));
+    // A curve drawn as the hair system draws its hairs narrows along the system's
+    // `hairWidthScale` as its hairs do.
+    let text = "createNode hairSystem -n hs;\nsetAttr \".hwd\" 0.04;\nsetAttr -s 2 \".hws[0:1]\" 0 1 1 1 0.5 1;\n\
+                createNode transform -n c1;\ncreateNode nurbsCurve -n c1s -p c1;\n\
+                setAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 1 0;\n";
+    let s = read(text).unwrap();
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
+    assert!((set.points[0][3] - 0.02).abs() < 1e-6 && (set.points[1][3] - 0.01).abs() < 1e-6, "{:?}", set.points);
+}
