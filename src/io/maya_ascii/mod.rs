@@ -26,6 +26,9 @@
 //!   follicle with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
 //!   file does not store (it is computed by Maya from `.pu`, `.pv`) is placed on its
 //!   mesh, local X along the surface normal and Y along the U tangent.
+//! - **xgmSplineDescription**: an XGen interactive groom, the splines its `xgmSplineBase`
+//!   stores in the file, see [`xgen`]; an XGen collection (`xgmPalette`), whose strands XGen
+//!   generates from files beside the scene, is named in a warning.
 //! - **FurDescription**: its attributes (node defaults for those the file omits) become a
 //!   fur description grown on each mesh it is attached to (through a `FurFeedback`), see
 //!   [`fur_nodes`].
@@ -51,6 +54,7 @@
 pub mod fur_nodes;
 pub mod history;
 pub mod parse;
+pub mod xgen;
 
 use self::parse::{Face, Graph, Value};
 use super::imported::{relative_width, Imported, RELATIVE_WIDTH};
@@ -112,7 +116,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 46] = [
+const KNOWN: [&str; 50] = [
     "transform",
     "mesh",
     "nurbsCurve",
@@ -140,6 +144,10 @@ const KNOWN: [&str; 46] = [
     "polyPlane",
     "polyTorus",
     "makeNurbCircle",
+    "xgmSplineDescription",
+    "xgmSplineBase",
+    "xgmPalette",
+    "xgmDescription",
     "materialInfo",
     "partition",
     "lightLinker",
@@ -237,6 +245,7 @@ impl<'g> Reader<'g> {
             }
         }
         self.free_curves(&used_curves)?;
+        self.xgen()?;
         if self.unbuilt_curves.0 > 0 {
             let kinds: Vec<&str> = self.unbuilt_curves.1.iter().map(String::as_str).collect();
             self.out.warnings.push(format!(

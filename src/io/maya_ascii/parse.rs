@@ -163,7 +163,8 @@ impl<'a> Lexer<'a> {
 pub enum Value {
     /// Numbers (`yes`/`no`, `on`/`off`, `true`/`false` read as 1 and 0).
     Numbers(Vec<f64>),
-    /// Strings (`-type "string"` and `"stringArray"`).
+    /// Strings (`-type "string"` and `"stringArray"`; the quoted words of an XGen
+    /// `"xgmSplineData"` block).
     Strings(Vec<String>),
     /// A `-type "nurbsCurve"` block: every word after the type, as numbers (`yes`/`no`
     /// included).
@@ -538,7 +539,7 @@ fn read_value(type_name: Option<&str>, words: &[Word], line: u32) -> Result<Valu
         words.iter().map(|w| if w.quoted { None } else { number(w.text) }.ok_or(w.line)).collect()
     };
     Ok(match type_name {
-        Some("string" | "stringArray") => {
+        Some("string" | "stringArray" | "xgmSplineData") => {
             let start = usize::from(type_name == Some("stringArray") && words.first().is_some_and(|w| !w.quoted));
             Value::Strings(words[start..].iter().map(|w| w.unescaped()).collect())
         }

@@ -770,3 +770,55 @@ fn a_curve_collectors_width_profile_scales_widths_root_to_tip() {
     let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
     assert!((set.points[0][3] - 0.02).abs() < 1e-6 && (set.points[1][3] - 0.01).abs() < 1e-6, "{:?}", set.points);
 }
+
+/// `.csd` of an `xgmSplineBase` holding `strands`, as quoted words.
+fn spline_data_words(strands: &[&[[f32; 3]]], widths: Option<&[f32]>) -> String {
+    let words = xgen::tests::value(strands, widths, 70);
+    words.iter().map(|w| format!("\"{}\"", w.replace('"', "\\\""))).collect::<Vec<_>>().join("\n")
+}
+
+#[test]
+fn xgen_interactive_grooms_are_drawn_from_the_spline_data_in_the_file() {
+    let a: &[[f32; 3]] = &[[0.0, 0.0, 0.0], [0.0, 0.5, 0.0], [0.0, 1.0, 0.0]];
+    let b: &[[f32; 3]] = &[[1.0, 0.0, 0.0], [1.0, 0.5, 0.2], [1.0, 1.0, 0.4]];
+    let groom = |description: &str| {
+        format!(
+            "createNode transform -n description1;\ncreateNode xgmSplineDescription -n description1_Shape -p description1;\n\
+             {description}createNode xgmSplineBase -n description1_base;\n\
+             \tsetAttr \".csd\" -type \"xgmSplineData\" {};\ncreateNode xgmModifierSculpt -n sculpt;\n\
+             connectAttr \"description1_base.osd\" \"sculpt.isd\";\nconnectAttr \"sculpt.osd\" \"description1_Shape.isd\";\n",
+            spline_data_words(&[a, b], Some(&[1.0, 1.0, 0.5, 2.0, 2.0, 2.0]))
+        )
+    };
+    // Width scale 0.1, a width ramp from 1 at the root to 0.5 at the tip, and the per-CV widths.
+    let s = read(&groom("\tsetAttr \".w\" 0.1;\n\tsetAttr -s 2 \".wdr[0:1]\" 0 1 1 1 0.5 1;\n")).unwrap();
+    let c = strands(&s);
+    assert_eq!(c.len(), 2);
+    assert_eq!(c[1], b.iter().map(|p| Vec3::from_array(*p)).collect::<Vec<_>>());
+    let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!("inline") };
+    let r: Vec<f32> = set.points.iter().map(|p| p[3]).collect();
+    let want = [0.05, 0.0375, 0.0125, 0.1, 0.075, 0.05];
+    assert!(r.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-6), "{r:?}");
+    assert!(s.warnings.iter().any(|w| w.contains("before its modifiers (xgmModifierSculpt)")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().all(|w| !w.contains("xgmSplineBase")), "{:?}", s.warnings);
+    // Without a width scale, one relative to the scene, said.
+    let s = read(&groom("")).unwrap();
+    assert!(s.warnings.iter().any(|w| w.contains("set no width scale")), "{:?}", s.warnings);
+    // A hidden description draws nothing; damaged data is an error naming the base node.
+    assert!(read(&groom("\tsetAttr \".v\" no;\n")).unwrap().contents.hair.is_empty());
+    let damaged = groom("").replace("\"Group\"", "\"Grope\"");
+    let e = read(&damaged).unwrap_err().to_string();
+    assert!(e.contains("xgmSplineBase description1_base") && e.contains("line 4"), "{e}");
+    // A classic XGen collection's strands live in files beside the scene: said, naming them.
+    let classic = "createNode xgmPalette -n collection1;\n\tsetAttr \".xfn\" -type \"string\" \"scene__collection1.xgen\";\n\
+                   createNode transform -n description2 -p collection1;\ncreateNode xgmDescription -n description2Shape -p description2;\n";
+    let s = read(classic).unwrap();
+    assert!(
+        s.warnings
+            .iter()
+            .any(|w| w.contains("collection1 (descriptions: description2Shape)")
+                && w.contains("`scene__collection1.xgen`")),
+        "{:?}",
+        s.warnings
+    );
+}

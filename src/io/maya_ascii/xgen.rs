@@ -1,0 +1,417 @@
+//! XGen's interactive groom splines, as Maya stores them inside the `.ma`: the spline data
+//! of an `xgmSplineBase` node (`.csd`, `-type "xgmSplineData"`).
+//!
+//! Autodesk does not document the layout; it is read as Maya 2017 to 2022 write it (the
+//! header names every part, so the reading checks itself):
+//!
+//! - The value is a list of quoted words: blocks of a tag (`"Header"` or `"Group"`), a
+//!   character count and a line count, then that many strings whose concatenation is the
+//!   block's text, of that many characters.
+//! - The header is JSON: `Header.GroupCount` groups follow, base64-encoded
+//!   (`GroupBase64`) and zlib-deflated (`GroupDeflate`); each `Items` entry (one per bound
+//!   mesh) names its arrays by index: `PrimitiveInfos`, `Positions`, `WIDTH_CV`, ...
+//! - A group, decoded: four little-endian 64-bit words (0, the number of arrays, the bytes
+//!   of the arrays' data, 0), then (inflated) the arrays one after another, each a 64-bit
+//!   type tag, a 64-bit byte length and its bytes. Arrays are numbered across the groups in
+//!   order.
+//! - `PrimitiveInfos` holds 12 bytes per spline: its first control vertex (32 bits) and its
+//!   number of control vertices (64 bits); `Positions` three 32-bit floats per control
+//!   vertex, in world space; `WIDTH_CV` one float per control vertex, the width the Width
+//!   brush paints (a factor on the description's width scale).
+
+use super::parse::Value;
+use super::{attr, build_ramp, ramp_keys, scalar, Reader, Res};
+use crate::geometry::StrandSet;
+use crate::hair_system::Ramp;
+use glam::Vec3;
+use std::collections::BTreeSet;
+use std::io::Read;
+
+/// Most bytes one group may inflate to.
+const MAX_GROUP_BYTES: u64 = 1 << 30;
+/// Most control vertices of one spline.
+const MAX_CVS: u64 = 1 << 16;
+
+/// The splines of one `xgmSplineData` value: each spline's control vertices and the width
+/// factor at each.
+#[derive(Debug, Default)]
+pub struct Splines {
+    /// Control vertices of each spline, root first.
+    pub strands: Vec<Vec<Vec3>>,
+    /// `WIDTH_CV` at each control vertex (1 when the data has none).
+    pub widths: Vec<Vec<f32>>,
+}
+
+/// Reads the quoted words of an `xgmSplineData` value.
+pub fn spline_data(words: &[String]) -> Result<Splines, String> {
+    let blocks = blocks(words)?;
+    let Some((tag, header)) = blocks.first() else { return Err("the spline data is empty".into()) };
+    if tag != "Header" {
+        return Err(format!("the spline data starts with `{tag}`, not its header"));
+    }
+    let header: serde_json::Value =
+        serde_json::from_str(header).map_err(|e| format!("the spline data's header is not JSON: {e}"))?;
+    let flag = |k: &str| header["Header"][k].as_bool().unwrap_or(false);
+    let (base64, deflate) = (flag("GroupBase64"), flag("GroupDeflate"));
+    if !base64 {
+        return Err("spline data groups that are not base64 are not read".into());
+    }
+    let mut arrays: Vec<Vec<u8>> = Vec::new();
+    for (tag, text) in &blocks[1..] {
+        if tag != "Group" {
+            return Err(format!("unexpected block `{tag}` in the spline data"));
+        }
+        group(&decode_base64(text)?, deflate, &mut arrays)?;
+    }
+    let mut out = Splines::default();
+    let items = header["Items"].as_array().ok_or("the spline data's header lists no items")?;
+    for item in items {
+        let array = |key: &str| -> Result<Option<&[u8]>, String> {
+            match item.get(key) {
+                None => Ok(None),
+                Some(i) => {
+                    let i = i.as_u64().ok_or(format!("`{key}` is not an array index"))?;
+                    let a = arrays.get(i as usize).ok_or(format!("`{key}` names array {i} of {}", arrays.len()))?;
+                    Ok(Some(a.as_slice()))
+                }
+            }
+        };
+        let infos = array("PrimitiveInfos")?.ok_or("an item has no `PrimitiveInfos`")?;
+        let positions = floats(array("Positions")?.ok_or("an item has no `Positions`")?, "Positions")?;
+        let widths = array("WIDTH_CV")?.map(|a| floats(a, "WIDTH_CV")).transpose()?;
+        if !infos.len().is_multiple_of(12) || !positions.len().is_multiple_of(3) {
+            return Err(format!(
+                "{} bytes of `PrimitiveInfos` and {} floats of `Positions` are not whole records",
+                infos.len(),
+                positions.len()
+            ));
+        }
+        let cvs = (positions.len() / 3) as u64;
+        if widths.as_ref().is_some_and(|w| w.len() as u64 != cvs) {
+            return Err(format!("`WIDTH_CV` has {} values for {cvs} control vertices", widths.map_or(0, |w| w.len())));
+        }
+        for (k, info) in infos.chunks_exact(12).enumerate() {
+            let first = u64::from(u32::from_le_bytes(info[0..4].try_into().expect("4 bytes")));
+            let count = u64::from_le_bytes(info[4..12].try_into().expect("8 bytes"));
+            if !(2..=MAX_CVS).contains(&count) || first + count > cvs {
+                return Err(format!("spline {k} has control vertices {first} + {count} of {cvs}"));
+            }
+            let range = first as usize..(first + count) as usize;
+            let strand: Vec<Vec3> = range.clone().map(|i| Vec3::from_slice(&positions[3 * i..3 * i + 3])).collect();
+            if strand.iter().any(|p| !p.is_finite()) {
+                return Err(format!("spline {k} has a control vertex that is not finite"));
+            }
+            out.strands.push(strand);
+            out.widths.push(match &widths {
+                Some(w) => w[range].iter().map(|x| if x.is_finite() { x.max(0.0) } else { 1.0 }).collect(),
+                None => vec![1.0; count as usize],
+            });
+        }
+    }
+    Ok(out)
+}
+
+impl Reader<'_> {
+    /// The interactive groom of each visible `xgmSplineDescription` (the splines of the
+    /// `xgmSplineBase` upstream of it, drawn through their control vertices, as wide as its
+    /// width scale `.w` × `WIDTH_CV` × its width ramp `.wdr`), and a warning for each XGen
+    /// collection (`xgmPalette`), whose primitives XGen generates from files beside the scene.
+    pub(super) fn xgen(&mut self) -> Res<()> {
+        let g = self.g;
+        let mut set = StrandSet::new();
+        let mut no_width = Vec::new();
+        for d in self.of_kind("xgmSplineDescription").collect::<Vec<_>>() {
+            if self.hidden(d)? {
+                continue;
+            }
+            let name = &g.nodes[d].name;
+            // Up the spline data (`.isd` from `.osd`), through the modifier stack, to the base.
+            let (mut cur, mut base, mut modifiers) = (d, None, BTreeSet::new());
+            for _ in 0..g.nodes.len() {
+                let Some(&src) = self.inputs(cur, &["isd", "inSplineData"]).first() else { break };
+                if self.kind(src) == "xgmSplineBase" {
+                    base = Some(src);
+                    break;
+                }
+                modifiers.insert(self.kind(src).to_string());
+                cur = src;
+            }
+            let data = base.and_then(|b| attr(g, b, &["csd"]).map(|a| (b, a)));
+            let Some((base, a)) = data else {
+                self.out
+                    .warnings
+                    .push(format!("XGen description {name}: no `xgmSplineBase` with spline data feeds it: no strands"));
+                continue;
+            };
+            let bad = |e: String| (a.line, format!("xgmSplineBase {}: {e}", g.nodes[base].name));
+            let Value::Strings(words) = &a.value else {
+                return Err(bad("`.csd` must have -type \"xgmSplineData\"".into()));
+            };
+            let splines = spline_data(words).map_err(bad)?;
+            if !modifiers.is_empty() {
+                let list: Vec<&str> = modifiers.iter().map(String::as_str).collect();
+                self.out.warnings.push(format!(
+                    "XGen description {name}: drawn as its base's splines, before its modifiers ({}), \
+                     which tress does not evaluate",
+                    list.join(", ")
+                ));
+            }
+            let scale = scalar(g, d, &["w", "width"], f64::NAN)? as f32;
+            if !(scale.is_nan() || scale.is_finite() && scale >= 0.0) {
+                return Err((g.nodes[d].line, format!("XGen description {name}: width {scale} is not a width")));
+            }
+            let ramp = match ramp_keys(g, d, "wdr", "widthRamp", 1)? {
+                Some(keys) => build_ramp(g, d, "widthRamp", keys, |v| v[0] as f32)?,
+                None => Ramp::constant(1.0),
+            };
+            let first = set.strand_count();
+            for (strand, widths) in splines.strands.iter().zip(&splines.widths) {
+                let last = (strand.len() - 1) as f32;
+                set.push_strand(strand.iter().zip(widths).enumerate().map(|(k, (&p, &w))| {
+                    (p, 0.5 * w * ramp.eval(k as f32 / last).max(0.0) * if scale.is_nan() { 1.0 } else { scale })
+                }));
+            }
+            if scale.is_nan() {
+                no_width.push((first, set.strand_count(), name.clone()));
+            }
+        }
+        if !no_width.is_empty() {
+            // Maya's reference does not give the width scale's default: one relative to the scene.
+            let mut b = self.out.contents.bounds();
+            for p in &set.points {
+                b = b.grow(glam::Vec3A::new(p[0], p[1], p[2]));
+            }
+            let w = super::relative_width(&b);
+            for &(from, to, _) in &no_width {
+                let (a, b) = (set.offsets[from] as usize, set.offsets[to] as usize);
+                set.points[a..b].iter_mut().for_each(|p| p[3] *= w);
+            }
+            let names: Vec<&str> = no_width.iter().map(|u| u.2.as_str()).collect();
+            self.out.warnings.push(format!(
+                "XGen description(s) {} set no width scale (`.w`): drawn {w:.3e} wide ({} of the scene's size)",
+                names.join(", "),
+                super::RELATIVE_WIDTH
+            ));
+        }
+        self.push_curves(set);
+        for p in self.of_kind("xgmPalette").collect::<Vec<_>>() {
+            let file = match attr(g, p, &["xfn", "xgFileName"]).map(|a| &a.value) {
+                Some(Value::Strings(s)) if s.first().is_some_and(|f| !f.is_empty()) => format!("`{}`", s[0]),
+                _ => "its collection file".to_string(),
+            };
+            let descriptions: Vec<&str> = self
+                .of_kind("xgmDescription")
+                .filter(|&d| g.parent(d).and_then(|t| g.parent(t)) == Some(p))
+                .map(|d| g.nodes[d].name.as_str())
+                .collect();
+            self.out.warnings.push(format!(
+                "XGen collection {} (descriptions: {}): XGen generates its strands at render time from {file} \
+                 and the collection's folder beside the scene, not from the .ma; tress does not run XGen: no strands",
+                g.nodes[p].name,
+                if descriptions.is_empty() { "none".to_string() } else { descriptions.join(", ") }
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The blocks of the value: tag and text.
+fn blocks(words: &[String]) -> Result<Vec<(String, String)>, String> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < words.len() {
+        let tag = &words[i];
+        let count = |j: usize, what: &str| -> Result<usize, String> {
+            let w = words.get(j).ok_or(format!("the `{tag}` block ends before its {what}"))?;
+            w.parse::<usize>().map_err(|_| format!("the `{tag}` block's {what} `{w}` is not a count"))
+        };
+        let (chars, lines) = (count(i + 1, "size")?, count(i + 2, "line count")?);
+        let body = words
+            .get(i + 3..(i + 3).saturating_add(lines))
+            .ok_or(format!("the `{tag}` block promises {lines} lines, the value has fewer"))?;
+        let text: String = body.concat();
+        if text.len() != chars {
+            return Err(format!("the `{tag}` block has {} characters where it promises {chars}", text.len()));
+        }
+        out.push((tag.clone(), text));
+        i += 3 + lines;
+    }
+    Ok(out)
+}
+
+/// Appends the arrays of one decoded group.
+fn group(bytes: &[u8], deflate: bool, arrays: &mut Vec<Vec<u8>>) -> Result<(), String> {
+    let word = |i: usize| u64::from_le_bytes(bytes[8 * i..8 * i + 8].try_into().expect("8 bytes"));
+    if bytes.len() < 32 {
+        return Err("a spline data group is shorter than its header".into());
+    }
+    let (count, size) = (word(1), word(2));
+    // The arrays' data, and 16 bytes of tag and length before each.
+    let total = count.checked_mul(16).and_then(|h| h.checked_add(size)).filter(|&t| t <= MAX_GROUP_BYTES);
+    let Some(total) = total else {
+        return Err(format!("a spline data group of {count} arrays and {size} bytes is too large"));
+    };
+    let body = &bytes[32..];
+    let data = if deflate {
+        let mut out = Vec::new();
+        flate2::read::ZlibDecoder::new(body)
+            .take(total + 1)
+            .read_to_end(&mut out)
+            .map_err(|e| format!("a spline data group does not inflate: {e}"))?;
+        out
+    } else {
+        body.to_vec()
+    };
+    if data.len() as u64 != total {
+        return Err(format!("a spline data group holds {} bytes where its header promises {total}", data.len()));
+    }
+    let mut at = 0;
+    for _ in 0..count {
+        let len = data
+            .get(at + 8..at + 16)
+            .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")) as usize)
+            .ok_or("a spline data array runs past its group")?;
+        let array =
+            data.get(at + 16..(at + 16).saturating_add(len)).ok_or("a spline data array runs past its group")?;
+        arrays.push(array.to_vec());
+        at += 16 + len;
+    }
+    Ok(())
+}
+
+/// Little-endian 32-bit floats.
+fn floats(bytes: &[u8], what: &str) -> Result<Vec<f32>, String> {
+    if !bytes.len().is_multiple_of(4) {
+        return Err(format!("`{what}` is {} bytes, not whole floats", bytes.len()));
+    }
+    Ok(bytes.chunks_exact(4).map(|b| f32::from_le_bytes(b.try_into().expect("4 bytes"))).collect())
+}
+
+/// Decodes base64 (RFC 4648, standard alphabet, `=` padding).
+fn decode_base64(text: &str) -> Result<Vec<u8>, String> {
+    let value = |c: u8| -> Option<u32> {
+        Some(match c {
+            b'A'..=b'Z' => c - b'A',
+            b'a'..=b'z' => c - b'a' + 26,
+            b'0'..=b'9' => c - b'0' + 52,
+            b'+' => 62,
+            b'/' => 63,
+            _ => return None,
+        } as u32)
+    };
+    let digits = text.trim_end_matches('=').as_bytes();
+    let mut out = Vec::with_capacity(digits.len() * 3 / 4);
+    for chunk in digits.chunks(4) {
+        let mut n = 0u32;
+        for (k, &c) in chunk.iter().enumerate() {
+            n |= value(c).ok_or(format!("`{}` is not a base64 digit", c as char))? << (18 - 6 * k);
+        }
+        let bytes = n.to_be_bytes();
+        match chunk.len() {
+            4 => out.extend_from_slice(&bytes[1..4]),
+            3 => out.extend_from_slice(&bytes[1..3]),
+            2 => out.push(bytes[1]),
+            _ => return Err("base64 text of a length no bytes have".into()),
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+    use std::io::Write;
+
+    fn encode_base64(bytes: &[u8]) -> String {
+        const DIGITS: &[u8] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+        let mut out = String::new();
+        for chunk in bytes.chunks(3) {
+            let n = chunk.iter().enumerate().fold(0u32, |n, (k, &b)| n | u32::from(b) << (16 - 8 * k));
+            for k in 0..=chunk.len() {
+                out.push(DIGITS[(n >> (18 - 6 * k) & 63) as usize] as char);
+            }
+            out.push_str(&"=".repeat(3 - chunk.len()));
+        }
+        out
+    }
+
+    /// An `xgmSplineData` value in the layout Maya writes, split into lines of `width`
+    /// characters: one item whose arrays are `PrimitiveInfos`, `Positions` and `WIDTH_CV`.
+    pub(crate) fn value(strands: &[&[[f32; 3]]], widths: Option<&[f32]>, width: usize) -> Vec<String> {
+        let (mut infos, mut positions) = (Vec::new(), Vec::new());
+        let mut first = 0u32;
+        for s in strands {
+            infos.extend_from_slice(&first.to_le_bytes());
+            infos.extend_from_slice(&(s.len() as u64).to_le_bytes());
+            first += s.len() as u32;
+            positions.extend(s.iter().flatten().flat_map(|x| x.to_le_bytes()));
+        }
+        let mut arrays = vec![infos, positions];
+        let mut header = r#"{"Header":{"Version":1,"Type":"XgSplineData","GroupVersion":1,"GroupCount":1,"GroupBase64":true,"GroupDeflate":true},"Items":[{"Name":".boundMesh[0]","PrimitiveInfos":0,"Positions":1"#.to_string();
+        if let Some(w) = widths {
+            arrays.push(w.iter().flat_map(|x| x.to_le_bytes()).collect());
+            header.push_str(r#","WIDTH_CV":2"#);
+        }
+        header.push_str("}]}");
+        let mut data = Vec::new();
+        for (k, a) in arrays.iter().enumerate() {
+            data.extend_from_slice(&(0x43f6_0844u64 + k as u64).to_le_bytes());
+            data.extend_from_slice(&(a.len() as u64).to_le_bytes());
+            data.extend_from_slice(a);
+        }
+        let size: usize = arrays.iter().map(Vec::len).sum();
+        let mut group =
+            [0u64, arrays.len() as u64, size as u64, 0].iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<_>>();
+        let mut z = flate2::write::ZlibEncoder::new(Vec::new(), flate2::Compression::best());
+        z.write_all(&data).unwrap();
+        group.extend(z.finish().unwrap());
+        let mut out = Vec::new();
+        for (tag, text) in [("Header", header), ("Group", encode_base64(&group))] {
+            let lines: Vec<String> =
+                text.as_bytes().chunks(width).map(|c| String::from_utf8(c.to_vec()).unwrap()).collect();
+            out.extend([tag.to_string(), text.len().to_string(), lines.len().to_string()]);
+            out.extend(lines);
+        }
+        out
+    }
+
+    #[test]
+    fn splines_read_back_with_their_widths() {
+        let a: &[[f32; 3]] = &[[0.0, 0.0, 0.0], [0.0, 0.5, 0.0], [0.0, 1.0, 0.1]];
+        let b: &[[f32; 3]] = &[[1.0, 0.0, 0.0], [1.0, 2.0, 0.0]];
+        let s = spline_data(&value(&[a, b], Some(&[1.0, 0.5, 0.25, 2.0, 1.0]), 76)).unwrap();
+        assert_eq!(s.strands.len(), 2);
+        assert_eq!(s.strands[0][2], Vec3::new(0.0, 1.0, 0.1));
+        assert_eq!(s.strands[1], vec![Vec3::X, Vec3::new(1.0, 2.0, 0.0)]);
+        assert_eq!(s.widths, vec![vec![1.0, 0.5, 0.25], vec![2.0, 1.0]]);
+        // Without per-CV widths, every factor is 1.
+        let s = spline_data(&value(&[b], None, 5)).unwrap();
+        assert_eq!(s.widths, vec![vec![1.0, 1.0]]);
+    }
+
+    #[test]
+    fn damaged_spline_data_is_an_error_not_a_panic() {
+        let a: &[[f32; 3]] = &[[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        let good = value(&[a], Some(&[1.0, 1.0]), 60);
+        // Every word changed or dropped in turn, and every prefix.
+        for i in 0..good.len() {
+            let mut v = good.clone();
+            v[i] = "9999".into();
+            let _ = spline_data(&v);
+            v.remove(i);
+            let _ = spline_data(&v);
+            let _ = spline_data(&good[..i]);
+        }
+        let mut v = good.clone();
+        v[1] = "5".into();
+        assert!(spline_data(&v).unwrap_err().contains("promises 5"));
+        // A group header promising more than any group may hold.
+        let huge =
+            encode_base64(&[0u64, u64::MAX / 8, 1 << 40, 0].iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<_>>());
+        let mut v = good[..good.iter().position(|w| w == "Group").unwrap()].to_vec();
+        v.extend(["Group".into(), huge.len().to_string(), "1".into(), huge]);
+        assert!(spline_data(&v).unwrap_err().contains("too large"), "{:?}", spline_data(&v));
+        assert_eq!(decode_base64("AAECAw==").unwrap(), vec![0, 1, 2, 3]);
+        assert!(decode_base64("AA*A").is_err());
+    }
+}
