@@ -29,7 +29,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             lights: vec![
                 Light::Distant { direction: Vec3::new(0.4, 0.9, 0.6).normalize(), irradiance: Color::splat(3.0) }
                     .into(),
-                Light::Environment { radiance: Color::new(0.4, 0.45, 0.5) }.into(),
+                Light::Environment { radiance: Color::new(0.4, 0.45, 0.5), camera_visibility: 1.0 }.into(),
             ],
             meshes: vec![
                 MeshEntry {

@@ -35,7 +35,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
             lights: vec![
                 Light::Distant { direction: Vec3::new(0.45, 0.8, 0.4).normalize(), irradiance: Color::splat(3.0) }
                     .into(),
-                Light::Environment { radiance: Color::splat(DEFAULT_SKY_RADIANCE) }.into(),
+                Light::Environment { radiance: Color::splat(DEFAULT_SKY_RADIANCE), camera_visibility: 1.0 }.into(),
             ],
             meshes: vec![
                 MeshEntry {

@@ -80,6 +80,9 @@ pub enum Light {
     Environment {
         /// Radiance.
         radiance: Color,
+        /// Weight camera rays see it with (Arnold's `camera` on a sky dome): 1 shows it as
+        /// it lights, 0 leaves a black background; every other ray sees it whole.
+        camera_visibility: f32,
     },
     /// Radiance from every direction not blocked by geometry, read from an image
     /// (image-based lighting) and importance-sampled by its luminance.
@@ -158,7 +161,7 @@ impl Light {
                 let dir = (b1 * local.x + b2 * local.y + direction * local.z).normalize();
                 LightSample { dir, dist: f32::INFINITY, value: radiance * (2.0 * PI * (1.0 - cos_max)) }
             }
-            Light::Environment { radiance } => match normal {
+            Light::Environment { radiance, .. } => match normal {
                 Some(n) => {
                     let local = sampling::cosine_hemisphere(u, v);
                     let (b1, b2) = frame(n);
@@ -279,8 +282,18 @@ impl Light {
     /// lights, the environment map included: see [`Light::sky`]).
     pub fn background(&self) -> Color {
         match *self {
-            Light::Environment { radiance } => radiance,
+            Light::Environment { radiance, .. } => radiance,
             _ => Color::ZERO,
+        }
+    }
+
+    /// Weight camera rays see this light with where they meet it: an environment's own
+    /// (constant or mapped), 1 for every other light.
+    pub fn camera_visibility(&self) -> f32 {
+        match *self {
+            Light::Environment { camera_visibility, .. } => camera_visibility,
+            Light::EnvironmentMap(ref map) => map.camera_visibility(),
+            _ => 1.0,
         }
     }
 
@@ -288,7 +301,7 @@ impl Light {
     /// environment's, or an environment map's mean over the sphere; zero for other lights.
     pub fn ambient(&self) -> Color {
         match *self {
-            Light::Environment { radiance } => radiance,
+            Light::Environment { radiance, .. } => radiance,
             Light::EnvironmentMap(ref map) => map.mean_radiance(),
             _ => Color::ZERO,
         }
@@ -298,7 +311,7 @@ impl Light {
     /// (constant or mapped); zero for other lights.
     pub fn sky(&self, dir: Vec3) -> Color {
         match *self {
-            Light::Environment { radiance } => radiance,
+            Light::Environment { radiance, .. } => radiance,
             Light::EnvironmentMap(ref map) => map.radiance(dir),
             _ => Color::ZERO,
         }
@@ -426,7 +439,7 @@ mod tests {
 
     #[test]
     fn environment_irradiance_is_pi_times_radiance() {
-        let light = Light::Environment { radiance: Color::splat(0.5) };
+        let light = Light::Environment { radiance: Color::splat(0.5), camera_visibility: 1.0 };
         let e = irradiance(&light, Vec3::ZERO, Vec3::new(0.0, 0.6, 0.8), 32).x;
         assert!((e - 0.5 * PI).abs() < 1e-3 * PI, "{e}");
     }

@@ -22,9 +22,12 @@ pub struct World {
     pub materials: Vec<Material>,
     /// Objects and their BVHs.
     pub accel: Accel,
-    /// Sum of the constant environment lights' radiance (what unblocked rays see, besides
-    /// the environment maps).
+    /// Sum of the constant environment lights' radiance (what unblocked rays other than
+    /// camera rays see, besides the environment maps).
     pub background: Color,
+    /// What camera rays see of the constant environment lights: their radiance times
+    /// their camera visibility ([`Light::camera_visibility`]).
+    pub camera_background: Color,
     /// The light the tube and fur models' ambient term stands for: `background` plus every
     /// environment map's mean radiance over the sphere.
     pub ambient: Color,

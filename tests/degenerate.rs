@@ -26,7 +26,7 @@ fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3
         contents: Contents {
             lights: vec![
                 Light::Distant { direction: Vec3::new(0.3, 1.0, 0.5).normalize(), irradiance: Color::ONE }.into(),
-                Light::Environment { radiance: Color::splat(0.2) }.into(),
+                Light::Environment { radiance: Color::splat(0.2), camera_visibility: 1.0 }.into(),
             ],
             meshes: meshes
                 .into_iter()

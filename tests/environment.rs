@@ -98,7 +98,8 @@ fn blocks(film: &Film) -> Vec<Vec3> {
 fn a_constant_map_renders_as_the_constant_environment() {
     for integrator in [Integrator::Direct, Integrator::FinalGather, Integrator::Path] {
         let spp = if integrator == Integrator::Direct { 64 } else { 32 };
-        let constant = render(&scene(Light::Environment { radiance: Color::splat(0.8) }, integrator, spp));
+        let constant =
+            render(&scene(Light::Environment { radiance: Color::splat(0.8), camera_visibility: 1.0 }, integrator, spp));
         let map = render(&scene(constant_map(0.8), integrator, spp));
         let (a, b) = (blocks(&constant), blocks(&map));
         let mean = |v: &[Vec3]| v.iter().sum::<Vec3>() / v.len() as f32;
@@ -110,6 +111,51 @@ fn a_constant_map_renders_as_the_constant_environment() {
             .map(|(x, y)| (*x - *y).abs().max_element() / x.max_element().max(0.05))
             .fold(0.0, f32::max);
         assert!(worst < 0.08, "{integrator:?}: a block differs by {:.1} %", worst * 100.0);
+    }
+}
+
+/// A map brighter towards +y, seen by camera rays with weight `camera`.
+fn sky_map(camera: f32) -> Light {
+    let (w, h) = (32u32, 16u32);
+    let rgb: Vec<f32> = (0..w * h * 3).map(|i| 0.2 + 2.0 * (h - i / 3 / w) as f32 / h as f32).collect();
+    let placement = tress::light::MapPlacement::new(30.0, 1.0).seen_by_camera(camera);
+    Light::EnvironmentMap(EnvironmentMap::placed(w, h, &rgb, placement).unwrap())
+}
+
+/// Environments hidden from the camera (`camera_visibility` 0, Arnold's `camera` 0) are a
+/// black background and light the scene exactly as visible ones, with every integrator:
+/// every pixel all of whose samples hit geometry is bit for bit the same, the coverage
+/// (alpha) is the same, and a pixel of background only is black, or exactly half as
+/// bright at visibility one half.
+#[test]
+fn environments_hidden_from_the_camera_are_black_behind_and_light_alike() {
+    for integrator in [Integrator::Direct, Integrator::FinalGather, Integrator::Path] {
+        let film = |camera_visibility| {
+            let mut desc = scene(Light::Environment { radiance: Color::splat(0.3), camera_visibility }, integrator, 4);
+            desc.contents.lights.push(sky_map(camera_visibility).into());
+            render(&desc)
+        };
+        let (seen, hidden, half) = (film(1.0), film(0.0), film(0.5));
+        let (mut hit, mut sky) = (0, 0);
+        for ((s, h), q) in seen.pixels.iter().zip(&hidden.pixels).zip(&half.pixels) {
+            assert_eq!(s.coverage, h.coverage);
+            if s.coverage == 1.0 {
+                hit += 1;
+                assert_eq!(
+                    s.color.to_array().map(f32::to_bits),
+                    h.color.to_array().map(f32::to_bits),
+                    "{integrator:?}"
+                );
+            } else if s.coverage == 0.0 {
+                sky += 1;
+                assert!(s.color.min_element() > 0.2, "{integrator:?}: {}", s.color);
+                assert_eq!(h.color, Vec3::ZERO, "{integrator:?}");
+                assert_eq!(q.color, 0.5 * s.color, "{integrator:?}");
+            } else {
+                assert!(h.color.cmple(s.color).all(), "{integrator:?}: {} over {}", h.color, s.color);
+            }
+        }
+        assert!(hit > 1000 && sky > 30, "{integrator:?}: {hit} lit, {sky} background pixels");
     }
 }
 

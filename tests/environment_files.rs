@@ -161,7 +161,8 @@ fn usd_dome_textures_light_the_side_facing_their_bright_spot() {
     })
     .unwrap();
     let dome = "    asset inputs:texture:file = @./sky.exr@\n    float inputs:intensity = 1";
-    let lit = sides(&render(&usd_scene(dir.path(), dome)));
+    let lit_film = render(&usd_scene(dir.path(), dome));
+    let lit = sides(&lit_film);
     let (side, ratio) = brightest(lit);
     assert_eq!(side, "right", "{ratio}");
     assert!(ratio > 2.0, "{ratio}");
@@ -174,6 +175,15 @@ fn usd_dome_textures_light_the_side_facing_their_bright_spot() {
     assert!(ratio > 2.0, "{ratio}");
     let half = sides(&render(&usd_scene(dir.path(), &dome.replace("intensity = 1", "intensity = 0.5"))));
     assert!((half[0] / lit[0] - 0.5).abs() < 0.02, "{half:?} {lit:?}");
+    // Arnold-USD's `primvars:arnold:camera = 0` hides the textured dome from the camera,
+    // and the sphere is lit as before (pixels wholly on it bit for bit the same).
+    let hidden = usd_scene(dir.path(), &format!("{dome}\n    float primvars:arnold:camera = 0"));
+    let [tress::scene::LightSource::File(map)] = &hidden.contents.lights[..] else { panic!() };
+    assert_eq!(map.placement.camera_visibility(), 0.0);
+    let hidden = render(&hidden);
+    for (h, l) in hidden.pixels.iter().zip(&lit_film.pixels).filter(|(_, l)| l.coverage == 1.0) {
+        assert_eq!(h.color, l.color);
+    }
 }
 
 /// Maps are read when the scene is prepared: one that pbrt or USD names but that cannot be
@@ -186,12 +196,12 @@ fn unreadable_maps_are_a_constant_sky_of_the_lights_colour_said_so() {
     let dir = tempfile::tempdir().unwrap();
     let light = "LightSource \"infinite\" \"string mapname\" \"gone.exr\" \"rgb L\" [0.5 0.5 0.5]";
     let (world, _) = prepare(&pbrt_scene(dir.path(), light)).unwrap();
-    assert_eq!(world.lights, [Light::Environment { radiance: Color::splat(0.5) }]);
+    assert_eq!(world.lights, [Light::Environment { radiance: Color::splat(0.5), camera_visibility: 1.0 }]);
     let said = |w: &[String], what: &str| w.iter().any(|w| w.contains(what) && w.contains("constant sky"));
     assert!(said(&world.warnings, "gone.exr: could not open the file"), "{:?}", world.warnings);
     std::fs::write(dir.path().join("sky.exr"), b"not an exr").unwrap();
     let dome = "    asset inputs:texture:file = @./sky.exr@\n    float inputs:intensity = 2";
     let (world, _) = prepare(&usd_scene(dir.path(), dome)).unwrap();
-    assert_eq!(world.lights, [Light::Environment { radiance: Color::splat(2.0) }]);
+    assert_eq!(world.lights, [Light::Environment { radiance: Color::splat(2.0), camera_visibility: 1.0 }]);
     assert!(said(&world.warnings, "sky.exr: not a readable exr file"), "{:?}", world.warnings);
 }

@@ -81,7 +81,7 @@ fn furnace(radii: (f32, f32), material: Material, settings: RenderSettings) -> D
         camera: front_camera(),
         settings,
         contents: Contents {
-            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
+            lights: vec![Light::Environment { radiance: Color::ONE, camera_visibility: 1.0 }.into()],
             meshes: vec![mesh(
                 TriangleMesh::sphere(0.5, 48),
                 Material::Diffuse { color: Color::ONE },
@@ -147,7 +147,7 @@ fn hair_regularization_leaves_the_camera_hit_and_rough_hair_alone() {
         let s = RenderSettings { indirect_hair_roughness: r, ..settings(24, 24, 4, max_depth, Integrator::Path) };
         let mut desc = furnace((0.01, 0.01), white_hair(beta), s);
         desc.contents.lights = vec![
-            Light::Environment { radiance: Color::splat(0.1) }.into(),
+            Light::Environment { radiance: Color::splat(0.1), camera_visibility: 1.0 }.into(),
             Light::Sun {
                 direction: Vec3::new(0.3, 1.0, 0.5).normalize(),
                 radiance: Color::splat(1000.0),
@@ -175,7 +175,7 @@ fn lit_scene(integrator: Integrator, spp: u32, max_depth: u32, environment: bool
         Light::distant(Vec3::new(-0.5, 1.0, 0.3).normalize(), Color::splat(1.0), 0.1),
     ];
     if environment {
-        lights.push(Light::Environment { radiance: Color::splat(0.3) });
+        lights.push(Light::Environment { radiance: Color::splat(0.3), camera_visibility: 1.0 });
     }
     Description {
         camera: CameraDesc {
@@ -501,7 +501,7 @@ fn lone_strand(r0: f32, r1: f32, material: Material, integrator: Integrator, max
         camera: front_camera(),
         settings: RenderSettings { gather_rays: 4, ..settings(8, 8, 1, max_depth, integrator) },
         contents: Contents {
-            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
+            lights: vec![Light::Environment { radiance: Color::ONE, camera_visibility: 1.0 }.into()],
             hair: vec![hair(strands, material)],
             ..Default::default()
         },

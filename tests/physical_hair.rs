@@ -25,7 +25,7 @@ fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Descrip
         },
         settings: RenderSettings { width: 24, height: 24, spp: 1024, max_depth: 0, ..Default::default() },
         contents: Contents {
-            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
+            lights: vec![Light::Environment { radiance: Color::ONE, camera_visibility: 1.0 }.into()],
             meshes: vec![],
             hair: vec![HairEntry {
                 source: HairSource::Inline(strands),

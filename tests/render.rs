@@ -126,7 +126,7 @@ fn black_strands_on_white(
         },
         settings,
         contents: Contents {
-            lights: vec![Light::Environment { radiance: Color::ONE }.into()],
+            lights: vec![Light::Environment { radiance: Color::ONE, camera_visibility: 1.0 }.into()],
             hair: vec![HairEntry {
                 source: HairSource::Inline(strands),
                 material: Material::Tube(black).into(),

@@ -147,7 +147,9 @@ impl Imported {
             self.contents
                 .lights
                 .push(Light::Distant { direction, irradiance: Vec3::splat(std::f32::consts::PI) }.into());
-            self.contents.lights.push(Light::Environment { radiance: Vec3::splat(DEFAULT_SKY_RADIANCE) }.into());
+            self.contents.lights.push(
+                Light::Environment { radiance: Vec3::splat(DEFAULT_SKY_RADIANCE), camera_visibility: 1.0 }.into(),
+            );
         }
         (Description { camera, settings, contents: self.contents }, self.warnings)
     }

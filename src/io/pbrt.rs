@@ -826,6 +826,7 @@ impl Parser {
                     // A constant sky of radiance L gives a facing surface E = π L.
                     None => LightSource::Inline(Light::Environment {
                         radiance: colour * illuminance.map_or(1.0, |e| e / std::f32::consts::PI),
+                        camera_visibility: 1.0,
                     }),
                 }
             }
@@ -867,7 +868,7 @@ impl Parser {
         let bad = match &light {
             LightSource::Inline(
                 Light::Distant { irradiance: c, .. }
-                | Light::Environment { radiance: c }
+                | Light::Environment { radiance: c, .. }
                 | Light::Point { intensity: c, .. }
                 | Light::Spot { intensity: c, .. },
             )
@@ -1025,7 +1026,7 @@ fn scale_emission(l: &mut Light, k: f32) {
         | Light::Quad { radiance: c, .. }
         | Light::Sphere { radiance: c, .. }
         | Light::Sun { radiance: c, .. }
-        | Light::Environment { radiance: c } => *c *= k,
+        | Light::Environment { radiance: c, .. } => *c *= k,
         Light::EnvironmentMap(map) => *map = map.scaled(k),
     }
 }

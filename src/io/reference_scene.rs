@@ -66,7 +66,9 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
                 irradiance: radiance.into(),
             }
             .into(),
-            RefLight::ConstantEnvironment { radiance } => Light::Environment { radiance: radiance.into() }.into(),
+            RefLight::ConstantEnvironment { radiance } => {
+                Light::Environment { radiance: radiance.into(), camera_visibility: 1.0 }.into()
+            }
         })
         .collect();
     let meshes = s

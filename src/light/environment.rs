@@ -26,7 +26,8 @@ pub struct EnvironmentMap {
 }
 
 /// How an environment map lies on the sphere of directions and how bright it is: its turn
-/// (a rotation, or one with a reflection) and a factor on every pixel. A scene description
+/// (a rotation, or one with a reflection), a factor on every pixel, and the weight camera
+/// rays see it with. A scene description
 /// carries one for a map whose file is not read yet; the map read takes it as it is.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MapPlacement {
@@ -34,12 +35,24 @@ pub struct MapPlacement {
     to_map: Mat3,
     /// Factor on every pixel (intensity times 2^exposure).
     scale: f32,
+    /// Weight camera rays see the map with ([`crate::light::Light::camera_visibility`]).
+    camera_visibility: f32,
 }
 
 impl MapPlacement {
     /// Turned by `rotation` degrees about +y and scaled by `intensity`.
     pub fn new(rotation: f32, intensity: f32) -> MapPlacement {
-        MapPlacement { to_map: Mat3::from_rotation_y(-rotation.to_radians()), scale: intensity }
+        MapPlacement { to_map: Mat3::from_rotation_y(-rotation.to_radians()), scale: intensity, camera_visibility: 1.0 }
+    }
+
+    /// Seen by camera rays with weight `w` (finite, not negative) instead of 1.
+    pub fn seen_by_camera(self, w: f32) -> MapPlacement {
+        MapPlacement { camera_visibility: w, ..self }
+    }
+
+    /// The weight camera rays see the map with.
+    pub fn camera_visibility(self) -> f32 {
+        self.camera_visibility
     }
 
     /// Turned by `rotation` after its own turn: an orthogonal matrix, a rotation or one with
@@ -130,6 +143,9 @@ impl EnvironmentMap {
         if !(placement.scale.is_finite() && placement.scale >= 0.0) {
             return Err(format!("intensity {} must be finite and not negative", placement.scale));
         }
+        if !(placement.camera_visibility.is_finite() && placement.camera_visibility >= 0.0) {
+            return Err(format!("camera visibility {} must be finite and not negative", placement.camera_visibility));
+        }
         if !placement.to_map.is_finite() {
             return Err("the map's turn is not finite".into());
         }
@@ -150,6 +166,11 @@ impl EnvironmentMap {
     /// The same map with its radiance multiplied by `k` (finite, not negative).
     pub fn scaled(&self, k: f32) -> EnvironmentMap {
         EnvironmentMap { placement: self.placement.scaled(k), ..self.clone() }
+    }
+
+    /// The weight camera rays see the map with.
+    pub fn camera_visibility(&self) -> f32 {
+        self.placement.camera_visibility
     }
 
     /// Width and height in pixels.

@@ -211,7 +211,7 @@ fn lights(desc: &Description, warnings: &mut Vec<String>) -> Result<Vec<Light>, 
                 }
                 (Err(e), Some(radiance)) => {
                     warnings.push(format!("light {}: {e}: lit by a constant sky of the light's colour instead", i + 1));
-                    Light::Environment { radiance }
+                    Light::Environment { radiance, camera_visibility: f.placement.camera_visibility() }
                 }
                 (Err(e), None) => return Err(entry_error(("light", i), e)),
             },
@@ -279,9 +279,10 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = lights.iter().map(Light::background).sum();
+    let camera_background = lights.iter().map(|l| l.background() * l.camera_visibility()).sum();
     let ambient = lights.iter().map(Light::ambient).sum();
-    let world =
-        World { camera, settings: desc.settings.clone(), lights, materials, accel, background, ambient, warnings };
+    let settings = desc.settings.clone();
+    let world = World { camera, settings, lights, materials, accel, background, camera_background, ambient, warnings };
     Ok((world, PrepareTimes { load, build, build_cpu }))
 }
 
@@ -382,6 +383,7 @@ seed = 3
             materials: geometry.materials,
             accel: Accel::build(geometry.shapes),
             background: world.background,
+            camera_background: world.camera_background,
             ambient: world.ambient,
             warnings: Vec::new(),
         };

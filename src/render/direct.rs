@@ -156,7 +156,7 @@ pub(super) fn trace(
                 return (emitted(radiance), None);
             }
             let Some(hit) = hit else {
-                return (emitted(super::environment::sky(world, ray.dir, |_| 1.0)), None);
+                return (emitted(super::environment::sky(world, ray.dir, depth == 0, |_| 1.0)), None);
             };
             let (color, first) = shade(tracer, ray, &hit, depth, sampler, indirect, shadows);
             return (color, Some(first));
@@ -174,8 +174,8 @@ pub(super) fn trace(
     let mut shadows = SharedShadows::new(world.lights.len(), sampler);
     let color = loop {
         let Some(layer) = walk.next(tracer, ray).filter(|l| light.is_none_or(|(t, _)| l.hit.t < t)) else {
-            let behind =
-                light.map_or_else(|| super::environment::sky(world, ray.dir, |_| 1.0), |(_, radiance)| radiance);
+            let behind = light
+                .map_or_else(|| super::environment::sky(world, ray.dir, depth == 0, |_| 1.0), |(_, radiance)| radiance);
             break color + carried * emitted(behind);
         };
         let a = layer.opacity;
@@ -223,7 +223,7 @@ fn sample_light(
     match *light {
         // A constant environment is best sampled by a material that can sample its own
         // response (the hair BSDF, whose lobes the sphere's uniform samples would miss).
-        Light::Environment { radiance } => [
+        Light::Environment { radiance, .. } => [
             match at.material.sample_direction(&at.sp, at.wo, sampler) {
                 Some((dir, pdf)) => Some(LightSample { dir, dist: f32::INFINITY, value: radiance / pdf }),
                 None => light.sample(at.sp.p, normal, sampler.next_2d()),

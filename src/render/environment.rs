@@ -15,12 +15,15 @@ use glam::Vec3;
 /// Radiance a ray along `dir` that meets nothing brings back: the constant environment,
 /// plus every environment map times `map_weight(its density along dir)`, the MIS weight
 /// of a ray drawn by a material (1 for camera and specular rays, which light sampling
-/// cannot stand in for).
-pub(super) fn sky(world: &World, dir: Vec3, map_weight: impl Fn(f32) -> f32) -> Color {
-    let mut sky = world.background;
+/// cannot stand in for). A camera ray (`from_camera`) sees each environment times its
+/// camera visibility ([`Light::camera_visibility`]); reflected, refracted and scattered
+/// rays see it whole, so a sky hidden from the camera lights the scene unchanged.
+pub(super) fn sky(world: &World, dir: Vec3, from_camera: bool, map_weight: impl Fn(f32) -> f32) -> Color {
+    let mut sky = if from_camera { world.camera_background } else { world.background };
     for light in &world.lights {
         if let Light::EnvironmentMap(map) = light {
-            sky += map.radiance(dir) * map_weight(map.pdf(dir));
+            let seen = if from_camera { map.camera_visibility() } else { 1.0 };
+            sky += map.radiance(dir) * (map_weight(map.pdf(dir)) * seen);
         }
     }
     sky

@@ -40,9 +40,11 @@ fn hittable(light: &Light) -> bool {
 
 /// What a ray that meets nothing brings back: the constant environment, and the maps
 /// weighted against the light sampling that found them already when a material drew
-/// the ray (density `scatter_pdf`).
-fn sky(world: &World, dir: glam::Vec3, scatter_pdf: Option<f32>) -> Color {
-    super::environment::sky(world, dir, |map_pdf| scatter_pdf.map_or(1.0, |pdf| power_heuristic(pdf, map_pdf)))
+/// the ray (density `scatter_pdf`); as a camera ray sees them for the path's first ray
+/// (`vertex` 0).
+fn sky(world: &World, dir: glam::Vec3, vertex: u32, scatter_pdf: Option<f32>) -> Color {
+    let mis = |map_pdf| scatter_pdf.map_or(1.0, |pdf| power_heuristic(pdf, map_pdf));
+    super::environment::sky(world, dir, vertex == 0, mis)
 }
 
 /// The hit a path stops at: the nearest opaque hit, or a partial one chosen with
@@ -124,12 +126,12 @@ pub(super) fn trace_camera(
             radiance += beta * le * w;
             if hit.is_none() {
                 // The sun is a disk in the sky: the environment shines there too.
-                radiance += beta * sky(world, ray.dir, scatter_pdf);
+                radiance += beta * sky(world, ray.dir, vertex, scatter_pdf);
             }
             break;
         }
         let Some(hit) = hit else {
-            radiance += beta * sky(world, ray.dir, scatter_pdf);
+            radiance += beta * sky(world, ray.dir, vertex, scatter_pdf);
             break;
         };
         if vertex > world.settings.max_depth {

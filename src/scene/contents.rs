@@ -181,7 +181,7 @@ fn transform_light(l: &Light, m: &Affine3A) -> Light {
         Light::Sphere { center, radius, radiance } => {
             Light::Sphere { center: m.transform_point3(center), radius, radiance }
         }
-        Light::Environment { radiance } => Light::Environment { radiance },
+        Light::Environment { radiance, camera_visibility } => Light::Environment { radiance, camera_visibility },
         // Infinitely far: only the transform's orthogonal part turns it, its rotation and,
         // when the transform mirrors (its determinant is negative), that reflection.
         Light::EnvironmentMap(ref map) => Light::EnvironmentMap(map.rotated(crate::math::orthogonal_part(m))),

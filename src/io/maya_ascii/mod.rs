@@ -1088,8 +1088,9 @@ impl<'g> Reader<'g> {
             let along = m.transform_vector3(DVec3::NEG_Z).as_vec3().normalize_or(Vec3::NEG_Y);
             let light = match kind {
                 "directionalLight" => Light::Distant { direction: -along, irradiance: power * shading },
-                "ambientLight" => Light::Environment { radiance: power },
-                // Arnold's sky dome: a sky of that radiance. A texture on its colour is not read.
+                "ambientLight" => Light::Environment { radiance: power, camera_visibility: 1.0 },
+                // Arnold's sky dome: a sky of that radiance, seen by camera rays with the weight
+                // of its `camera` attribute. A texture on its colour is not read.
                 "aiSkyDomeLight" => {
                     if !self.inputs(n, &["sc", "color"]).is_empty() {
                         self.out.warnings.push(format!(
@@ -1097,7 +1098,17 @@ impl<'g> Reader<'g> {
                             node.name
                         ));
                     }
-                    Light::Environment { radiance: power }
+                    let camera_visibility = scalar(g, n, &["camera"], 1.0)? as f32;
+                    if !(camera_visibility.is_finite() && camera_visibility >= 0.0) {
+                        return Err((
+                            node.line,
+                            format!(
+                                "light {}: `camera` {camera_visibility} must be finite and not negative",
+                                node.name
+                            ),
+                        ));
+                    }
+                    Light::Environment { radiance: power, camera_visibility }
                 }
                 "pointLight" | "spotLight" => {
                     // Maya's decay rate 0 (No Decay, its default), 1 linear, 2 quadratic, 3

@@ -527,16 +527,38 @@ fn arnolds_sky_dome_is_a_sky_of_its_colour_intensity_and_exposure() {
     let s = dome(
         "\tsetAttr \".sc\" -type \"float3\" 0.5 0.25 1 ;\n\tsetAttr \".intensity\" 2;\n\tsetAttr \".ai_exposure\" 1;\n",
     );
-    assert_eq!(s.contents.lights, vec![Light::Environment { radiance: Vec3::new(2.0, 1.0, 4.0) }.into()]);
+    assert_eq!(
+        s.contents.lights,
+        vec![Light::Environment { radiance: Vec3::new(2.0, 1.0, 4.0), camera_visibility: 1.0 }.into()]
+    );
     assert!(s.warnings.iter().all(|w| !w.contains("aiSkyDomeLight (")), "a node tress reads: {:?}", s.warnings);
     // Node defaults: white at intensity 1.
-    assert_eq!(dome("").contents.lights, vec![Light::Environment { radiance: Vec3::ONE }.into()]);
+    assert_eq!(
+        dome("").contents.lights,
+        vec![Light::Environment { radiance: Vec3::ONE, camera_visibility: 1.0 }.into()]
+    );
     // A texture on its colour is said, and the constant colour lights.
     let s = dome("connectAttr \"file1.oc\" \"aiSkyDomeLightShape1.sc\";\n");
     assert_eq!(s.contents.lights.len(), 1);
     assert!(s.warnings.iter().any(|w| w.contains("aiSkyDomeLightShape1") && w.contains("texture")), "{:?}", s.warnings);
     // A hidden dome lights nothing.
     assert!(dome("\tsetAttr \".v\" no;\n").contents.lights.is_empty());
+    // A dome hidden from the camera (`camera` 0, as MtoA writes it) still lights; a weight
+    // in between is kept; a negative one is an error naming the node and its line.
+    for (w, weight) in [("0", 0.0), ("0.25", 0.25)] {
+        let s = dome(&format!("\tsetAttr \".camera\" {w};\n"));
+        assert_eq!(
+            s.contents.lights,
+            vec![Light::Environment { radiance: Vec3::ONE, camera_visibility: weight }.into()]
+        );
+    }
+    let e = read(
+        "//Maya ASCII 2020 scene\ncreateNode transform -n \"d\";\n\
+         createNode aiSkyDomeLight -n \"dShape\" -p \"d\";\n\tsetAttr \".camera\" -1;\n",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("dShape") && e.contains("camera") && e.contains("line 3"), "{e}");
 }
 
 #[test]

@@ -41,7 +41,10 @@ fn a_hair_scene_reads_camera_film_lights_curves_and_meshes() {
     assert_eq!(s.contents.lights.len(), 2);
     let LightSource::Inline(Light::Distant { direction, irradiance }) = s.contents.lights[0] else { panic!() };
     assert!((direction - Vec3::Z).length() < 1e-5 && irradiance == Vec3::splat(2.0));
-    assert_eq!(s.contents.lights[1], Light::Environment { radiance: Vec3::new(0.1, 0.2, 0.3) }.into());
+    assert_eq!(
+        s.contents.lights[1],
+        Light::Environment { radiance: Vec3::new(0.1, 0.2, 0.3), camera_visibility: 1.0 }.into()
+    );
     assert_eq!((s.contents.hair.len(), s.contents.meshes.len()), (1, 1));
     assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.4, 0.6) }.into());
     let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
@@ -387,7 +390,10 @@ fn image_infinite_lights_become_environment_maps_scaled_like_every_light() {
 fn pbrt_v3_light_scales_are_spectra() {
     // pbrt-v3's bunny-fur scene: `"color scale" [12 12 12]` on an infinite light.
     let s = read("WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5] \"color scale\" [12 6 3]\n").unwrap();
-    assert_eq!(s.contents.lights[0], Light::Environment { radiance: Vec3::new(6.0, 3.0, 1.5) }.into());
+    assert_eq!(
+        s.contents.lights[0],
+        Light::Environment { radiance: Vec3::new(6.0, 3.0, 1.5), camera_visibility: 1.0 }.into()
+    );
     let s = read("WorldBegin\nLightSource \"point\" \"float scale\" 2\n").unwrap();
     let LightSource::Inline(Light::Point { intensity, .. }) = s.contents.lights[0] else { panic!() };
     assert_eq!(intensity, Vec3::splat(2.0));

@@ -306,8 +306,9 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
             check("radiance", &radiance, 0.0)?;
             Light::Sphere { center: center.into(), radius, radiance: radiance.into() }
         }
-        LightToml::Environment { radiance, ref file, rotation, intensity, exposure } => {
+        LightToml::Environment { radiance, ref file, rotation, intensity, exposure, camera_visibility } => {
             check("rotation", &[rotation], ANY)?;
+            check("camera_visibility", &[camera_visibility], 0.0)?;
             check("intensity", &[intensity], 0.0)?;
             check("exposure", &[exposure], ANY)?;
             let scale = intensity * exposure.exp2();
@@ -320,7 +321,7 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
                     if rotation != 0.0 {
                         return Err("`rotation` turns an environment map: give it a `file`".into());
                     }
-                    Light::Environment { radiance: Vec3::from(radiance) * scale }
+                    Light::Environment { radiance: Vec3::from(radiance) * scale, camera_visibility }
                 }
                 // Read by `prepare`, which reports a file it cannot use.
                 (None, Some(file)) => {
@@ -329,7 +330,7 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
                         projection: Projection::LatLong,
                         tint: Color::ONE,
                         illuminance: None,
-                        placement: MapPlacement::new(rotation, scale),
+                        placement: MapPlacement::new(rotation, scale).seen_by_camera(camera_visibility),
                         fallback: None,
                     }))
                 }

@@ -270,6 +270,9 @@ pub(super) enum LightToml {
         /// Stops: the radiance is scaled by 2^exposure.
         #[serde(default)]
         exposure: f32,
+        /// Weight camera rays see it with.
+        #[serde(default = "one")]
+        camera_visibility: f32,
     },
 }
 
@@ -368,6 +371,9 @@ fn default_phong_specular() -> V3 {
 }
 fn default_phong_exponent() -> f32 {
     Material::DEFAULT_PHONG_EXPONENT
+}
+fn one() -> f32 {
+    1.0
 }
 fn one3() -> V3 {
     [1.0; 3]

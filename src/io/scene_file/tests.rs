@@ -81,6 +81,24 @@ fn wrong_type_and_missing_field_are_errors() {
     assert!(e.contains("laser"), "{e}");
 }
 
+/// `camera_visibility` weighs what camera rays see of an environment light, constant or
+/// mapped (1 when not given); a negative weight is an error naming the key.
+#[test]
+fn environment_lights_take_a_camera_visibility() {
+    let env = |extra: &str| parse(&format!("[[light]]\ntype = \"environment\"\n{extra}\n"));
+    let lights = |d: Description| d.contents.lights;
+    let constant = |w| vec![Light::Environment { radiance: Vec3::splat(0.5), camera_visibility: w }.into()];
+    assert_eq!(lights(env("radiance = [0.5, 0.5, 0.5]").unwrap()), constant(1.0));
+    assert_eq!(lights(env("radiance = [0.5, 0.5, 0.5]\ncamera_visibility = 0").unwrap()), constant(0.0));
+    let map = lights(env("file = \"sky.exr\"\ncamera_visibility = 0.25").unwrap());
+    let [LightSource::File(f)] = &map[..] else { panic!("{map:?}") };
+    assert_eq!(f.placement.camera_visibility(), 0.25);
+    let [LightSource::File(f)] = &lights(env("file = \"sky.exr\"").unwrap())[..] else { panic!() };
+    assert_eq!(f.placement.camera_visibility(), 1.0);
+    let e = env("radiance = [1, 1, 1]\ncamera_visibility = -1").unwrap_err().to_string();
+    assert!(e.contains("light 1") && e.contains("camera_visibility"), "{e}");
+}
+
 #[test]
 fn out_of_range_values_are_errors() {
     let e = parse("[render]\nresolution = [0, 10]\n").unwrap_err().to_string();

@@ -16,7 +16,8 @@
 //! +π and its right edge −π, longitude 0 along +Z and π/2 along +X. That is tress's map
 //! layout turned 180° about +Y. `DomeLight_1` first turns its pole from +Y to its
 //! `poleAxis` (`"Z"`, or `"scene"` on a Z-up stage); the dome's own transform turns it
-//! after that.
+//! after that. Arnold-USD's `primvars:arnold:camera` on a dome is the weight camera rays
+//! see it with (0 hides it from the camera; it still lights).
 
 use super::values::{boolean, number, token, value, vec3, Res};
 use super::Notes;
@@ -101,12 +102,22 @@ pub fn read_light(
                 };
             // +Y to +Z: 90° about +X.
             let pole = if pole_z { Mat3::from_rotation_x(0.5 * std::f32::consts::PI) } else { Mat3::IDENTITY };
+            // Arnold's weight for camera rays (`camera` on its sky dome), as Arnold-USD writes it.
+            let camera_visibility = number(value(prim, "primvars:arnold:camera", time)?, "primvars:arnold:camera")?
+                .map_or(1.0, |x| x as f32);
+            anyhow::ensure!(
+                camera_visibility.is_finite() && camera_visibility >= 0.0,
+                "`primvars:arnold:camera` must be finite and not negative"
+            );
             match dome_texture(prim, time, emission, notes)? {
                 Some(mut map) => {
-                    map.placement = map.placement.rotated(crate::math::orthogonal_part(transform) * pole);
+                    map.placement = map
+                        .placement
+                        .rotated(crate::math::orthogonal_part(transform) * pole)
+                        .seen_by_camera(camera_visibility);
                     return Ok(LightSource::File(map));
                 }
-                None => Light::Environment { radiance: emission },
+                None => Light::Environment { radiance: emission, camera_visibility },
             }
         }
         "SphereLight" => {

@@ -377,9 +377,10 @@ def SphereLight "Bulb" {
 def DistantLight "Sun" { float inputs:angle = 2 float inputs:intensity = 5 }
 def DistantLight "Key" { float inputs:angle = 0 float intensity = 2 }
 def DomeLight "Sky" { float inputs:intensity = 0.5 asset inputs:texture:file = @sky.exr@ }
+def DomeLight "Backdrop" { float inputs:intensity = 2 double primvars:arnold:camera = 0 }
 "#;
     let s = read_body(body);
-    assert_eq!(s.contents.lights.len(), 6);
+    assert_eq!(s.contents.lights.len(), 7);
     let LightSource::Inline(Light::Quad { corner, edge_u, edge_v, radiance }) = s.contents.lights[0] else {
         panic!("{:?}", s.contents.lights[0])
     };
@@ -401,9 +402,11 @@ def DomeLight "Sky" { float inputs:intensity = 0.5 asset inputs:texture:file = @
     assert!((irradiance - Vec3::splat(5.0)).length() < 1e-3, "{irradiance}");
     // A delta light, with an attribute spelled as before `inputs:`.
     assert_eq!(s.contents.lights[4], Light::Distant { direction: Vec3::Z, irradiance: Vec3::splat(2.0) }.into());
-    assert_eq!(s.contents.lights[5], Light::Environment { radiance: Vec3::splat(0.5) }.into());
+    assert_eq!(s.contents.lights[5], Light::Environment { radiance: Vec3::splat(0.5), camera_visibility: 1.0 }.into());
     // Its texture is missing: lit by its colour, said so with the file's name.
     assert!(s.warnings.iter().any(|w| w.contains("dome texture `sky.exr` is missing")), "{:?}", s.warnings);
+    // Arnold-USD's camera weight: hidden from the camera, lighting as before.
+    assert_eq!(s.contents.lights[6], Light::Environment { radiance: Vec3::splat(2.0), camera_visibility: 0.0 }.into());
 }
 
 #[test]
