@@ -23,7 +23,8 @@
 //!   size (reported); closed curves Arnold is not told to render (rig controls) are skipped.
 //! - **hairSystem** with its **follicles** (`follicle.oha → hairSystem.ih[i]`): the render
 //!   attributes of spec section 5 by short or long name, ramps included, and one guide per
-//!   follicle with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
+//!   follicle (its start curve, else its rest curve, else the output curve the file
+//!   stores for it) with its root UV (`.pu`, `.pv`). A follicle transform whose placement the
 //!   file does not store (it is computed by Maya from `.pu`, `.pv`) is placed on its
 //!   mesh, local X along the surface normal and Y along the U tangent.
 //! - **xgmSplineDescription**: an XGen interactive groom, the splines its `xgmSplineBase`
@@ -665,11 +666,17 @@ impl<'g> Reader<'g> {
         let mut root_uv = Vec::new();
         let mut missing = 0;
         for &(_, f) in &follicles {
+            // Its start curve, else its rest curve, else the output curve Maya computed
+            // from them when the file keeps only that.
+            let out_curves = g.outputs_of(f).filter(|c| matches!(plug_base(&c.src_attr), "oc" | "outCurve"));
+            let out_curves: Vec<usize> = out_curves.map(|c| c.dst).collect();
             let curve = self
                 .inputs(f, &["sp", "startPosition"])
                 .into_iter()
                 .chain(self.inputs(f, &["rp", "restPosition"]))
-                .find(|&c| self.kind(c) == "nurbsCurve");
+                .filter(|&c| self.kind(c) == "nurbsCurve")
+                .chain(out_curves.into_iter().filter(|&c| self.kind(c) == "nurbsCurve" && cc_block(g, c).is_some()))
+                .next();
             let points = match curve {
                 Some(c) => {
                     used[c] = true;
@@ -687,8 +694,18 @@ impl<'g> Reader<'g> {
                 _ => missing += 1,
             }
         }
+        if follicles.is_empty() {
+            self.out.warnings.push(format!("{}: the hair system has no follicles: no hair", node.name));
+            return Ok(());
+        }
         if missing > 0 {
-            self.out.warnings.push(format!("{}: {missing} follicle(s) without a start curve give no hair", node.name));
+            // Maya grows a follicle's hair from its start curve: the hair's length is an
+            // argument of the script that makes that curve (`createHairCurveNode`), held by
+            // no node, so a follicle without one has no hair to draw.
+            self.out.warnings.push(format!(
+                "{}: {missing} follicle(s) without a start, rest or output curve give no hair",
+                node.name
+            ));
         }
         if curves.strand_count() == 0 {
             self.out.warnings.push(format!("{}: no follicle with a curve: the hair system gives no hair", node.name));
@@ -717,7 +734,7 @@ impl<'g> Reader<'g> {
     fn curve_nurbs(&mut self, n: usize) -> Res<Option<(Nurbs, bool)>> {
         let g = self.g;
         let node = &g.nodes[n];
-        let block = |m: usize| g.nodes[m].attrs.iter().rev().find(|a| a.name == "cc" || a.name == "cached");
+        let block = |m: usize| cc_block(g, m);
         let from = match block(n) {
             Some(_) => n,
             None => {
@@ -1461,6 +1478,11 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<TriangleMesh>> {
         mesh.normals = Some(original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect());
     }
     Ok(Some(mesh))
+}
+
+/// The geometry a curve node stores (its last `.cc` block), if any.
+fn cc_block(g: &Graph, n: usize) -> Option<&parse::Attr> {
+    g.nodes[n].attrs.iter().rev().find(|a| a.name == "cc" || a.name == "cached")
 }
 
 /// Reads a `.cc` block: `degree spans form rational dimension`, the knot count and knots

@@ -844,3 +844,33 @@ fn xgen_interactive_grooms_are_drawn_from_the_spline_data_in_the_file() {
         s.warnings
     );
 }
+
+#[test]
+fn follicles_without_a_start_curve_use_their_output_curve_or_give_no_hair() {
+    let system = "createNode transform -n hs;\ncreateNode hairSystem -n hss -p hs;\n";
+    let follicle = |n: u32, out: &str| {
+        format!(
+            "createNode transform -n f{n};\ncreateNode follicle -n f{n}s -p f{n};\n\tsetAttr \".pu\" 0.5;\n\
+             connectAttr \"f{n}s.oha\" \"hss.ih[{n}]\";\n{out}"
+        )
+    };
+    // The output curve Maya computed, stored in the file: the follicle's guide.
+    let out = "createNode transform -n oc1;\ncreateNode nurbsCurve -n oc1s -p oc1;\n\
+               \tsetAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 3 0;\n\
+               connectAttr \"f0s.oc\" \"oc1s.cr\";\n";
+    let s = read(&format!("{system}{}{}", follicle(0, out), follicle(1, ""))).unwrap();
+    let GuideSource::Inline(g) = &s.contents.hair_systems[0].guides else { panic!("inline") };
+    assert_eq!(g.curves.strand_count(), 1);
+    let tip = g.curves.points[1];
+    assert_eq!((tip[0], tip[1], tip[2]), (0.0, 3.0, 0.0));
+    assert_eq!(g.root_uv.as_ref().unwrap()[0], [0.5, 0.0]);
+    assert!(s.contents.hair.is_empty(), "the output curve is not drawn again as a free curve");
+    assert!(
+        s.warnings.iter().any(|w| w.contains("1 follicle(s) without a start, rest or output curve")),
+        "{:?}",
+        s.warnings
+    );
+    // A hair system without follicles says so.
+    let s = read(system).unwrap();
+    assert!(s.warnings.iter().any(|w| w.contains("hss: the hair system has no follicles")), "{:?}", s.warnings);
+}
