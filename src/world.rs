@@ -53,6 +53,10 @@ pub struct RenderSettings {
     /// for a small bias; docs/validation.md measures it); 0 leaves every vertex as the
     /// material says, the unbiased path tracer.
     pub indirect_hair_roughness: f32,
+    /// The largest colour channel a camera sample may have: a brighter sample is scaled
+    /// down to it, hue kept (fewer fireflies, a darker and biased image; pbrt-v4's `Film`
+    /// `maxcomponentvalue`). Infinite leaves every sample as it is.
+    pub max_sample_value: f32,
     /// Worker threads; 0 uses every core.
     pub threads: usize,
     /// Level of detail for the strand sets that ask for it; `false` renders every strand.
@@ -142,6 +146,7 @@ impl Default for RenderSettings {
             seed: 0,
             max_depth: 5,
             indirect_hair_roughness: 0.5,
+            max_sample_value: f32::INFINITY,
             threads: 0,
             integrator: Integrator::Direct,
             transparency_layers: 8,

@@ -234,3 +234,34 @@ fn camera_clip_planes_cut_what_the_camera_sees() {
     let err = tress::io::scene_file::parse(&scene("clip = [2.0, 1.0]"), Path::new("clip.toml"), None).unwrap_err();
     assert!(err.to_string().contains("clip.toml") && err.to_string().contains("`clip`"), "{err}");
 }
+
+/// `max_sample_value` scales every camera sample down to it (pbrt-v4's
+/// `maxcomponentvalue`): with a small, very bright sphere light over the demo's hair, the
+/// unclamped image has pixels far above the bound, the clamped one none (a pixel is the
+/// mean of its samples), every pixel is at most as bright as unclamped, the image is the
+/// same bit for bit with one and two threads, and a bound no sample reaches changes no bit.
+#[test]
+fn a_sample_clamp_bounds_every_sample_whatever_the_thread_count() {
+    use tress::light::Light;
+    use tress::math::Color;
+    let render = |max_sample_value: f32, threads: usize| {
+        let mut desc = tress::demo::description(2000, 1);
+        let s = &mut desc.settings;
+        (s.width, s.height, s.spp, s.max_sample_value) = (64, 48, 4, max_sample_value);
+        let bulb = Light::Sphere { center: glam::Vec3::new(0.3, 0.6, 0.5), radius: 0.05, radiance: Color::splat(2e4) };
+        desc.contents.lights.push(bulb.into());
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        pool.install(|| tress::render::render(&prepare(&desc).unwrap().0, None).0)
+    };
+    let bits = |f: &Film| f.pixels.iter().flat_map(|p| p.color.to_array().map(f32::to_bits)).collect::<Vec<_>>();
+    let max = 2.0;
+    let (free, clamped) = (render(f32::INFINITY, 2), render(max, 1));
+    let brightest = |f: &Film| f.pixels.iter().map(|p| p.color.max_element()).fold(0.0, f32::max);
+    assert!(brightest(&free) > 100.0 * max, "the test needs a firefly-bright light: {}", brightest(&free));
+    assert!(brightest(&clamped) <= max * (1.0 + 1e-6), "{}", brightest(&clamped));
+    for (c, f) in clamped.pixels.iter().zip(&free.pixels) {
+        assert!(c.color.cmple(f.color).all(), "{} over {}", c.color, f.color);
+    }
+    assert_eq!(bits(&clamped), bits(&render(max, 2)));
+    assert_eq!(bits(&free), bits(&render(1e30, 1)));
+}

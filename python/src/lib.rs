@@ -59,6 +59,7 @@ impl PyDescription {
         d.set_item("seed", s.seed)?;
         d.set_item("max_depth", s.max_depth)?;
         d.set_item("indirect_hair_roughness", s.indirect_hair_roughness)?;
+        d.set_item("max_sample_value", s.max_sample_value)?;
         d.set_item("threads", s.threads)?;
         d.set_item("lod", s.lod)?;
         d.set_item("integrator", integrator_name(s.integrator))?;

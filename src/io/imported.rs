@@ -29,6 +29,9 @@ pub struct Imported {
     pub max_depth: Option<u32>,
     /// The integrator the file's renderer would use, if it says.
     pub integrator: Option<Integrator>,
+    /// The largest colour channel of a camera sample (tress's `max_sample_value`), if the
+    /// file gives one.
+    pub max_sample_value: Option<f32>,
     /// Lights (in world space) and entries, with their geometry inline; fur's `mesh`
     /// indexes its meshes (see [`super::maya_ascii::fur_nodes`]).
     pub contents: Contents,
@@ -133,6 +136,7 @@ impl Imported {
         settings.spp = self.spp.unwrap_or(settings.spp);
         settings.max_depth = self.max_depth.unwrap_or(settings.max_depth);
         settings.integrator = self.integrator.unwrap_or(settings.integrator);
+        settings.max_sample_value = self.max_sample_value.unwrap_or(settings.max_sample_value);
         let camera = match self.camera.take() {
             Some(c) => c,
             None => {

@@ -581,6 +581,16 @@ impl Parser {
                     return Err((line, format!("Film iso {iso} and scale {scale} must be positive")));
                 }
                 self.image_scale *= iso / 100.0 * scale;
+                // pbrt-v4 scales a sample whose largest channel is above it down to it,
+                // tress's `max_sample_value` (applied to the samples as tress renders them,
+                // the lights already scaled by the sensor as pbrt's sample values are).
+                if p.get("maxcomponentvalue").is_some() {
+                    let max = p.float("maxcomponentvalue", f64::INFINITY)?;
+                    if max.is_nan() || max <= 0.0 {
+                        return Err((line, format!("Film maxcomponentvalue {max} must be positive")));
+                    }
+                    self.out.max_sample_value = Some(max as f32);
+                }
                 // Where pbrt writes its image: nothing to do with tress's.
                 p.ignore(&["filename"]);
                 self.check_used("Film", &kind, &p);

@@ -144,6 +144,7 @@ fn render_pixel(tracer: &mut Tracer, (x, y): (u32, u32), shadows: &mut PixelShad
         }
         shadows.trace(tracer, &mut colors);
         for (&color, &key) in colors.iter().zip(&keys) {
+            let color = clamped(color, world.settings.max_sample_value);
             sum += color;
             spread.add(color, key);
         }
@@ -156,6 +157,19 @@ fn render_pixel(tracer: &mut Tracer, (x, y): (u32, u32), shadows: &mut PixelShad
     pixel.coverage = hits as f32 / taken as f32;
     pixel.samples = taken as f32;
     pixel
+}
+
+/// `color` scaled down, hue kept, so that its largest channel is at most `max`: what
+/// pbrt-v4's RGBFilm does to each sample before adding it to its pixel
+/// (`maxComponentValue`; Pharr, Jakob and Humphreys, PBR 4th ed., section 5.4.5). Per
+/// sample, so the image does not depend on how pixels are split between threads.
+fn clamped(color: Color, max: f32) -> Color {
+    let m = color.max_element();
+    if m > max {
+        color * (max / m)
+    } else {
+        color
+    }
 }
 
 #[cfg(test)]

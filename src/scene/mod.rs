@@ -225,6 +225,9 @@ impl Description {
         if !(0.0..=1.0).contains(&r) {
             return Err(PrepareError::Invalid(format!("indirect_hair_roughness {r} is out of range (0 to 1)")));
         }
+        if s.max_sample_value.is_nan() || s.max_sample_value <= 0.0 {
+            return Err(PrepareError::Invalid(format!("max_sample_value {} must be positive", s.max_sample_value)));
+        }
         self.contents.validate()
     }
 }

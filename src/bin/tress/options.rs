@@ -27,6 +27,10 @@ pub struct Overrides {
     /// regularization; 0 turns it off).
     #[arg(long, value_name = "R")]
     pub indirect_hair_roughness: Option<f32>,
+    /// The largest colour channel a camera sample may have: brighter samples are scaled
+    /// down to it, hue kept (fewer fireflies, a darker image).
+    #[arg(long, value_name = "V")]
+    pub max_sample_value: Option<f32>,
     /// Partial hits collected per traversal through semi-transparent hair (1 re-traces
     /// after every hit, the slow way).
     #[arg(long)]
@@ -159,6 +163,9 @@ fn apply(desc: &mut Description, o: &Overrides) {
     }
     if let Some(r) = o.indirect_hair_roughness {
         s.indirect_hair_roughness = r;
+    }
+    if let Some(v) = o.max_sample_value {
+        s.max_sample_value = v;
     }
     if let Some(f) = o.filter {
         s.filter = f;

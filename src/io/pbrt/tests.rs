@@ -335,7 +335,7 @@ fn unused_and_unknown_parameters_are_reported_once_with_file_and_line() {
     let main = dir.path().join("main.pbrt");
     std::fs::write(
         &main,
-        "Film \"rgb\" \"string filename\" \"out.exr\" \"float maxcomponentvalue\" 10\nWorldBegin\nInclude \"spheres.pbrt\"\n",
+        "Film \"rgb\" \"string filename\" \"out.exr\" \"float maxcomponentvalue\" 10 \"float diagonal\" 35\nWorldBegin\nInclude \"spheres.pbrt\"\n",
     )
     .unwrap();
     let s = read_pbrt(&main).unwrap();
@@ -346,11 +346,15 @@ fn unused_and_unknown_parameters_are_reported_once_with_file_and_line() {
         [format!("{sub}: line 1: Shape \"sphere\": parameter \"float zmin\" is not used (and 1 more times)")]
     );
     assert_eq!(of("bogus"), [format!("{sub}: line 3: Shape \"sphere\": parameter \"float bogus\" is not used")]);
-    assert_eq!(of("maxcomponentvalue").len(), 1);
     // The file read is named once, by the caller's prefix.
-    assert!(of("maxcomponentvalue")[0].starts_with("line 1: Film \"rgb\""), "{:?}", of("maxcomponentvalue"));
-    // Parameters tress reads, and the output file name, are not reported.
+    assert_eq!(of("diagonal").len(), 1);
+    assert!(of("diagonal")[0].starts_with("line 1: Film \"rgb\""), "{:?}", of("diagonal"));
+    // Parameters tress reads, and the output file name, are not reported: the film's
+    // sample clamp is applied, as tress's `max_sample_value`.
     assert!(of("radius").is_empty() && of("filename").is_empty(), "{:?}", s.warnings);
+    assert!(of("maxcomponentvalue").is_empty(), "{:?}", s.warnings);
+    assert_eq!(s.max_sample_value, Some(10.0));
+    assert_eq!(s.into_description().0.settings.max_sample_value, 10.0);
 }
 
 #[test]

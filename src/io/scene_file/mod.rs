@@ -122,6 +122,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         seed: r.seed,
         max_depth: r.max_depth,
         indirect_hair_roughness: r.indirect_hair_roughness,
+        max_sample_value: r.max_sample_value,
         threads: r.threads,
         lod: r.lod,
         integrator,

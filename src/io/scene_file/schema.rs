@@ -129,6 +129,7 @@ pub(super) struct RenderToml {
     pub(super) seed: u32,
     pub(super) max_depth: u32,
     pub(super) indirect_hair_roughness: f32,
+    pub(super) max_sample_value: f32,
     pub(super) threads: usize,
     pub(super) lod: bool,
     /// `direct`, `final-gather` or `path`.
@@ -149,6 +150,7 @@ impl Default for RenderToml {
             seed: d.seed,
             max_depth: d.max_depth,
             indirect_hair_roughness: d.indirect_hair_roughness,
+            max_sample_value: d.max_sample_value,
             threads: d.threads,
             lod: d.lod,
             integrator: None,
