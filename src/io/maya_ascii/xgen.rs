@@ -287,34 +287,16 @@ fn floats(bytes: &[u8], what: &str) -> Result<Vec<f32>, String> {
     Ok(bytes.chunks_exact(4).map(|b| f32::from_le_bytes(b.try_into().expect("4 bytes"))).collect())
 }
 
-/// Decodes base64 (RFC 4648, standard alphabet, `=` padding).
+/// Decodes a group's base64 text (RFC 4648, standard alphabet), with or without its `=`
+/// padding.
 fn decode_base64(text: &str) -> Result<Vec<u8>, String> {
-    let value = |c: u8| -> Option<u32> {
-        Some(match c {
-            b'A'..=b'Z' => c - b'A',
-            b'a'..=b'z' => c - b'a' + 26,
-            b'0'..=b'9' => c - b'0' + 52,
-            b'+' => 62,
-            b'/' => 63,
-            _ => return None,
-        } as u32)
-    };
-    let digits = text.trim_end_matches('=').as_bytes();
-    let mut out = Vec::with_capacity(digits.len() * 3 / 4);
-    for chunk in digits.chunks(4) {
-        let mut n = 0u32;
-        for (k, &c) in chunk.iter().enumerate() {
-            n |= value(c).ok_or(format!("`{}` is not a base64 digit", c as char))? << (18 - 6 * k);
-        }
-        let bytes = n.to_be_bytes();
-        match chunk.len() {
-            4 => out.extend_from_slice(&bytes[1..4]),
-            3 => out.extend_from_slice(&bytes[1..3]),
-            2 => out.push(bytes[1]),
-            _ => return Err("base64 text of a length no bytes have".into()),
-        }
-    }
-    Ok(out)
+    use base64::engine::{DecodePaddingMode, GeneralPurpose, GeneralPurposeConfig};
+    use base64::Engine;
+    const BASE64: GeneralPurpose = GeneralPurpose::new(
+        &base64::alphabet::STANDARD,
+        GeneralPurposeConfig::new().with_decode_padding_mode(DecodePaddingMode::Indifferent),
+    );
+    BASE64.decode(text).map_err(|e| format!("a group is not base64: {e}"))
 }
 
 #[cfg(test)]
@@ -323,16 +305,8 @@ pub(super) mod tests {
     use std::io::Write;
 
     fn encode_base64(bytes: &[u8]) -> String {
-        const DIGITS: &[u8] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-        let mut out = String::new();
-        for chunk in bytes.chunks(3) {
-            let n = chunk.iter().enumerate().fold(0u32, |n, (k, &b)| n | u32::from(b) << (16 - 8 * k));
-            for k in 0..=chunk.len() {
-                out.push(DIGITS[(n >> (18 - 6 * k) & 63) as usize] as char);
-            }
-            out.push_str(&"=".repeat(3 - chunk.len()));
-        }
-        out
+        use base64::Engine;
+        base64::engine::general_purpose::STANDARD.encode(bytes)
     }
 
     /// An `xgmSplineData` value in the layout Maya writes, split into lines of `width`
@@ -412,6 +386,7 @@ pub(super) mod tests {
         v.extend(["Group".into(), huge.len().to_string(), "1".into(), huge]);
         assert!(spline_data(&v).unwrap_err().contains("too large"), "{:?}", spline_data(&v));
         assert_eq!(decode_base64("AAECAw==").unwrap(), vec![0, 1, 2, 3]);
+        assert_eq!(decode_base64("AAECAw").unwrap(), vec![0, 1, 2, 3]);
         assert!(decode_base64("AA*A").is_err());
     }
 }
