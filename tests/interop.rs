@@ -75,6 +75,41 @@ fn a_pbrt_curve_scene_renders_its_curves_over_their_control_points() {
     assert!(film.pixels.iter().filter(|p| p.strand_id >= 0.0).count() > 100);
 }
 
+/// The mean radiance of the hair pixels of a Maya file's render.
+fn maya_hair_mean(text: &str) -> f32 {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("hair.ma");
+    std::fs::write(&path, text).unwrap();
+    let (mut desc, _) = read_imported(&path).unwrap().into_description();
+    (desc.settings.width, desc.settings.height, desc.settings.spp) = (48, 36, 4);
+    let film = render(&desc);
+    let hair: Vec<Vec3> = film.pixels.iter().filter(|p| p.strand_id >= 0.0).map(|p| p.color).collect();
+    assert!(hair.len() > 100, "{} hair pixels", hair.len());
+    hair.iter().sum::<Vec3>().element_sum() / (3.0 * hair.len() as f32)
+}
+
+#[test]
+fn maya_curves_with_arnolds_standard_hair_darken_with_melanin() {
+    // Twenty thick curves side by side under a curve collector with an aiStandardHair.
+    let mut text = String::from(
+        "createNode transform -n col;\ncreateNode aiCurveCollector -n cols -p col;\n\tsetAttr \".aiCurveWidth\" 0.1;\n",
+    );
+    for i in 0..20 {
+        let x = i as f32 * 0.1;
+        text += &format!(
+            "createNode transform -n c{i} -p col;\ncreateNode nurbsCurve -n c{i}s -p c{i};\n\
+             \tsetAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 {x} 0 0 {x} 2 0;\n"
+        );
+    }
+    let shaded = |melanin: f32| {
+        maya_hair_mean(&format!(
+            "{text}createNode aiStandardHair -n sh;\n\tsetAttr \".melanin\" {melanin};\nconnectAttr \"sh.out\" \"cols.aiCurveShader\";\n"
+        ))
+    };
+    let (white, black) = (shaded(0.0), shaded(1.0));
+    assert!(black < 0.25 * white, "melanin 1: {black}, melanin 0: {white}");
+}
+
 #[test]
 fn the_example_scenes_of_every_format_render() {
     let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");

@@ -5,6 +5,7 @@
 //! the dispatch by extension ([`read_mesh`], [`read_imported`]) is here, so no reader
 //! imports another.
 
+pub mod arnold_hair;
 pub mod cem_hair;
 pub mod gzip;
 pub mod imported;

@@ -73,7 +73,7 @@ use crate::light::{Light, MapPlacement};
 use crate::scene::{
     CameraDesc, EnvironmentFile, HairEntry, HairSource, LightSource, MeshEntry, MeshSource, Projection,
 };
-use crate::shading::hair_bsdf::{color_polynomial, Absorption, HairParams, PhysicalHair};
+use crate::shading::hair_bsdf::{color_from_sigma_a, Absorption, HairParams, PhysicalHair};
 use crate::shading::Material;
 use crate::world::Integrator;
 use glam::{Affine3A, DMat4, DVec3, Vec3};
@@ -1284,9 +1284,7 @@ fn hair_material(p: &Params, w: &mut BTreeSet<String>) -> Res<PhysicalHair> {
     let (beta_m, beta_n) = (beta("beta_m", defaults.beta_m)?, beta("beta_n", defaults.beta_n)?);
     let absorption = if p.get("sigma_a").is_some() {
         let s = p.color("sigma_a", Vec3::ZERO, w)?;
-        // Chiang et al. 2016 §4.2 inverted: C = exp(−sqrt(σ_a) · poly(β_n)).
-        let k = color_polynomial(beta_n);
-        let c = Vec3::from_array(s.to_array().map(|x| (-(x.max(0.0)).sqrt() * k).exp()));
+        let c = color_from_sigma_a(s, beta_n);
         if c.min_element() < 1e-4 {
             w.insert("sigma_a beyond what a colour can carry (very dark hair) is clamped".into());
         }

@@ -160,9 +160,7 @@ impl PhysicalHair {
         let alpha = params.alpha_degrees.to_radians();
         let shift = [-2.0 * alpha, alpha, 3.0 * alpha].map(|a| a.sin_cos());
         let sigma_a = match params.absorption {
-            Absorption::Melanin { eumelanin, pheomelanin } => {
-                EUMELANIN_SIGMA_A * eumelanin + PHEOMELANIN_SIGMA_A * pheomelanin
-            }
+            Absorption::Melanin { eumelanin, pheomelanin } => sigma_a_from_melanin(eumelanin, pheomelanin),
             Absorption::Color(c) => sigma_a_from_color(c, beta_n),
             Absorption::FromStrands => Color::ZERO,
         };
@@ -209,9 +207,7 @@ impl PhysicalHair {
     /// The colour the absorption stands for (the inverse of Chiang's mapping): what the
     /// material shows as a Lambertian surface when it is put on a mesh.
     pub fn surface_color(&self, strand_color: Option<Color>) -> Color {
-        let sigma_a = self.sigma_a(strand_color);
-        let k = color_polynomial(self.params.beta_n.clamp(MIN_BETA, 1.0));
-        Color::from_array(sigma_a.to_array().map(|s| (-s.max(0.0).sqrt() * k).exp()))
+        color_from_sigma_a(self.sigma_a(strand_color), self.params.beta_n.clamp(MIN_BETA, 1.0))
     }
 
     /// The BSDF at a hit `h` across the fibre (clamped to [-1, 1]) with absorption `sigma_a`.
@@ -280,6 +276,18 @@ pub fn color_polynomial(beta_n: f32) -> f32 {
 pub fn sigma_a_from_color(color: Color, beta_n: f32) -> Color {
     let k = color_polynomial(beta_n);
     Color::from_array(color.to_array().map(|c| (c.clamp(1e-4, 1.0).ln() / k).powi(2)))
+}
+
+/// Chiang §4.2 inverted, C = exp(−√σ_a · poly(β_n)): the colour whose absorption is
+/// `sigma_a` (what [`sigma_a_from_color`] turns back into it, down to its 1e-4 floor).
+pub fn color_from_sigma_a(sigma_a: Color, beta_n: f32) -> Color {
+    let k = color_polynomial(beta_n);
+    Color::from_array(sigma_a.to_array().map(|s| (-s.max(0.0).sqrt() * k).exp()))
+}
+
+/// σ_a of the pigment concentrations (d'Eon §6.1, with Chiang §4.1's coefficients).
+pub fn sigma_a_from_melanin(eumelanin: f32, pheomelanin: f32) -> Color {
+    EUMELANIN_SIGMA_A * eumelanin + PHEOMELANIN_SIGMA_A * pheomelanin
 }
 
 /// The frame of a fibre at a hit, and the hit's offset `h` across the fibre.

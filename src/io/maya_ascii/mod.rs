@@ -50,6 +50,12 @@
 //!   `aiAreaLight` (a quad) always lights that way, and `aiSkyDomeLight` is a sky of
 //!   radiance colour (`.sc`) × intensity × 2^exposure.
 //!
+//! - **hair shading** (docs/interop.md): an `aiStandardHair` as MtoA assigns it (a curve's
+//!   `aiCurveCollector`, object set or own `aiCurveShader`; a hair system's `aiHairShader`
+//!   with `aiOverrideHair`) becomes the physical material ([`super::arnold_hair`]); without
+//!   one, when Arnold renders the file, the `standard_hair` MtoA makes (Arnold's defaults
+//!   on curves; a diffuse one of the hair colour on hair systems); else tube shading.
+//!
 //! Every other node type is skipped, all of them together in one warning.
 
 pub mod fur_nodes;
@@ -58,6 +64,7 @@ pub mod parse;
 pub mod xgen;
 
 use self::parse::{Face, Graph, Value};
+use super::arnold_hair::{Param, StandardHair};
 use super::imported::{relative_width, Imported, RELATIVE_WIDTH};
 use crate::error::LoadError;
 use crate::geometry::curve::Nurbs;
@@ -79,6 +86,8 @@ const PROCEDURAL_MESHES: &[&str] = &["polySphere", "polyPlane", "polyTorus"];
 /// from to the deformed one: a shape's `inMesh` and `create`, a deformer's
 /// `input[i].inputGeometry`, `groupParts.inputGeometry`.
 const GEOMETRY_INPUTS: &[&str] = &["i", "inMesh", "cr", "create", "ig", "inputGeometry"];
+/// The attribute MtoA takes a curve's or curve collector's shader from, short and long.
+const CURVE_SHADER: [&str; 2] = ["ai_curve_shader", "aiCurveShader"];
 /// MtoA's default `aiCurveWidth`, in centimetres.
 const ARNOLD_CURVE_WIDTH: f64 = 0.01;
 /// Linear pieces per span when sampling a curve of degree 2 or more.
@@ -117,7 +126,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 50] = [
+const KNOWN: [&str; 51] = [
     "transform",
     "mesh",
     "nurbsCurve",
@@ -132,6 +141,7 @@ const KNOWN: [&str; 50] = [
     "aiSkyDomeLight",
     "aiAreaLight",
     "aiCurveCollector",
+    "aiStandardHair",
     "FurDescription",
     "FurFeedback",
     "FurGlobals",
@@ -191,6 +201,11 @@ struct Reader<'g> {
     collectors: HashMap<usize, usize>,
     /// Curves built by history tress does not evaluate: how many, and the node types.
     unbuilt_curves: (usize, std::collections::BTreeSet<String>),
+    /// The material of each Arnold hair or curve shader node met, `None` for a type tress
+    /// does not read.
+    hair_shaders: HashMap<usize, Option<Material>>,
+    /// Those of types tress does not read, counted by type for one warning.
+    unread_shaders: BTreeMap<String, usize>,
 }
 
 impl<'g> Reader<'g> {
@@ -206,6 +221,8 @@ impl<'g> Reader<'g> {
             rest_posed: Default::default(),
             collectors: HashMap::new(),
             unbuilt_curves: Default::default(),
+            hair_shaders: HashMap::new(),
+            unread_shaders: BTreeMap::new(),
         }
     }
 
@@ -253,6 +270,13 @@ impl<'g> Reader<'g> {
                 "{} curve(s) built by history tress does not evaluate ({}): skipped",
                 self.unbuilt_curves.0,
                 kinds.join(", ")
+            ));
+        }
+        if !self.unread_shaders.is_empty() {
+            let list: Vec<String> = self.unread_shaders.iter().map(|(k, n)| format!("{k} ({n})")).collect();
+            self.out.warnings.push(format!(
+                "Arnold hair or curve shaders of types tress does not read: {}; their hair keeps tress's tube shading",
+                list.join(", ")
             ));
         }
         if !self.rest_posed.0.is_empty() {
@@ -711,7 +735,7 @@ impl<'g> Reader<'g> {
             self.out.warnings.push(format!("{}: no follicle with a curve: the hair system gives no hair", node.name));
             return Ok(());
         }
-        let material = Material::Tube(system.tube());
+        let material = self.hair_system_material(n, &system)?;
         self.out.contents.hair_systems.push(HairSystemEntry {
             guides: GuideSource::Inline(Guides { curves, root_uv: Some(root_uv) }),
             system,
@@ -791,18 +815,7 @@ impl<'g> Reader<'g> {
         let g = self.g;
         let names = ["cwdth", "ai_curve_width", "aiCurveWidth"];
         let cm = |w: f64| Some((w / g.centimeters_per_unit) as f32);
-        // Up the DAG, to a transform holding a curve collector shape (at most as deep as
-        // the file has nodes: a parent cycle is an error elsewhere).
-        let mut collector = None;
-        let mut cur = g.parent(n);
-        for _ in 0..g.nodes.len() {
-            let Some(p) = cur else { break };
-            if let Some(&c) = self.collectors.get(&p) {
-                collector = Some(c);
-                break;
-            }
-            cur = g.parent(p);
-        }
+        let collector = self.collector_of(n);
         if attr(g, n, &names).is_some() {
             return Ok((cm(scalar(g, n, &names, ARNOLD_CURVE_WIDTH)?), collector));
         }
@@ -823,12 +836,27 @@ impl<'g> Reader<'g> {
         }
     }
 
+    /// The `aiCurveCollector` a curve is under: the first up the DAG (at most as deep as
+    /// the file has nodes: a parent cycle is an error elsewhere).
+    fn collector_of(&self, n: usize) -> Option<usize> {
+        let mut cur = self.g.parent(n);
+        for _ in 0..self.g.nodes.len() {
+            let p = cur?;
+            if let Some(&c) = self.collectors.get(&p) {
+                return Some(c);
+            }
+            cur = self.g.parent(p);
+        }
+        None
+    }
+
     fn free_curves(&mut self, used: &[bool]) -> Res<()> {
         let g = self.g;
         self.collectors = (0..g.nodes.len())
             .filter(|&c| g.nodes[c].kind == "aiCurveCollector")
             .filter_map(|c| Some((g.parent(c)?, c)))
             .collect();
+        let set_shaders = self.set_curve_shaders();
         let mut set = StrandSet::new();
         // Each strand's width when Arnold gives it one, and its width profile: its
         // collector's, else, for a curve drawn as the hair system draws hairs, the system's
@@ -837,6 +865,8 @@ impl<'g> Reader<'g> {
         let mut profiles: Vec<Option<usize>> = Vec::new();
         let mut ramps: Vec<Ramp<f32>> = Vec::new();
         let mut ramp_of: HashMap<usize, usize> = HashMap::new();
+        // Each strand's material, as an index into `materials`.
+        let (mut groups, mut materials): (Vec<usize>, Vec<Material>) = (Vec::new(), Vec::new());
         let mut closed = 0;
         for n in self.of_kind("nurbsCurve").collect::<Vec<_>>() {
             if used[n] || self.hidden(n)? {
@@ -863,6 +893,11 @@ impl<'g> Reader<'g> {
             set.push_strand(p.into_iter().map(|q| (q, 0.0)));
             widths.push(width);
             profiles.push(profile);
+            let material = self.curve_material(n, &set_shaders)?;
+            groups.push(materials.iter().position(|m| *m == material).unwrap_or_else(|| {
+                materials.push(material);
+                materials.len() - 1
+            }));
         }
         let unset = widths.iter().filter(|w| w.is_none()).count();
         if unset > 0 {
@@ -905,14 +940,26 @@ impl<'g> Reader<'g> {
         if closed > 0 {
             self.out.warnings.push(format!("skipped {closed} closed or periodic curve(s) (rig controls, not hair)"));
         }
-        self.push_curves(set);
+        // One entry per material, its strands in file order.
+        for (k, material) in materials.into_iter().enumerate() {
+            let mut part = StrandSet::new();
+            for i in (0..groups.len()).filter(|&i| groups[i] == k) {
+                let (a, b) = (set.offsets[i] as usize, set.offsets[i + 1] as usize);
+                part.push_strand(set.points[a..b].iter().map(|p| (Vec3::new(p[0], p[1], p[2]), p[3])));
+            }
+            self.push_hair(part, material);
+        }
         Ok(())
     }
 
     /// Adds strands drawn with a hair system's default look, if there are any.
     fn push_curves(&mut self, set: StrandSet) {
+        self.push_hair(set, Material::Tube(HairSystem::default().tube()));
+    }
+
+    /// Adds strands drawn with `material`, if there are any.
+    fn push_hair(&mut self, set: StrandSet, material: Material) {
         if set.strand_count() > 0 {
-            let material = Material::Tube(HairSystem::default().tube());
             self.out.contents.hair.push(HairEntry {
                 source: HairSource::Inline(set),
                 material: material.into(),
@@ -922,6 +969,147 @@ impl<'g> Reader<'g> {
                 lod: None,
             });
         }
+    }
+
+    // ----- Arnold hair shaders -----
+
+    /// The material of a hair system: the Arnold shader MtoA is told to use
+    /// (`aiOverrideHair` on, a shader connected to `aiHairShader`), when tress reads its
+    /// type; else, when Arnold renders the file, the `standard_hair` MtoA makes from the
+    /// hair system's own attributes (`HairTranslator`: diffuse 1 of the hair colour, whose
+    /// ramp the hairs' colours carry, specular tint `specularColor`, no secondary specular,
+    /// transmission tint `translucence`, roughness 1 / `specularPower`); else the hair
+    /// system's tube shading, as Maya draws it.
+    fn hair_system_material(&mut self, n: usize, system: &HairSystem) -> Res<Material> {
+        let g = self.g;
+        if scalar(g, n, &["ai_override_hair", "aiOverrideHair"], 0.0)? != 0.0 {
+            if let Some(&s) = self.inputs(n, &["ai_hair_shader", "aiHairShader"]).first() {
+                return Ok(self.arnold_shader(s)?.unwrap_or_else(|| Material::Tube(system.tube())));
+            }
+        }
+        if !self.arnold_renders() {
+            return Ok(Material::Tube(system.tube()));
+        }
+        let mtoa = StandardHair {
+            diffuse: 1.0,
+            diffuse_color: system.hair_color,
+            specular_tint: system.specular_color,
+            specular2_tint: Vec3::ZERO,
+            transmission_tint: Vec3::splat(system.translucence),
+            roughness: 1.0 / system.specular_power.max(1.0),
+            ..StandardHair::default()
+        };
+        let (material, warning) = mtoa.material(&g.nodes[n].name, &[]);
+        self.out.warnings.extend(warning);
+        Ok(material)
+    }
+
+    /// The material of a curve outside hair systems: the Arnold shader MtoA gives it (that
+    /// of the `aiCurveCollector` it is under; else that of an object set holding it or a
+    /// parent, MtoA's set overrides; else its own `aiCurveShader`) when tress reads its
+    /// type; with none, when Arnold renders the file, the `standard_hair` of Arnold's
+    /// defaults MtoA gives a curve; else tress's tube shading.
+    fn curve_material(&mut self, n: usize, set_shaders: &HashMap<usize, usize>) -> Res<Material> {
+        let g = self.g;
+        let tube = || Material::Tube(HairSystem::default().tube());
+        let from_set = || {
+            // The curve and its parents (a parent cycle is an error elsewhere).
+            let mut cur = Some(n);
+            for _ in 0..=g.nodes.len() {
+                let p = cur?;
+                if let Some(&shader) = set_shaders.get(&p) {
+                    return Some(shader);
+                }
+                cur = g.parent(p);
+            }
+            None
+        };
+        let shader = match self.collector_of(n) {
+            Some(c) => self.inputs(c, &CURVE_SHADER).first().copied(),
+            None => from_set().or_else(|| self.inputs(n, &CURVE_SHADER).first().copied()),
+        };
+        Ok(match shader {
+            Some(s) => self.arnold_shader(s)?.unwrap_or_else(tube),
+            None if self.arnold_renders() => StandardHair::default().material("", &[]).0,
+            None => tube(),
+        })
+    }
+
+    /// The curve shader of each member of an object set that has one (MtoA's set
+    /// overrides: `aiCurveShader` added to a set), by member node.
+    fn set_curve_shaders(&self) -> HashMap<usize, usize> {
+        let mut out = HashMap::new();
+        for set in self.of_kind("objectSet") {
+            if let Some(&shader) = self.inputs(set, &CURVE_SHADER).first() {
+                for m in self.inputs(set, &["dsm", "dagSetMembers"]) {
+                    out.entry(m).or_insert(shader);
+                }
+            }
+        }
+        out
+    }
+
+    /// The material of an Arnold shader node (a shading group is followed to its surface
+    /// shader) when it is an `aiStandardHair`, its warning given once; `None` for other
+    /// types, counted for one warning.
+    fn arnold_shader(&mut self, s: usize) -> Res<Option<Material>> {
+        let s = match self.kind(s) {
+            "shadingEngine" => match self.inputs(s, &["ss", "surfaceShader"]).first() {
+                Some(&shader) => shader,
+                None => return Ok(None),
+            },
+            _ => s,
+        };
+        if let Some(m) = self.hair_shaders.get(&s) {
+            return Ok(m.clone());
+        }
+        let material = match self.kind(s) {
+            "aiStandardHair" => {
+                let (m, warning) = self.standard_hair(s)?;
+                self.out.warnings.extend(warning);
+                Some(m)
+            }
+            other => {
+                *self.unread_shaders.entry(other.to_string()).or_default() += 1;
+                None
+            }
+        };
+        self.hair_shaders.insert(s, material.clone());
+        Ok(material)
+    }
+
+    /// An `aiStandardHair` node's parameters (MtoA names its attributes by Arnold's
+    /// parameter names, `base_color`, with camel-case long names, `baseColor`; colours also
+    /// by component, `base_colorR`), Arnold's defaults for those the file omits.
+    fn standard_hair(&self, s: usize) -> Res<(Material, Option<String>)> {
+        let g = self.g;
+        let mut shader = StandardHair::default();
+        let mut connected = Vec::new();
+        for name in StandardHair::NAMES {
+            let long = camel_case(name);
+            let names = [name, long.as_str()];
+            let parts = ["R", "G", "B"].map(|c| [format!("{name}{c}"), format!("{long}{c}")]);
+            let mut plugs: Vec<&str> = names.to_vec();
+            plugs.extend(parts.iter().flatten().map(String::as_str));
+            if !self.inputs(s, &plugs).is_empty() {
+                connected.push(name.to_string());
+            }
+            match shader.param(name) {
+                Some(Param::Float(v)) => *v = scalar(g, s, &names, f64::from(*v))? as f32,
+                Some(Param::Bool(b)) => *b = scalar(g, s, &names, f64::from(u8::from(*b)))? != 0.0,
+                Some(Param::Color(c)) => {
+                    let parts = parts.each_ref().map(|[a, b]| [a.as_str(), b.as_str()]);
+                    let v = vec3(g, s, &names, &parts, f64::NAN)?;
+                    for k in 0..3 {
+                        if !v[k].is_nan() {
+                            c[k] = v[k] as f32;
+                        }
+                    }
+                }
+                None => {}
+            }
+        }
+        Ok(shader.material(&g.nodes[s].name, &connected))
     }
 
     // ----- fur -----
@@ -1278,6 +1466,23 @@ fn vec3(g: &Graph, n: usize, whole: &[&str], parts: &[[&str; 2]; 3], default: f6
         }
     }
     Ok(v)
+}
+
+/// MtoA's long attribute name for an Arnold parameter: `base_color` → `baseColor`.
+fn camel_case(name: &str) -> String {
+    let mut out = String::with_capacity(name.len());
+    let mut upper = false;
+    for c in name.chars() {
+        match c {
+            '_' => upper = true,
+            c if upper => {
+                out.extend(c.to_uppercase());
+                upper = false;
+            }
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 /// The attribute name of a plug without its index: `ih[0]` → `ih`.

@@ -4,6 +4,7 @@
 use super::*;
 use crate::fur::{ColorAttr, FurDescription, Scalar};
 use crate::scene::LightSource;
+use crate::shading::hair_bsdf::Absorption;
 
 /// A small scene as Maya writes it: a 2 × 1 quad plane with UVs under a moved transform,
 /// a hair system with three follicles (two with stored transforms and start curves of
@@ -873,4 +874,111 @@ fn follicles_without_a_start_curve_use_their_output_curve_or_give_no_hair() {
     // A hair system without follicles says so.
     let s = read(system).unwrap();
     assert!(s.warnings.iter().any(|w| w.contains("hss: the hair system has no follicles")), "{:?}", s.warnings);
+}
+
+/// A file Arnold renders: an `aiStandardHair` (`ai_`-style and long names, a colour by
+/// component, a ramp on its base colour) on a collector's curve, the same shader through a
+/// set override on a second curve, another shader type on a third, and a fourth curve
+/// with no shader.
+const ARNOLD_CURVES: &str = r#"select -ne :defaultRenderGlobals;
+	setAttr ".ren" -type "string" "arnold";
+createNode aiStandardHair -n "brown";
+	setAttr ".melanin" 0.5;
+	setAttr ".melaninRedness" 0.25;
+	setAttr ".roughness" 0.4;
+	setAttr ".roughness_azimuthal" 0.6;
+	setAttr ".roughness_anisotropic" yes;
+	setAttr ".ior" 1.4;
+	setAttr ".shift" 5;
+	setAttr ".specular_tintG" 0.5;
+createNode ramp -n "ramp1";
+createNode aiUtility -n "flat";
+createNode transform -n "col";
+createNode aiCurveCollector -n "cols" -p "col";
+createNode transform -n "a" -p "col";
+createNode nurbsCurve -n "as" -p "a";
+	setAttr ".cc" -type "nurbsCurve" 1 1 0 no 3 2 0 1 2 0 0 0 0 1 0;
+createNode transform -n "b";
+createNode nurbsCurve -n "bs" -p "b";
+	setAttr ".cc" -type "nurbsCurve" 1 1 0 no 3 2 0 1 2 1 0 0 1 1 0;
+createNode transform -n "c";
+createNode nurbsCurve -n "cs" -p "c";
+	setAttr ".cc" -type "nurbsCurve" 1 1 0 no 3 2 0 1 2 2 0 0 2 1 0;
+createNode transform -n "d";
+createNode nurbsCurve -n "ds" -p "d";
+	setAttr ".cc" -type "nurbsCurve" 1 1 0 no 3 2 0 1 2 3 0 0 3 1 0;
+createNode objectSet -n "set1";
+connectAttr "brown.out" "cols.aiCurveShader";
+connectAttr "ramp1.oc" "brown.base_color";
+connectAttr "b.iog" "set1.dsm" -na;
+connectAttr "brown.out" "set1.ai_curve_shader";
+connectAttr "flat.out" "cs.ai_curve_shader";
+"#;
+
+#[test]
+fn arnold_standard_hair_on_curves_becomes_the_physical_material_with_its_values() {
+    let s = read(ARNOLD_CURVES).unwrap();
+    let hair = &s.contents.hair;
+    // The brown shader's two curves, then tube shading (the unread shader), then Arnold's
+    // default standard_hair: one entry per material, strands in file order.
+    assert_eq!(hair.len(), 3, "{hair:?}");
+    let strands = |i: usize| {
+        let HairSource::Inline(set) = &hair[i].source else { panic!("inline") };
+        set.strand_count()
+    };
+    assert_eq!((strands(0), strands(1), strands(2)), (2, 1, 1));
+    let crate::scene::MaterialSource::Inline(Material::Physical(brown)) = &hair[0].material else {
+        panic!("{:?}", hair[0].material)
+    };
+    let p = brown.params();
+    assert_eq!((p.beta_m, p.beta_n, p.eta, p.alpha_degrees), (0.4, 0.6, 1.4, 5.0));
+    // Melanin 0.5 is the concentration ln 2, a quarter of it pheomelanin.
+    let Absorption::Melanin { eumelanin, pheomelanin } = p.absorption else { panic!("{:?}", p.absorption) };
+    assert!((eumelanin - 0.75 * 2f32.ln()).abs() < 1e-6 && (pheomelanin - 0.25 * 2f32.ln()).abs() < 1e-6);
+    assert!(matches!(hair[1].material, crate::scene::MaterialSource::Inline(Material::Tube(_))));
+    let crate::scene::MaterialSource::Inline(Material::Physical(default)) = &hair[2].material else { panic!() };
+    assert_eq!(default.params().beta_m, 0.2);
+    // One warning for what the brown shader holds that tress cannot (named once though
+    // two curves use it), one for the unread type.
+    let brown_w: Vec<&String> = s.warnings.iter().filter(|w| w.starts_with("brown:")).collect();
+    assert_eq!(brown_w.len(), 1, "{:?}", s.warnings);
+    assert!(brown_w[0].contains("specular_tint (1, 0.5, 1)") && brown_w[0].contains("base_color"), "{brown_w:?}");
+    assert!(s.warnings.iter().any(|w| w.contains("aiUtility (1)")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().all(|w| !w.contains("aiStandardHair (")), "a type tress reads: {:?}", s.warnings);
+}
+
+#[test]
+fn curves_and_hair_systems_without_an_arnold_shader_keep_their_shading_unless_arnold_renders() {
+    // Without Arnold (no `currentRenderer`), shaders aside: today's tube shading.
+    let plain: String = ARNOLD_CURVES.lines().skip(2).map(|l| format!("{l}\n")).collect();
+    let s = read(&plain).unwrap();
+    assert!(matches!(
+        s.contents.hair.last().unwrap().material,
+        crate::scene::MaterialSource::Inline(Material::Tube(_))
+    ));
+    let tubes = s
+        .contents
+        .hair
+        .iter()
+        .filter(|h| matches!(h.material, crate::scene::MaterialSource::Inline(Material::Tube(_))));
+    assert_eq!(tubes.count(), 1, "the unread and the unassigned curves share the tube entry");
+    // A hair system: tube shading in Maya; under Arnold, MtoA's own standard_hair, a diffuse
+    // fibre of the hair colour; with `aiOverrideHair` and an aiStandardHair, that shader.
+    let system = |head: &str, tail: &str| {
+        let text = format!(
+            "{head}createNode transform -n h;\ncreateNode hairSystem -n hs -p h;\n\tsetAttr \".hcl\" -type \"float3\" 0.5 0.3 0.1 ;\n{tail}\
+             createNode transform -n f;\ncreateNode follicle -n fs -p f;\ncreateNode transform -n g;\n\
+             createNode nurbsCurve -n gs -p g;\n\tsetAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 1 0;\n\
+             connectAttr \"fs.oha\" \"hs.ih[0]\";\nconnectAttr \"gs.ws\" \"fs.sp\";\n"
+        );
+        let s = read(&text).unwrap();
+        s.contents.hair_systems[0].material.clone()
+    };
+    let arnold = "select -ne :defaultRenderGlobals;\n\tsetAttr \".ren\" -type \"string\" \"arnold\";\n";
+    assert!(matches!(system("", ""), crate::scene::MaterialSource::Inline(Material::Tube(_))));
+    assert_eq!(system(arnold, ""), Material::Diffuse { color: Vec3::new(0.5, 0.3, 0.1) }.into());
+    let over = "\tsetAttr \".ai_override_hair\" yes;\ncreateNode aiStandardHair -n sh;\n\tsetAttr \".melanin\" 0;\n\
+                connectAttr \"sh.out\" \"hs.ai_hair_shader\";\n";
+    let crate::scene::MaterialSource::Inline(Material::Physical(h)) = system(arnold, over) else { panic!() };
+    assert_eq!(h.params().absorption, Absorption::Melanin { eumelanin: 0.0, pheomelanin: 0.0 });
 }
