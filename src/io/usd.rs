@@ -287,7 +287,10 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                     }
                 };
                 if let Some(mut entry) = read {
-                    if !has_display_color(&prim, time) {
+                    // Arnold's hair shader, when bound, is what Arnold draws the curves with.
+                    if let Some(material) = shapes::bound_standard_hair(&prim, time, notes)? {
+                        entry.material = material.into();
+                    } else if !has_display_color(&prim, time) {
                         if let (Some(c), MaterialSource::Inline(Material::Tube(t))) =
                             (shapes::surface_color(&prim, time, notes)?, &mut entry.material)
                         {

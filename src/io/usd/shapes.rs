@@ -1,10 +1,13 @@
 //! `Mesh` prims and the gprims (`Sphere`, `Cube`, `Cylinder`, `Cone`, `Capsule`) to
 //! triangle meshes, with their colour: the `diffuseColor` of a bound `UsdPreviewSurface`,
-//! else `primvars:displayColor`.
+//! else `primvars:displayColor`; and the material of Arnold's `standard_hair` bound to
+//! curves.
 
-use super::values::{interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res};
+use super::values::{boolean, interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res};
 use super::Notes;
 use crate::geometry::TriangleMesh;
+use crate::io::arnold_hair::{Param, StandardHair};
+use crate::shading::Material;
 use glam::{Mat3, Vec3};
 use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
@@ -200,6 +203,46 @@ pub fn surface_color(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Opti
         notes.note("varying `displayColor` on surfaces: drawn in its mean colour".into(), prim);
     }
     Ok(Some(c.iter().sum::<Vec3>() / c.len() as f32))
+}
+
+/// The material of Arnold's hair shader (Arnold-USD's `arnold:standard_hair`) bound to
+/// `prim`, followed from its material's `outputs:arnold:surface` (what Arnold renders)
+/// or else `outputs:surface`; `None` when neither leads to one. Inputs are read by
+/// Arnold's parameter names (`inputs:melanin`), Arnold's defaults for those not written;
+/// what tress's model cannot hold is said in one note per shader.
+pub fn bound_standard_hair(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
+    let stage = prim.stage();
+    let Some(material) = prim.relationship("material:binding").targets()?.into_iter().next() else { return Ok(None) };
+    let material = stage.prim(material);
+    for output in ["outputs:arnold:surface", "outputs:surface"] {
+        let Some(target) = material.attribute(output).connections()?.into_iter().next() else { continue };
+        let shader = stage.prim(target.prim_path());
+        if token(value(&shader, "info:id", time)?, "") != "arnold:standard_hair" {
+            continue;
+        }
+        let mut hair = StandardHair::default();
+        let mut connected = Vec::new();
+        for name in StandardHair::NAMES {
+            let input = format!("inputs:{name}");
+            if shader.attribute(&input).has_authored_connections()? {
+                connected.push(name.to_string());
+            }
+            let v = value(&shader, &input, time)?;
+            let what = format!("{}.{input}", shader.path());
+            match hair.param(name) {
+                Some(Param::Float(f)) => *f = number(v, &what)?.map_or(*f, |x| x as f32),
+                Some(Param::Color(c)) => *c = vec3(v, &what)?.unwrap_or(*c),
+                Some(Param::Bool(b)) => *b = boolean(v, *b),
+                None => {}
+            }
+        }
+        let (material, left_out) = hair.material(&shader.path().to_string(), &connected);
+        if let Some(left_out) = left_out {
+            notes.note(left_out, prim);
+        }
+        return Ok(Some(material));
+    }
+    Ok(None)
 }
 
 /// The `diffuseColor` of the preview surface bound to `prim`, following the material's

@@ -4,6 +4,7 @@
 use super::*;
 use crate::accel::Shape;
 use crate::geometry::{StrandSet, TriangleMesh};
+use crate::io::arnold_hair::StandardHair;
 use crate::io::ImportOptions;
 use crate::light::Light;
 use crate::scene::{HairSource, LightSource, MaterialSource};
@@ -772,4 +773,62 @@ fn layers_of_another_unit_are_read_as_authored_and_said() {
         assert_eq!(height(&s), 10.0);
         assert!(s.warnings.iter().all(|w| !w.contains("metersPerUnit")), "{mpu}: {:?}", s.warnings);
     }
+}
+
+#[test]
+fn curves_take_the_bound_arnold_standard_hair() {
+    // As Arnold-USD writes it: the material's `outputs:arnold:surface` leads to the shader,
+    // a preview surface on `outputs:surface` is for other renderers.
+    let body = r#"
+def Material "Hair" {
+    token outputs:arnold:surface.connect = </Hair/standard_hair>
+    token outputs:surface.connect = </Hair/Preview.outputs:surface>
+    def Shader "standard_hair" {
+        uniform token info:id = "arnold:standard_hair"
+        float inputs:melanin = 0.1
+        color3f inputs:base_color = (1, 0, 0)
+        float inputs:roughness = 0.3
+        bool inputs:roughness_anisotropic = 1
+        float inputs:roughness_azimuthal = 0.6
+        color3f inputs:specular_tint = (0.5, 0.5, 0.5)
+        token outputs:out
+    }
+    def Shader "Preview" {
+        uniform token info:id = "UsdPreviewSurface"
+        color3f inputs:diffuseColor = (0, 1, 0)
+        token outputs:surface
+    }
+}
+def BasisCurves "Bound" (prepend apiSchemas = ["MaterialBindingAPI"]) {
+    rel material:binding = </Hair>
+    uniform token type = "linear"
+    int[] curveVertexCounts = [2]
+    point3f[] points = [(0, 0, 0), (0, 1, 0)]
+    float[] widths = [0.1] (interpolation = "constant")
+}
+def BasisCurves "Plain" {
+    uniform token type = "linear"
+    int[] curveVertexCounts = [2]
+    point3f[] points = [(1, 0, 0), (1, 1, 0)]
+    float[] widths = [0.1] (interpolation = "constant")
+}
+"#;
+    let s = read_body(body);
+    let expected = StandardHair {
+        melanin: 0.1,
+        base_color: Vec3::new(1.0, 0.0, 0.0),
+        roughness: 0.3,
+        roughness_anisotropic: true,
+        roughness_azimuthal: 0.6,
+        specular_tint: Vec3::splat(0.5),
+        ..StandardHair::default()
+    }
+    .material("/Hair/standard_hair", &[]);
+    assert!(matches!(expected.0, Material::Physical(_)), "{:?}", expected.0);
+    assert_eq!(s.contents.hair[0].material, expected.0.into());
+    // The tint tress cannot draw is said, naming the shader.
+    let note = expected.1.expect("specular_tint is left out");
+    assert!(s.warnings.iter().any(|w| w.contains(&note)), "{:?}", s.warnings);
+    // Unbound curves keep their tube shading.
+    assert!(matches!(s.contents.hair[1].material, MaterialSource::Inline(Material::Tube(_))));
 }
