@@ -29,7 +29,8 @@
 //!   mesh, local X along the surface normal and Y along the U tangent.
 //! - **xgmSplineDescription**: an XGen interactive groom, the splines its `xgmSplineBase`
 //!   stores in the file, see [`xgen`]; an XGen collection (`xgmPalette`), whose strands XGen
-//!   generates from files beside the scene, is named in a warning.
+//!   generates from the collection file beside the scene, approximated as Maya Fur from
+//!   that file's density, length and width, see [`xgen_collection`].
 //! - **FurDescription**: its attributes (node defaults for those the file omits) become a
 //!   fur description grown on each mesh it is attached to (through a `FurFeedback`), see
 //!   [`fur_nodes`].
@@ -62,6 +63,7 @@ pub mod fur_nodes;
 pub mod history;
 pub mod parse;
 pub mod xgen;
+pub mod xgen_collection;
 
 use self::parse::{Face, Graph, Value};
 use super::arnold_hair::{Param, StandardHair};
@@ -119,6 +121,7 @@ pub fn parse_maya_with(text: &str, path: &Path, camera: Option<&str>) -> Result<
     let g = parse::parse(text).map_err(at)?;
     let mut reader = Reader::new(&g);
     reader.wanted_camera = camera.map(str::to_string);
+    reader.dir = path.parent().map(Path::to_path_buf);
     reader.read().map_err(at)
 }
 
@@ -126,7 +129,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 51] = [
+const KNOWN: [&str; 52] = [
     "transform",
     "mesh",
     "nurbsCurve",
@@ -159,6 +162,7 @@ const KNOWN: [&str; 51] = [
     "xgmSplineBase",
     "xgmPalette",
     "xgmDescription",
+    "xgmSubdPatch",
     "materialInfo",
     "partition",
     "lightLinker",
@@ -206,6 +210,8 @@ struct Reader<'g> {
     hair_shaders: HashMap<usize, Option<Material>>,
     /// Those of types tress does not read, counted by type for one warning.
     unread_shaders: BTreeMap<String, usize>,
+    /// The folder of the `.ma`, where XGen collection files are looked for.
+    dir: Option<std::path::PathBuf>,
 }
 
 impl<'g> Reader<'g> {
@@ -223,6 +229,7 @@ impl<'g> Reader<'g> {
             unbuilt_curves: Default::default(),
             hair_shaders: HashMap::new(),
             unread_shaders: BTreeMap::new(),
+            dir: None,
         }
     }
 
@@ -295,7 +302,7 @@ impl<'g> Reader<'g> {
             furs.push(f);
         }
         let (entries, warnings) = fur_nodes::fur_entries(&furs)?;
-        self.out.contents.fur = entries;
+        self.out.contents.fur.extend(entries);
         self.out.warnings.extend(warnings);
         self.camera()?;
         self.lights()?;

@@ -982,3 +982,88 @@ fn curves_and_hair_systems_without_an_arnold_shader_keep_their_shading_unless_ar
     let crate::scene::MaterialSource::Inline(Material::Physical(h)) = system(arnold, over) else { panic!() };
     assert_eq!(h.params().absorption, Absorption::Melanin { eumelanin: 0.0, pheomelanin: 0.0 });
 }
+
+/// A 4 × 2 plane one unit up, under an XGen collection whose description's patch is bound
+/// to it, and the collection file the palette names, written beside the scene.
+const XGEN_SCENE: &str = r#"//Maya ASCII 2017 scene
+createNode transform -n "plane1";
+	setAttr ".t" -type "double3" 0 1 0 ;
+createNode mesh -n "planeShape1" -p "plane1";
+	setAttr -s 6 ".uvst[0].uvsp[0:5]" -type "float2" 0 0 0.5 0 1 0 0 1 0.5 1 1 1;
+	setAttr -s 6 ".vt[0:5]"  -2 0 1 0 0 1 2 0 1 -2 0 -1 0 0 -1 2 0 -1;
+	setAttr -s 7 ".ed[0:6]"  0 1 0 1 2 0 3 4 0 4 5 0 0 3 0 1 4 0 2 5 0;
+	setAttr -s 2 -ch 8 ".fc[0:1]" -type "polyFaces"
+		f 4 0 5 -3 -5
+		mu 0 4 0 1 4 3
+		f 4 1 6 -4 -6
+		mu 0 4 1 2 5 4 ;
+createNode xgmPalette -n "collection1";
+	setAttr ".xfn" -type "string" "scene__collection1.xgen";
+createNode transform -n "description1" -p "collection1";
+createNode xgmDescription -n "description1Shape" -p "description1";
+createNode transform -n "plane1_description1" -p "description1";
+createNode xgmSubdPatch -n "plane1_description1Shape" -p "plane1_description1";
+connectAttr "planeShape1.o" "plane1_description1Shape.geo";
+connectAttr "plane1.m" "plane1_description1Shape.t";
+"#;
+
+fn xgen_file(density: &str) -> String {
+    format!(
+        "FileVersion 18\n\nPalette\n\tname\t\t\tcollection1\n\tendAttrs\n\nDescription\n\tname\t\t\tdescription1\n\
+         \tendAttrs\n\nSplinePrimitive\n\tlength\t\t\t$a=0.7500;#0.05,5.0\\n$a\n\twidth\t\t\t$a=0.0200;#0.005,0.5\\n$a\n\
+         \tendAttrs\n\nNoiseFXModule\n\tname\t\t\tNoise1\n\tendAttrs\n\nRandomGenerator\n\tdensity\t\t\t{density}\n\
+         \tmask\t\t\tmap('${{DESC}}/density/') # painted\n\tendAttrs\n\nPatches\tdescription1\t0\nPatch\tSubd\n\tname\t\tplane1\n\
+         endObject\nendPatches\n"
+    )
+}
+
+#[test]
+fn xgen_collections_grow_their_density_and_length_on_the_bound_mesh() {
+    let dir = tempfile::tempdir().unwrap();
+    let ma = dir.path().join("scene.ma");
+    std::fs::write(&ma, XGEN_SCENE).unwrap();
+    // Without the collection file: the warning names it, nothing grows.
+    let s = read_maya(&ma, None).unwrap();
+    assert!(s.contents.fur.is_empty());
+    assert!(
+        s.warnings.iter().any(|w| w.contains("scene__collection1.xgen") && w.contains("not found")),
+        "{:?}",
+        s.warnings
+    );
+
+    std::fs::write(dir.path().join("scene__collection1.xgen"), xgen_file("$a=100.0;#1,1000\\n$a")).unwrap();
+    let s = read_maya(&ma, None).unwrap();
+    assert_eq!(s.contents.fur.len(), 1, "{:?}", s.warnings);
+    let f = &s.contents.fur[0];
+    // 100 strands per unit area on the plane's 8.
+    assert_eq!(f.description.density, 800);
+    assert_eq!((f.description[Scalar::Length].value, f.description[Scalar::BaseWidth].value), (0.75, 0.02));
+    let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).expect("one warning for it");
+    assert!(w.contains("NoiseFXModule") && w.contains("RandomGenerator.mask") && w.contains("guides"), "{w}");
+
+    let MeshSource::Inline(m) = &s.contents.meshes[f.mesh].source else { panic!("inline") };
+    let mut mesh = m.clone();
+    mesh.transform(&s.contents.meshes[f.mesh].transform);
+    let options = crate::fur::GrowOptions { placement: f.placement, seed: 0, guides: None, images: &[] };
+    let grown = crate::fur::grow(&mesh, &f.description, options).unwrap();
+    let n = grown.strands.strand_count();
+    assert!((760..=840).contains(&n), "{n} strands for 800 expected");
+    for k in 0..n {
+        let (a, b) = (grown.strands.offsets[k] as usize, grown.strands.offsets[k + 1] as usize);
+        let (root, tip) = (grown.strands.points[a], grown.strands.points[b - 1]);
+        // Roots on the plane (y = 1, inside its 4 × 2), straight up by the length.
+        assert!((root[1] - 1.0).abs() < 1e-5 && root[0].abs() <= 2.0 + 1e-5 && root[2].abs() <= 1.0 + 1e-5, "{root:?}");
+        let d = Vec3::new(tip[0] - root[0], tip[1] - root[1], tip[2] - root[2]);
+        assert!((d.length() - 0.75).abs() < 1e-3 && d.normalize().y.abs() > 0.999, "{d:?}");
+    }
+
+    // A density that is not a number: a warning naming the file and line, no strands, no panic.
+    std::fs::write(dir.path().join("scene__collection1.xgen"), xgen_file("lots")).unwrap();
+    let s = read_maya(&ma, None).unwrap();
+    assert!(s.contents.fur.is_empty());
+    assert!(
+        s.warnings.iter().any(|w| w.contains("scene__collection1.xgen: line 21") && w.contains("density")),
+        "{:?}",
+        s.warnings
+    );
+}

@@ -20,9 +20,11 @@
 //!   brush paints (a factor on the description's width scale).
 
 use super::parse::Value;
-use super::{attr, build_ramp, ramp_keys, scalar, Reader, Res};
+use super::{attr, build_ramp, ramp_keys, scalar, xgen_collection, Reader, Res};
+use crate::fur::{FurDescription, Placement, Scalar};
 use crate::geometry::StrandSet;
 use crate::hair_system::Ramp;
+use crate::scene::FurEntry;
 use glam::Vec3;
 use std::collections::BTreeSet;
 use std::io::Read;
@@ -31,6 +33,10 @@ use std::io::Read;
 const MAX_GROUP_BYTES: u64 = 1 << 30;
 /// Most control vertices of one spline.
 const MAX_CVS: u64 = 1 << 16;
+/// Most strands one XGen collection description grows on one mesh (2^21): XGen's
+/// densities are per unit area, so a large mesh in small units could otherwise ask for
+/// more than memory holds.
+const MAX_COLLECTION_STRANDS: u32 = 1 << 21;
 
 /// The splines of one `xgmSplineData` value: each spline's control vertices and the width
 /// factor at each.
@@ -114,8 +120,8 @@ pub fn spline_data(words: &[String]) -> Result<Splines, String> {
 impl Reader<'_> {
     /// The interactive groom of each visible `xgmSplineDescription` (the splines of the
     /// `xgmSplineBase` upstream of it, drawn through their control vertices, as wide as its
-    /// width scale `.w` × `WIDTH_CV` × its width ramp `.wdr`), and a warning for each XGen
-    /// collection (`xgmPalette`), whose primitives XGen generates from files beside the scene.
+    /// width scale `.w` × `WIDTH_CV` × its width ramp `.wdr`), and each XGen collection
+    /// (`xgmPalette`) approximated from its collection file ([`Reader::collection`]).
     pub(super) fn xgen(&mut self) -> Res<()> {
         let g = self.g;
         let mut set = StrandSet::new();
@@ -195,23 +201,128 @@ impl Reader<'_> {
         }
         self.push_curves(set);
         for p in self.of_kind("xgmPalette").collect::<Vec<_>>() {
-            let file = match attr(g, p, &["xfn", "xgFileName"]).map(|a| &a.value) {
-                Some(Value::Strings(s)) if s.first().is_some_and(|f| !f.is_empty()) => format!("`{}`", s[0]),
-                _ => "its collection file".to_string(),
-            };
-            let descriptions: Vec<&str> = self
-                .of_kind("xgmDescription")
-                .filter(|&d| g.parent(d).and_then(|t| g.parent(t)) == Some(p))
-                .map(|d| g.nodes[d].name.as_str())
-                .collect();
-            self.out.warnings.push(format!(
-                "XGen collection {} (descriptions: {}): XGen generates its strands at render time from {file} \
-                 and the collection's folder beside the scene, not from the .ma; tress does not run XGen: no strands",
-                g.nodes[p].name,
-                if descriptions.is_empty() { "none".to_string() } else { descriptions.join(", ") }
-            ));
+            self.collection(p);
         }
         Ok(())
+    }
+
+    /// An XGen collection (`xgmPalette`): each of its descriptions that its collection file
+    /// (`.xfn`, beside the scene) describes grows as Maya Fur on the meshes its
+    /// `xgmSubdPatch`es are bound to ([`xgen_collection`]); a missing or unreadable file
+    /// leaves the collection out, said.
+    fn collection(&mut self, p: usize) {
+        let g = self.g;
+        let palette = &g.nodes[p].name;
+        let descriptions: Vec<usize> =
+            self.of_kind("xgmDescription").filter(|&d| g.parent(d).and_then(|t| g.parent(t)) == Some(p)).collect();
+        let names: Vec<&str> = descriptions.iter().map(|&d| g.nodes[d].name.as_str()).collect();
+        let names = if names.is_empty() { "none".to_string() } else { names.join(", ") };
+        let file = match attr(g, p, &["xfn", "xgFileName"]).map(|a| &a.value) {
+            Some(Value::Strings(s)) if s.first().is_some_and(|f| !f.is_empty()) => Some(s[0].clone()),
+            _ => None,
+        };
+        let path = file.as_ref().and_then(|f| self.dir.as_ref().map(|d| d.join(f)));
+        let text = path.as_ref().and_then(|p| std::fs::read(p).ok());
+        let (Some(path), Some(text)) = (path, text) else {
+            let file = file.map_or("its collection file".to_string(), |f| format!("`{f}`"));
+            self.out.warnings.push(format!(
+                "XGen collection {palette} (descriptions: {names}): XGen generates its strands at render time from \
+                 {file} and the collection's folder beside the scene; {file} was not found there: no strands"
+            ));
+            return;
+        };
+        let parsed = match xgen_collection::parse_collection(&String::from_utf8_lossy(&text), &path) {
+            Ok(d) => d,
+            Err(e) => {
+                self.out.warnings.push(format!("XGen collection {palette}: {e}: no strands"));
+                return;
+            }
+        };
+        for d in descriptions {
+            let Some(t) = g.parent(d) else { continue };
+            let name = &g.nodes[t].name;
+            let Some(cd) = parsed.iter().find(|c| &c.name == name || c.name == g.nodes[d].name) else {
+                self.out.warnings.push(format!(
+                    "XGen description {name}: `{}` has no description of that name: no strands",
+                    path.display()
+                ));
+                continue;
+            };
+            if cd.primitive.as_deref() != Some("SplinePrimitive") {
+                let what = cd.primitive.as_deref().unwrap_or("no primitive");
+                self.out.warnings.push(format!(
+                    "XGen description {name}: `{}` gives it {what}; tress grows only spline primitives: no strands",
+                    path.display()
+                ));
+                continue;
+            }
+            // The description's patches (`xgmSubdPatch` under the description's transform,
+            // through a transform of its own) and the meshes bound to them.
+            let mut meshes = Vec::new();
+            for patch in self.of_kind("xgmSubdPatch") {
+                if g.parent(patch).and_then(|pt| g.parent(pt)) != Some(t) {
+                    continue;
+                }
+                for m in self.inputs(patch, &["geo", "geometry"]) {
+                    if let Some((i, mesh)) = self.meshes.get(&m) {
+                        if !meshes.iter().any(|&(j, _)| j == *i) {
+                            meshes.push((
+                                *i,
+                                (0..mesh.indices.len() as u32).map(|k| f64::from(mesh.area(k))).sum::<f64>(),
+                            ));
+                        }
+                    }
+                }
+            }
+            if meshes.is_empty() {
+                self.out.warnings.push(format!("XGen description {name}: bound to no drawn mesh: no strands"));
+                continue;
+            }
+            let mut notes = vec!["straight along the normal".to_string(), "guides not used".to_string()];
+            if !cd.fx_modules.is_empty() {
+                notes.push(format!("FX modules not applied ({})", cd.fx_modules.join(", ")));
+            }
+            if !cd.maps.is_empty() {
+                notes.push(format!("maps not read ({})", cd.maps.join(", ")));
+            }
+            if !cd.fallbacks.is_empty() {
+                notes.push(format!(
+                    "expressions or maps not evaluated, a new description's value used instead: {}",
+                    cd.fallbacks.join(", ")
+                ));
+            }
+            for (mesh, area) in meshes {
+                let wanted = cd.density * area;
+                let count = wanted.round().min(MAX_COLLECTION_STRANDS as f64) as u32;
+                if wanted > MAX_COLLECTION_STRANDS as f64 {
+                    notes.push(format!("{wanted:.0} strands cut to {MAX_COLLECTION_STRANDS}"));
+                }
+                let mut desc = FurDescription { density: count, ..FurDescription::default() };
+                desc[Scalar::Length].value = cd.length as f32;
+                desc[Scalar::BaseWidth].value = cd.width as f32;
+                desc[Scalar::TipWidth].value = cd.width as f32;
+                // Maya Fur's curl 0.5 is straight (its node default 0 curls).
+                desc[Scalar::BaseCurl].value = 0.5;
+                desc[Scalar::TipCurl].value = 0.5;
+                self.out.contents.fur.push(FurEntry {
+                    mesh,
+                    description: desc,
+                    placement: Placement::Area,
+                    seed: 0,
+                    guides: None,
+                    lod: None,
+                });
+            }
+            self.out.warnings.push(format!(
+                "XGen description {name}: approximated as Maya Fur from `{}` (density {} per unit area, length {}, \
+                 width {}): {}",
+                path.display(),
+                cd.density,
+                cd.length,
+                cd.width,
+                notes.join("; ")
+            ));
+        }
     }
 }
 
