@@ -278,7 +278,12 @@ impl Reader<'_> {
                 self.out.warnings.push(format!("XGen description {name}: bound to no drawn mesh: no strands"));
                 continue;
             }
-            let mut notes = vec!["straight along the normal".to_string(), "guides not used".to_string()];
+            let mut notes = vec![
+                "straight along the normal".to_string(),
+                "guides not used".to_string(),
+                "taper and width ramp not applied (root and tip equally wide)".to_string(),
+                "the whole mesh grown (the patch's face list not read)".to_string(),
+            ];
             if !cd.fx_modules.is_empty() {
                 notes.push(format!("FX modules not applied ({})", cd.fx_modules.join(", ")));
             }
