@@ -211,12 +211,9 @@ pub fn surface_color(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Opti
 /// Arnold's parameter names (`inputs:melanin`), Arnold's defaults for those not written;
 /// what tress's model cannot hold is said in one note per shader.
 pub fn bound_standard_hair(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
-    let stage = prim.stage();
-    let Some(material) = prim.relationship("material:binding").targets()?.into_iter().next() else { return Ok(None) };
-    let material = stage.prim(material);
+    let Some(material) = bound_material(prim)? else { return Ok(None) };
     for output in ["outputs:arnold:surface", "outputs:surface"] {
-        let Some(target) = material.attribute(output).connections()?.into_iter().next() else { continue };
-        let shader = stage.prim(target.prim_path());
+        let Some(shader) = connected_shader(&material, output)? else { continue };
         if token(value(&shader, "info:id", time)?, "") != "arnold:standard_hair" {
             continue;
         }
@@ -245,14 +242,24 @@ pub fn bound_standard_hair(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Re
     Ok(None)
 }
 
+/// The material `prim` is bound to (`material:binding`), if any.
+fn bound_material(prim: &Prim) -> Res<Option<Prim>> {
+    let target = prim.relationship("material:binding").targets()?.into_iter().next();
+    Ok(target.map(|path| prim.stage().prim(path)))
+}
+
+/// The shader `material`'s `output` is connected to, if any.
+fn connected_shader(material: &Prim, output: &str) -> Res<Option<Prim>> {
+    let target = material.attribute(output).connections()?.into_iter().next();
+    Ok(target.map(|path| material.stage().prim(path.prim_path())))
+}
+
 /// The `diffuseColor` of the preview surface bound to `prim`, following the material's
 /// `outputs:surface` connection to its shader.
 fn bound_diffuse(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Vec3>> {
-    let stage = prim.stage();
-    let Some(material) = prim.relationship("material:binding").targets()?.into_iter().next() else { return Ok(None) };
-    let material = stage.prim(material);
-    let shader = match material.attribute("outputs:surface").connections()?.into_iter().next() {
-        Some(p) => stage.prim(p.prim_path()),
+    let Some(material) = bound_material(prim)? else { return Ok(None) };
+    let shader = match connected_shader(&material, "outputs:surface")? {
+        Some(shader) => shader,
         None => {
             notes.note("materials without a connected `outputs:surface`: not read".into(), prim);
             return Ok(None);
