@@ -10,11 +10,13 @@
 //!   coloured by a bound `UsdPreviewSurface`'s `diffuseColor` or `displayColor`
 //!   ([`shapes`]);
 //! - `Camera` to the camera ([`camera`]), `--camera PATH` or the first one;
-//! - UsdLux lights ([`lights`]).
+//! - UsdLux lights ([`lights`]);
+//! - UsdSkel: meshes and curves bound to a skeleton are skinned at the time code
+//!   (linear blend skinning by the bound `SkelAnimation`, [`skel`]).
 //!
 //! `upAxis = "Z"` stages are turned Y-up; geometry stays in the stage's unit
 //! (`metersPerUnit`), which tress, unitless, takes as its own. Everything else a stage
-//! holds that draws or lights (other prim types, UsdSkel, unread attributes, failed
+//! holds that draws or lights (other prim types, blend shapes, unread attributes, failed
 //! composition arcs) is reported: one warning per kind with a count and the first prim.
 //!
 //! Every layer passes [`layer::prepare_layer`] first: its checks keep hostile text from
@@ -32,6 +34,7 @@ mod export;
 pub mod layer;
 pub mod lights;
 pub mod shapes;
+pub mod skel;
 pub mod values;
 
 pub use export::{usda_text, write_usd};
@@ -54,7 +57,7 @@ pub const PIECES_PER_SEGMENT: usize = 8;
 
 /// Prim types that only group, hold shading networks or render settings: read through
 /// their children or by the prims that use them, never reported.
-const STRUCTURE: [&str; 11] = [
+const STRUCTURE: [&str; 15] = [
     "",
     "Xform",
     "Scope",
@@ -66,6 +69,10 @@ const STRUCTURE: [&str; 11] = [
     "RenderProduct",
     "RenderVar",
     "Camera",
+    "SkelRoot",
+    "Skeleton",
+    "SkelAnimation",
+    "BlendShape",
 ];
 
 /// Warnings counted by kind: each kind is reported once, with how many prims it concerns
@@ -77,6 +84,12 @@ impl Notes {
     /// Counts one prim under `what`.
     pub fn note(&mut self, what: String, prim: &Prim) {
         self.add(what, prim, 1);
+    }
+
+    /// Counts one prim under `what`, the first named with `why`.
+    pub fn note_why(&mut self, what: String, prim: &Prim, why: &str) {
+        let e = self.0.entry(what).or_insert_with(|| (0, format!("{}: {why}", prim.path())));
+        e.0 += 1;
     }
 
     /// Counts `n` items of `prim` under `what`.
@@ -265,12 +278,27 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
         if kind != "Camera" && AnyPrim(prim.clone()).compute_visibility()? == Visibility::Invisible {
             continue;
         }
-        if prim.attribute("skel:skeleton").get::<sdf::Value>().ok().flatten().is_some()
-            || !prim.relationship("skel:skeleton").targets().unwrap_or_default().is_empty()
-        {
-            notes.note("UsdSkel skinning: drawn in the rest pose".into(), &prim);
+        let skin = match kind.as_str() {
+            "Camera" => None,
+            k if lights::LIGHT_TYPES.contains(&k) => None,
+            _ => skel::skinning(&prim, time, notes)?,
+        };
+        // Skinned points are in the Skeleton's space: its transform places them, the prim's
+        // own no longer applies (UsdSkel, "Schemas In-Depth").
+        let mut world =
+            up_fix * skin.as_ref().map_or_else(|| world_matrix(stage, &path, time), |s| Ok(s.skel_to_world))?;
+        if let (Some(s), true) = (&skin, shapes::GPRIMS.contains(&kind.as_str())) {
+            // Gprims have no points: a rigid binding moves them whole; influences per point
+            // cannot apply.
+            match s.rigid() {
+                Some(m) => world *= m,
+                None => {
+                    notes.note("UsdSkel per-point influences on gprims: drawn in the rest pose".into(), &prim);
+                    world = up_fix * world_matrix(stage, &path, time)?;
+                }
+            }
         }
-        let world = up_fix * world_matrix(stage, &path, time)?;
+        let skin = skin.filter(|_| !shapes::GPRIMS.contains(&kind.as_str()));
         let transform = Affine3A::from_mat4(world.as_mat4());
         if !transform.is_finite() {
             anyhow::bail!("{path}: its transform is not finite");
@@ -279,7 +307,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
         match kind.as_str() {
             "BasisCurves" | "NurbsCurves" => {
                 let read = if kind == "BasisCurves" { curves::read_basis_curves } else { curves::read_nurbs_curves };
-                let read = match read(&prim, time, transform, notes) {
+                let read = match read(&prim, time, transform, skin.as_ref(), notes) {
                     Ok(read) => read,
                     Err(e) => {
                         skip(notes, &prim, e);
@@ -302,7 +330,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
             }
             "Camera" => cameras.push((prim, transform)),
             "Mesh" => {
-                let mesh = match shapes::read_mesh(&prim, time) {
+                let mesh = match shapes::read_mesh(&prim, time, skin.as_ref()) {
                     Ok(mesh) => mesh,
                     Err(e) => {
                         skip(notes, &prim, e);

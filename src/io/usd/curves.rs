@@ -1,5 +1,6 @@
 //! `BasisCurves` and `NurbsCurves` prims to strand sets, at the frame's time code.
 
+use super::skel::Skinning;
 use super::values::{doubles, floats, held_value, interpolation, ints, value, vec3s, Interpolation, Res};
 use super::{Notes, PIECES_PER_SEGMENT};
 use crate::geometry::curve::{Blend, CubicBasis, Nurbs};
@@ -124,7 +125,7 @@ struct CurveData {
     colors: Option<(Vec<Vec3>, Interpolation)>,
 }
 
-fn curve_data(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<CurveData> {
+fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut Notes) -> Res<CurveData> {
     let counts_attr = prim.attribute("curveVertexCounts");
     let counts = ints(counts_attr.get_at(time)?, "curveVertexCounts")?.unwrap_or_default();
     let around = counts_attr.bracketing_time_samples(time)?;
@@ -137,7 +138,7 @@ fn curve_data(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<CurveData> 
     };
     let points_attr = prim.attribute("points");
     let points = if changes { held_value(&points_attr, time)? } else { points_attr.get_at(time)? };
-    let Some(points) = vec3s(points, "points")? else {
+    let Some(mut points) = vec3s(points, "points")? else {
         if !counts.is_empty() {
             notes.note("curves without `points`: skipped".into(), prim);
         }
@@ -151,6 +152,9 @@ fn curve_data(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<CurveData> 
         points.len()
     );
     anyhow::ensure!(points.iter().all(|p| p.is_finite()), "`points` must be finite");
+    if let Some(skin) = skin {
+        skin.points(&mut points)?;
+    }
     let widths_attr = prim.attribute("widths");
     let widths = match floats(widths_attr.get_at(time)?, "widths")? {
         // One value without interpolation metadata is constant, as USD's renderer reads it.
@@ -248,11 +252,13 @@ fn fit<T>(
     }
 }
 
-/// A `BasisCurves` prim: linear or cubic (bezier, bspline, catmullRom) with its wrap.
+/// A `BasisCurves` prim: linear or cubic (bezier, bspline, catmullRom) with its wrap;
+/// with `skin`, its control points skinned first.
 pub fn read_basis_curves(
     prim: &Prim,
     time: TimeCode,
     transform: Affine3A,
+    skin: Option<&Skinning>,
     notes: &mut Notes,
 ) -> Res<Option<HairEntry>> {
     let tok = |name: &str, d: &str| -> Res<String> { Ok(super::values::token(value(prim, name, time)?, d)) };
@@ -268,7 +274,7 @@ pub fn read_basis_curves(
         }
     };
     let shape = CurveShape { basis, periodic: wrap == "periodic", pinned: wrap == "pinned" };
-    let mut d = curve_data(prim, time, notes)?;
+    let mut d = curve_data(prim, time, skin, notes)?;
     let varying_total: usize = d.counts.iter().map(|&n| shape.ends(n)).sum();
     let constant_color = d.check_primvars(varying_total, prim, notes);
     let mut set = StrandSet::new();
@@ -338,14 +344,16 @@ fn knots_valid(knots: &[f64], counts: &[usize], orders: &[i64]) -> bool {
 /// A `NurbsCurves` prim: each curve evaluated by de Boor's algorithm with its `order` and
 /// `knots` (rational with `pointWeights`), sampled at every knot and
 /// [`PIECES_PER_SEGMENT`] points per span; vertex widths and colours follow the same
-/// basis, varying ones are blended linearly along each span.
+/// basis, varying ones are blended linearly along each span. With `skin`, the control
+/// points are skinned first.
 pub fn read_nurbs_curves(
     prim: &Prim,
     time: TimeCode,
     transform: Affine3A,
+    skin: Option<&Skinning>,
     notes: &mut Notes,
 ) -> Res<Option<HairEntry>> {
-    let mut d = curve_data(prim, time, notes)?;
+    let mut d = curve_data(prim, time, skin, notes)?;
     let mut orders = ints(value(prim, "order", time)?, "order")?.unwrap_or_default();
     let mut knots = match doubles(value(prim, "knots", time)?, "knots")? {
         Some(k) => k,

@@ -3,6 +3,7 @@
 //! else `primvars:displayColor`; and the material of Arnold's `standard_hair` bound to
 //! curves.
 
+use super::skel::Skinning;
 use super::values::{boolean, interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res};
 use super::Notes;
 use crate::geometry::TriangleMesh;
@@ -21,9 +22,13 @@ const AROUND: usize = 32;
 
 /// A `Mesh` prim: `points`, `faceVertexCounts`, `faceVertexIndices` (polygons as fans),
 /// vertex `normals` and `primvars:st` (vertex or face-varying, indexed or not).
-/// Subdivision surfaces are their control cage.
-pub fn read_mesh(prim: &Prim, time: TimeCode) -> Res<TriangleMesh> {
-    let positions = vec3s(value(prim, "points", time)?, "points")?.unwrap_or_default();
+/// Subdivision surfaces are their control cage. With `skin`, points and vertex normals
+/// are skinned first.
+pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>) -> Res<TriangleMesh> {
+    let mut positions = vec3s(value(prim, "points", time)?, "points")?.unwrap_or_default();
+    if let Some(skin) = skin {
+        skin.points(&mut positions)?;
+    }
     let counts = ints(value(prim, "faceVertexCounts", time)?, "faceVertexCounts")?.unwrap_or_default();
     let indices = ints(value(prim, "faceVertexIndices", time)?, "faceVertexIndices")?.unwrap_or_default();
     let total: i64 = counts.iter().map(|&c| c.max(0)).sum();
@@ -36,9 +41,12 @@ pub fn read_mesh(prim: &Prim, time: TimeCode) -> Res<TriangleMesh> {
     let n = positions.len();
     anyhow::ensure!(indices.iter().all(|&i| i >= 0 && (i as usize) < n), "a face index is not one of the {n} points");
     let normals_attr = prim.attribute("normals");
-    let normals = vec3s(normals_attr.get_at(time)?, "normals")?.filter(|v| {
+    let mut normals = vec3s(normals_attr.get_at(time)?, "normals")?.filter(|v| {
         v.len() == n && interpolation(&normals_attr, Interpolation::Vertex).ok() == Some(Interpolation::Vertex)
     });
+    if let (Some(skin), Some(normals)) = (skin, &mut normals) {
+        skin.normals(normals)?;
+    }
     // UVs: vertex (one per point) or face-varying (one per face corner), optionally indexed.
     let st_attr = prim.attribute("primvars:st");
     let st: Option<Vec<[f32; 2]>> = match st_attr.get_at::<sdf::Value>(time)? {
