@@ -260,6 +260,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
     let mut paths = Vec::new();
     stage.traverse(PrimPredicate::DEFAULT_PROXIES, |p| paths.push(p.clone()))?;
     let mut cameras = Vec::new();
+    let mut poses = skel::Poses::default();
     for path in paths {
         let prim = stage.prim(path.clone());
         let kind = prim.type_name()?.map(|t| t.as_str().to_string()).unwrap_or_default();
@@ -281,7 +282,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
         let skin = match kind.as_str() {
             "Camera" => None,
             k if lights::LIGHT_TYPES.contains(&k) => None,
-            _ => skel::skinning(&prim, time, notes)?,
+            _ => skel::skinning(&prim, time, &mut poses, notes)?,
         };
         // Skinned points are in the Skeleton's space: its transform places them, the prim's
         // own no longer applies (UsdSkel, "Schemas In-Depth").

@@ -37,6 +37,7 @@ use glam::{DMat3, DMat4, DQuat, DVec3, Vec3};
 use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
 use std::collections::HashMap;
+use std::rc::Rc;
 
 /// What skinning a prim does at one time code: each point's blended matrix (one for the
 /// whole prim with constant influences), taking bind-time prim points to skeleton space,
@@ -85,9 +86,14 @@ impl Skinning {
     }
 }
 
+/// The skeletons of a stage posed at one time code, each once (by Skeleton and animation
+/// paths), for all the prims bound to it.
+#[derive(Default)]
+pub struct Poses(HashMap<(String, Option<String>), Rc<Checked<Pose>>>);
+
 /// The skinning of `prim` at `time`: `None` when it is not bound to a skeleton, or (said in
 /// `notes`) when its binding cannot be evaluated and it is drawn in its rest pose.
-pub fn skinning(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Skinning>> {
+pub fn skinning(prim: &Prim, time: TimeCode, poses: &mut Poses, notes: &mut Notes) -> Res<Option<Skinning>> {
     let Some((skeleton, under_root)) = bound_skeleton(prim)? else {
         if prim.attribute("skel:skeleton").get::<sdf::Value>().ok().flatten().is_some() {
             notes.note("`skel:skeleton` authored as an attribute, not a relationship: not skinned".into(), prim);
@@ -104,7 +110,21 @@ pub fn skinning(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Sk
     if token(value(prim, "primvars:skel:skinningMethod", time)?, "classicLinear") == "dualQuaternion" {
         notes.note("dual-quaternion skinning: skinned linearly".into(), prim);
     }
-    match evaluate(prim, &skeleton, time, notes)? {
+    let anim = animation(prim, &skeleton)?;
+    let key = (skeleton.path().to_string(), anim.as_ref().map(|a| a.path().to_string()));
+    let pose = match poses.0.get(&key) {
+        Some(pose) => pose.clone(),
+        None => {
+            let pose = Rc::new(skeleton_pose(&skeleton, anim.as_ref(), time, notes)?);
+            poses.0.insert(key, pose.clone());
+            pose
+        }
+    };
+    let skinned = (*pose).as_ref().map_err(String::clone).and_then(|pose| {
+        let matrices = influences(prim, time, pose)?;
+        Ok(Skinning { matrices, skel_to_world: pose.skel_to_world })
+    });
+    match skinned {
         Ok(s) => Ok(Some(s)),
         Err(why) => {
             notes.note_why("UsdSkel bindings that cannot be evaluated: drawn in the rest pose".into(), prim, &why);
@@ -188,27 +208,17 @@ fn quats(v: Option<sdf::Value>) -> Checked<Option<Vec<DQuat>>> {
 type Checked<T> = Result<T, String>;
 
 /// A Skeleton posed at one time code.
-struct Pose {
+pub struct Pose {
     /// Per joint, `jointSkel · inverse(bindTransform)` in glam's order.
     skinning: Vec<DMat4>,
     /// The joints' paths.
     joints: Vec<String>,
+    /// The Skeleton prim's local-to-world.
+    skel_to_world: DMat4,
 }
 
-/// The skinning of `prim` by `skeleton` at `time`.
-fn evaluate(prim: &Prim, skeleton: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Checked<Skinning>> {
-    let pose = match skeleton_pose(prim, skeleton, time, notes)? {
-        Ok(pose) => pose,
-        Err(why) => return Ok(Err(why)),
-    };
-    Ok(influences(prim, time, &pose).and_then(|matrices| {
-        let skel_to_world = super::world_matrix(prim.stage(), skeleton.path(), time).map_err(|e| format!("{e:#}"))?;
-        Ok(Skinning { matrices, skel_to_world })
-    }))
-}
-
-/// The Skeleton `prim` is bound to, posed at `time`.
-fn skeleton_pose(prim: &Prim, skeleton: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Checked<Pose>> {
+/// `skeleton` posed at `time` by `anim` (else by its rest transforms).
+fn skeleton_pose(skeleton: &Prim, anim: Option<&Prim>, time: TimeCode, notes: &mut Notes) -> Res<Checked<Pose>> {
     let at = skeleton.path();
     if skeleton.type_name()?.is_none_or(|t| t.as_str() != "Skeleton") {
         return Ok(Err(format!("`skel:skeleton` targets {at}, which is not a Skeleton")));
@@ -249,9 +259,9 @@ fn skeleton_pose(prim: &Prim, skeleton: &Prim, time: TimeCode, notes: &mut Notes
         Some(r) => return Ok(Err(format!("{at}: {} `restTransforms` for {n} joints", r.len()))),
         None => vec![None; n],
     };
-    match animation(prim, skeleton)? {
+    match anim {
         Some(anim) if anim.type_name()?.is_some_and(|t| t.as_str() == "SkelAnimation") => {
-            if let Err(why) = animate(&anim, time, &index, &mut local, notes, prim) {
+            if let Err(why) = animate(anim, time, &index, &mut local, notes) {
                 return Ok(Err(format!("{}: {why}", anim.path())));
             }
         }
@@ -279,7 +289,11 @@ fn skeleton_pose(prim: &Prim, skeleton: &Prim, time: TimeCode, notes: &mut Notes
         }
         skinning.push(m);
     }
-    Ok(Ok(Pose { skinning, joints }))
+    let skel_to_world = match super::world_matrix(skeleton.stage(), at, time) {
+        Ok(m) => m,
+        Err(e) => return Ok(Err(format!("{at}: {e:#}"))),
+    };
+    Ok(Ok(Pose { skinning, joints, skel_to_world }))
 }
 
 /// The SkelAnimation bound to `skeleton`, else to the nearest ancestor of `prim` that
@@ -300,7 +314,6 @@ fn animate(
     index: &HashMap<&str, usize>,
     local: &mut [Option<DMat4>],
     notes: &mut Notes,
-    prim: &Prim,
 ) -> Checked<()> {
     let get = |name: &str| value(anim, name, time).map_err(|e| e.to_string());
     let names = tokens(get("joints")?, "joints")?.unwrap_or_default();
@@ -336,7 +349,7 @@ fn animate(
         local[i] = Some(DMat4::from_scale_rotation_translation(s, r / len, t));
     }
     if unknown > 0 {
-        notes.add("SkelAnimation joints that are not in the bound Skeleton: ignored".into(), prim, unknown);
+        notes.add("SkelAnimation joints that are not in the bound Skeleton: ignored".into(), anim, unknown);
     }
     Ok(())
 }

@@ -933,9 +933,8 @@ fn skinned_curves_follow_the_skeleton_animation_at_the_frame() {
         assert!((strands(&s, 0).points[1][3] - 0.05).abs() < 1e-6);
         // Animation joints the skeleton does not have are left out, and said.
         assert!(
-            s.warnings.iter().any(|w| w.contains(
-                "SkelAnimation joints that are not in the bound Skeleton: ignored (1; first: /Rig/Geo/Hair)"
-            )),
+            s.warnings.iter().any(|w| w
+                .contains("SkelAnimation joints that are not in the bound Skeleton: ignored (1; first: /Rig/Anim)")),
             "{:?}",
             s.warnings
         );
@@ -986,7 +985,23 @@ fn skinned_meshes_and_bindings_inherited_from_ancestors() {
             int[] primvars:skel:jointIndices = [0, 1, 1] (interpolation = "vertex" elementSize = 1)
             float[] primvars:skel:jointWeights = [1, 1, 1] (interpolation = "vertex" elementSize = 1)
         }"#;
-    let s = read_skel_with(mesh, "rel skel:animationSource = </Rig/Anim>", "rel skel:skeleton = </Rig/Skel>", 10);
+    let curve = skinned_curve(
+        "Hair",
+        r#"int[] primvars:skel:jointIndices = [1] (interpolation = "constant" elementSize = 1)
+           float[] primvars:skel:jointWeights = [1] (interpolation = "constant" elementSize = 1)"#,
+    );
+    let prims = format!("{mesh}\n{curve}");
+    let s = read_skel_with(&prims, "rel skel:animationSource = </Rig/Anim>", "rel skel:skeleton = </Rig/Skel>", 10);
+    // The skeleton is posed once for both prims: its animation's stray joint is said once.
+    assert!(
+        s.warnings
+            .iter()
+            .any(|w| w
+                .contains("SkelAnimation joints that are not in the bound Skeleton: ignored (1; first: /Rig/Anim)")),
+        "{:?}",
+        s.warnings
+    );
+    assert_near(&world_points(&s, 0), &[Vec3::new(10.0, 1.0, 0.0), Vec3::new(9.0, 1.0, 0.0)], &s);
     let MeshEntry { source: MeshSource::Inline(m), transform, .. } = &s.contents.meshes[0] else { panic!() };
     let got: Vec<Vec3> = m.positions.iter().map(|p| transform.transform_point3(*p)).collect();
     assert_near(&got, &[Vec3::new(10.0, 1.0, 0.0), Vec3::new(9.0, 1.0, 0.0), Vec3::new(10.0, 2.0, 0.0)], &s);
