@@ -39,7 +39,8 @@ pub const IMPORTED_EXTENSIONS: [&str; 9] = ["ma", "pbrt", "usda", "usdc", "usdz"
 /// What to read of a file that holds more than one frame or camera.
 #[derive(Clone, Debug, Default)]
 pub struct ImportOptions {
-    /// The frame (a USD time code); `None` reads the file's start (USD's `startTimeCode`).
+    /// The frame (a USD time code, a Maya frame); `None` reads the file's start (USD's
+    /// `startTimeCode`, Maya's saved current time).
     pub frame: Option<u32>,
     /// The camera to render through, by its prim path (USD) or its transform's or shape's
     /// name (Maya); `None` takes the file's first (Maya: other than `persp`).
@@ -72,7 +73,7 @@ pub fn read_imported_with(path: &Path, options: &ImportOptions) -> Result<import
         return Err(no_named_cameras(path));
     }
     let mut imported = match ext.as_deref() {
-        Some("ma") => maya_ascii::read_maya(path, options.camera.as_deref())?,
+        Some("ma") => maya_ascii::read_maya(path, options.camera.as_deref(), options.frame)?,
         Some("pbrt") => pbrt::read_pbrt(path)?,
         Some("usda" | "usdc" | "usdz" | "usd") => usd::read_usd(path, options)?,
         Some("hair") => raw_strands(cem_hair::read_hair(path)?),

@@ -16,7 +16,7 @@ pub struct ExportArgs {
     /// as linear BasisCurves and meshes).
     #[arg(short, long)]
     output: PathBuf,
-    /// Animation frame (for scenes with camera keys or frame patterns).
+    /// Animation frame (scenes with camera keys or frame patterns, USD time samples, Maya animation curves).
     #[arg(long)]
     frame: Option<u32>,
     #[command(flatten)]
@@ -33,7 +33,7 @@ pub enum FurCommand {
         /// Output file: a Cem Yuksel .hair file, or a USD text .usda file.
         #[arg(short, long)]
         output: PathBuf,
-        /// Animation frame (for scenes with camera keys or frame patterns).
+        /// Animation frame (scenes with camera keys or frame patterns, USD time samples, Maya animation curves).
         #[arg(long)]
         frame: Option<u32>,
     },

@@ -13,7 +13,7 @@ use tress::world::World;
 pub struct InfoArgs {
     /// Scene file (TOML, .ma, .pbrt or .usda); the built-in demo scene when omitted.
     scene: Option<PathBuf>,
-    /// Animation frame (for scenes with camera keys or frame patterns).
+    /// Animation frame (scenes with camera keys or frame patterns, USD time samples, Maya animation curves).
     #[arg(long)]
     frame: Option<u32>,
     #[command(flatten)]

@@ -37,7 +37,8 @@ pub struct RenderArgs {
     force: bool,
     /// Animation frames: one frame (12), a range (1-24) or every STEP-th frame of one
     /// (1-24x2). Camera keys are interpolated at each frame and # runs in the scene's file
-    /// names become its number (docs/scene-format.md).
+    /// names become its number (docs/scene-format.md); USD files are read at that time code,
+    /// Maya files with their animation curves at that frame (docs/interop.md).
     #[arg(long, visible_alias = "frame", value_name = "N|FIRST-LAST[xSTEP]", value_parser = parse_frames)]
     frames: Option<Frames>,
     /// Print nothing but errors: no progress, warnings or summary.

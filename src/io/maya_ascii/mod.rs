@@ -57,8 +57,13 @@
 //!   one, when Arnold renders the file, the `standard_hair` MtoA makes (Arnold's defaults
 //!   on curves; a diffuse one of the hair colour on hair systems); else tube shading.
 //!
+//! - **animation curves** (`animCurveT*`) are evaluated at the frame before anything else
+//!   is read and override the attributes they drive, see [`anim`]; XGen grooms follow the
+//!   meshes they are bound to from the file's saved time to that frame.
+//!
 //! Every other node type is skipped, all of them together in one warning.
 
+pub mod anim;
 pub mod fur_nodes;
 pub mod history;
 pub mod parse;
@@ -98,28 +103,46 @@ pub const SAMPLES_PER_SPAN: usize = 8;
 const MAX_CVS: usize = 1 << 22;
 
 /// Reads a `.ma` file, through the camera named `camera` (its transform's or its shape's
-/// name) when one is given.
-pub fn read_maya(path: &Path, camera: Option<&str>) -> Result<Imported, LoadError> {
+/// name) when one is given, with its animation curves at `frame` (else at the file's saved
+/// time, [`anim::saved_time`]).
+pub fn read_maya(path: &Path, camera: Option<&str>, frame: Option<u32>) -> Result<Imported, LoadError> {
     let bytes = crate::input_file::read(path, crate::input_file::Kind::ImportedScene)?;
     // Maya writes files in the system code page; anything not UTF-8 is replaced, which can
     // only touch names and strings.
-    parse_maya_with(&String::from_utf8_lossy(&bytes), path, camera)
+    parse_maya_with(&String::from_utf8_lossy(&bytes), path, camera, frame)
 }
 
 /// Reads `.ma` text; `path` names the file in messages.
 pub fn parse_maya(text: &str, path: &Path) -> Result<Imported, LoadError> {
-    parse_maya_with(text, path, None)
+    parse_maya_with(text, path, None, None)
 }
 
-/// [`parse_maya`] through the camera named `camera`.
-pub fn parse_maya_with(text: &str, path: &Path, camera: Option<&str>) -> Result<Imported, LoadError> {
+/// [`parse_maya`] through the camera named `camera`, at `frame`.
+pub fn parse_maya_with(
+    text: &str,
+    path: &Path,
+    camera: Option<&str>,
+    frame: Option<u32>,
+) -> Result<Imported, LoadError> {
     // Line 0: a problem of the whole file (a camera asked for that it does not have).
     let at = |(line, msg): (u32, String)| match line {
         0 => LoadError::invalid(path, msg),
         _ => LoadError::format(path, format!("line {line}: {msg}")),
     };
-    let g = parse::parse(text).map_err(at)?;
+    let mut g = parse::parse(text).map_err(at)?;
+    let saved = anim::saved_time(&g);
+    let time = frame.map_or(saved, f64::from);
+    // XGen's groom splines are stored in world space as the scene stood at its saved time;
+    // the pose at that time places them again on their meshes at the frame.
+    let saved_pose = (time != saved && g.nodes.iter().any(|n| n.kind == "xgmSplineDescription")).then(|| {
+        let mut at_saved = g.clone();
+        anim::apply(&mut at_saved, saved);
+        at_saved
+    });
+    let (warnings, _) = anim::apply(&mut g, time);
     let mut reader = Reader::new(&g);
+    reader.saved_pose = saved_pose.as_ref();
+    reader.out.warnings = warnings;
     reader.wanted_camera = camera.map(str::to_string);
     reader.dir = path.parent().map(Path::to_path_buf);
     reader.read().map_err(at)
@@ -129,8 +152,12 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 52] = [
+const KNOWN: [&str; 56] = [
     "transform",
+    "animCurveTL",
+    "animCurveTA",
+    "animCurveTU",
+    "animCurveTT",
     "mesh",
     "nurbsCurve",
     "hairSystem",
@@ -212,6 +239,9 @@ struct Reader<'g> {
     unread_shaders: BTreeMap<String, usize>,
     /// The folder of the `.ma`, where XGen collection files are looked for.
     dir: Option<std::path::PathBuf>,
+    /// The graph with its animation at the file's saved time, when the frame read is
+    /// another and XGen grooms (stored as they stood then) must follow their meshes.
+    saved_pose: Option<&'g Graph>,
 }
 
 impl<'g> Reader<'g> {
@@ -230,6 +260,7 @@ impl<'g> Reader<'g> {
             hair_shaders: HashMap::new(),
             unread_shaders: BTreeMap::new(),
             dir: None,
+            saved_pose: None,
         }
     }
 

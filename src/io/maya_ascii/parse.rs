@@ -238,6 +238,9 @@ pub struct Graph {
     /// Centimetres (Maya's internal unit) in one of the file's linear units
     /// (`currentUnit -l`): the file's values are in that unit.
     pub centimeters_per_unit: f64,
+    /// Frames in a second of the file's time unit (`currentUnit -t`: `film` 24, `pal` 25,
+    /// `ntsc` 30, ...): animation curves' key times count in that unit.
+    pub frames_per_second: f64,
     by_name: HashMap<String, Vec<usize>>,
     /// Indices into `connections` by destination node and by source node, in file order,
     /// so that a node's connections cost their number, not the file's (`inputs_of`).
@@ -253,7 +256,12 @@ const MAX_WORDS: usize = 50_000_000;
 
 /// Reads the whole text; an error carries its line.
 pub fn parse(text: &str) -> Result<Graph, (u32, String)> {
-    let mut g = Graph { angle_to_radians: std::f64::consts::PI / 180.0, centimeters_per_unit: 1.0, ..Graph::default() };
+    let mut g = Graph {
+        angle_to_radians: std::f64::consts::PI / 180.0,
+        centimeters_per_unit: 1.0,
+        frames_per_second: 24.0,
+        ..Graph::default()
+    };
     let mut lexer = Lexer::new(text);
     let mut current: Option<usize> = None;
     while let Some(words) = lexer.statement()? {
@@ -300,12 +308,43 @@ pub fn parse(text: &str) -> Result<Graph, (u32, String)> {
                         None => return Err((line, "`currentUnit -l` without a unit".into())),
                     };
                 }
+                if let Some(i) = words.iter().position(|w| w.text == "-t" || w.text == "-time") {
+                    let unit = words
+                        .get(i + 1)
+                        .map(|w| w.text)
+                        .ok_or((line, "`currentUnit -t` without a unit".to_string()))?;
+                    g.frames_per_second = time_unit(unit).ok_or((line, format!("unknown time unit `{unit}`")))?;
+                }
             }
             _ => {}
         }
     }
     g.index_connections();
     Ok(g)
+}
+
+/// Frames a second of a Maya time unit (the `currentUnit -t` names, `Nfps` included).
+fn time_unit(unit: &str) -> Option<f64> {
+    Some(match unit {
+        "hour" => 1.0 / 3600.0,
+        "min" => 1.0 / 60.0,
+        "sec" => 1.0,
+        "millisec" => 1000.0,
+        "game" => 15.0,
+        "film" => 24.0,
+        "pal" => 25.0,
+        "ntsc" => 30.0,
+        "show" => 48.0,
+        "palf" => 50.0,
+        "ntscf" => 60.0,
+        // `23.976fps`, `29.97df` (drop frame: the same rate), ...
+        u => u
+            .strip_suffix("fps")
+            .or_else(|| u.strip_suffix("df"))?
+            .parse::<f64>()
+            .ok()
+            .filter(|f| f.is_finite() && *f > 0.0)?,
+    })
 }
 
 /// The node part of a name or plug: the last component of a DAG path, without a leading

@@ -388,8 +388,9 @@ fn a_camera_is_chosen_by_its_transform_or_shape_name() {
                createNode camera -n \"nearShape\" -p \"near\";\n\
                createNode transform -n \"far\";\n\tsetAttr \".t\" -type \"double3\" 0 0 40 ;\n\
                createNode camera -n \"farShape\" -p \"far\";\n";
-    let eye =
-        |camera: Option<&str>| parse_maya_with(two, Path::new("dir/two.ma"), camera).map(|s| s.camera.unwrap().eye.z);
+    let eye = |camera: Option<&str>| {
+        parse_maya_with(two, Path::new("dir/two.ma"), camera, None).map(|s| s.camera.unwrap().eye.z)
+    };
     assert_eq!(eye(None).unwrap(), 4.0);
     assert_eq!(eye(Some("far")).unwrap(), 40.0);
     assert_eq!(eye(Some("farShape")).unwrap(), 40.0);
@@ -1023,7 +1024,7 @@ fn xgen_collections_grow_their_density_and_length_on_the_bound_mesh() {
     let ma = dir.path().join("scene.ma");
     std::fs::write(&ma, XGEN_SCENE).unwrap();
     // Without the collection file: the warning names it, nothing grows.
-    let s = read_maya(&ma, None).unwrap();
+    let s = read_maya(&ma, None, None).unwrap();
     assert!(s.contents.fur.is_empty());
     assert!(
         s.warnings.iter().any(|w| w.contains("scene__collection1.xgen") && w.contains("not found")),
@@ -1032,7 +1033,7 @@ fn xgen_collections_grow_their_density_and_length_on_the_bound_mesh() {
     );
 
     std::fs::write(dir.path().join("scene__collection1.xgen"), xgen_file("$a=100.0;#1,1000\\n$a")).unwrap();
-    let s = read_maya(&ma, None).unwrap();
+    let s = read_maya(&ma, None, None).unwrap();
     assert_eq!(s.contents.fur.len(), 1, "{:?}", s.warnings);
     let f = &s.contents.fur[0];
     // 100 strands per unit area on the plane's 8.
@@ -1059,11 +1060,188 @@ fn xgen_collections_grow_their_density_and_length_on_the_bound_mesh() {
 
     // A density that is not a number: a warning naming the file and line, no strands, no panic.
     std::fs::write(dir.path().join("scene__collection1.xgen"), xgen_file("lots")).unwrap();
-    let s = read_maya(&ma, None).unwrap();
+    let s = read_maya(&ma, None, None).unwrap();
     assert!(s.contents.fur.is_empty());
     assert!(
         s.warnings.iter().any(|w| w.contains("scene__collection1.xgen: line 21") && w.contains("density")),
         "{:?}",
         s.warnings
     );
+}
+
+// ----- animation curves -----
+
+/// The value at `t` of an `animCurveTL` whose attributes are `body`, in a file of `head`
+/// (`currentUnit ...`).
+fn curve_at(head: &str, body: &str, t: f64) -> f64 {
+    let g = parse::parse(&format!("{head}createNode animCurveTL -n c;\n{body}")).unwrap();
+    let units = anim::Units { fps: g.frames_per_second, internal_per_file: g.centimeters_per_unit };
+    anim::Curve::read(&g, 0, units).unwrap().eval(t)
+}
+
+#[test]
+fn linear_and_stepped_keys_evaluate_exactly() {
+    let keys = "\tsetAttr -s 2 \".ktv[0:1]\"  1 0 11 10;\n";
+    let linear = format!("\tsetAttr \".tan\" 2;\n{keys}");
+    for (t, v) in [(1.0, 0.0), (4.0, 3.0), (8.5, 7.5), (11.0, 10.0)] {
+        assert_eq!(curve_at("", &linear, t), v);
+    }
+    // Step holds the key's value to the next key; step next takes the next one's.
+    let step = format!("{linear}\tsetAttr -s 2 \".kot[0:1]\"  5 5;\n");
+    assert_eq!((curve_at("", &step, 10.9), curve_at("", &step, 11.0)), (0.0, 10.0));
+    let next = format!("{linear}\tsetAttr \".kot[0]\"  17;\n");
+    assert_eq!((curve_at("", &next, 1.0), curve_at("", &next, 1.1)), (0.0, 10.0));
+}
+
+#[test]
+fn flat_tangents_have_no_slope_at_keys_and_pass_the_middle_at_half() {
+    let flat = "\tsetAttr \".tan\" 3;\n\tsetAttr -s 2 \".ktv[0:1]\"  0 0 10 1;\n";
+    assert!((curve_at("", flat, 5.0) - 0.5).abs() < 1e-12);
+    let h = 1e-4;
+    assert!((curve_at("", flat, h) / h).abs() < 1e-3);
+    assert!(((1.0 - curve_at("", flat, 10.0 - h)) / h).abs() < 1e-3);
+    // Auto (Maya's default) flattens the first and last key as well.
+    let auto = "\tsetAttr \".tan\" 18;\n\tsetAttr -s 2 \".ktv[0:1]\"  0 0 10 1;\n";
+    assert!((curve_at("", auto, 2.0) - curve_at("", flat, 2.0)).abs() < 1e-12);
+}
+
+#[test]
+fn spline_tangents_match_the_hermite_curve_of_maya_s_rule() {
+    // Slopes: 1 at the first key (its segment's), (0 − 0)/20 = 0 in the middle, −1 at the
+    // last. On [0, 10] at s = 1/4: h10·1·10 + h01·10 with h10 = 0.140625, h01 = 0.15625.
+    let spline = "\tsetAttr \".tan\" 9;\n\tsetAttr -s 3 \".ktv[0:2]\"  0 0 10 10 20 0;\n";
+    assert!((curve_at("", spline, 2.5) - 2.96875).abs() < 1e-12);
+    assert!((curve_at("", spline, 5.0) - 6.25).abs() < 1e-12);
+    assert!((curve_at("", spline, 15.0) - 6.25).abs() < 1e-12);
+    // Keys 0, 10, 10: spline gives the middle key slope 10/20 and overshoots 10 after it;
+    // plateau (and auto) flatten it, clamped makes its side towards the equal key linear.
+    let keys = "\tsetAttr -s 3 \".ktv[0:2]\"  0 0 10 10 20 10;\n";
+    let highest = |tan: u32| {
+        let body = format!("\tsetAttr \".tan\" {tan};\n{keys}");
+        (100..=200).map(|i| curve_at("", &body, f64::from(i) * 0.1)).fold(f64::MIN, f64::max)
+    };
+    assert!(highest(9) > 10.1, "{}", highest(9));
+    for tan in [10, 16, 18] {
+        assert!((highest(tan) - 10.0).abs() < 1e-12, "{tan}: {}", highest(tan));
+    }
+}
+
+#[test]
+fn infinity_cycles_offsets_oscillates_and_extends() {
+    let keys = "\tsetAttr \".tan\" 2;\n\tsetAttr -s 2 \".ktv[0:1]\"  0 0 10 10;\n";
+    let at = |pre: u32, post: u32, t: f64| {
+        curve_at("", &format!("{keys}\tsetAttr \".pre\" {pre};\n\tsetAttr \".pst\" {post};\n"), t)
+    };
+    assert_eq!((at(0, 0, -5.0), at(0, 0, 15.0)), (0.0, 10.0));
+    assert_eq!((at(1, 1, -5.0), at(1, 1, 15.0)), (-5.0, 15.0));
+    assert_eq!((at(3, 3, -5.0), at(3, 3, 15.0), at(3, 3, 32.0)), (5.0, 5.0, 2.0));
+    assert_eq!((at(4, 4, -5.0), at(4, 4, 15.0), at(4, 4, 32.0)), (-5.0, 15.0, 32.0));
+    for (t, v) in [(12.0, 8.0), (22.0, 2.0), (-2.0, 2.0)] {
+        assert!((at(5, 5, t) - v).abs() < 1e-12, "{t}: {}", at(5, 5, t));
+    }
+}
+
+#[test]
+fn stored_tangents_are_seconds_and_internal_units() {
+    // Out tangent of key 0: x = 1 s, y = 48 cm: 48 cm a second, 2 cm a frame at 24 fps,
+    // 1.92 at 25; in a file in metres 0.48 m a second.
+    let body = "\tsetAttr \".tan\" 2;\n\tsetAttr -s 2 \".ktv[0:1]\"  0 0 24 24;\n\tsetAttr \".kot[0]\" 1;\n\
+                \tsetAttr \".kox[0]\" 1;\n\tsetAttr \".koy[0]\" 48;\n";
+    let h = 1e-5;
+    let slope = |head: &str| curve_at(head, body, h) / h;
+    assert!((slope("currentUnit -t film;\n") - 2.0).abs() < 1e-3);
+    assert!((slope("currentUnit -t pal;\n") - 1.92).abs() < 1e-3);
+    assert!((slope("currentUnit -l meter -t film;\n") - 0.02).abs() < 1e-3);
+    // Weighted: the same handle as a Bézier control point a third of the way along it.
+    let weighted = format!("{body}\tsetAttr \".wgt\" yes;\n");
+    assert!((curve_at("currentUnit -t film;\n", &weighted, h) / h - 2.0).abs() < 1e-2);
+}
+
+/// A camera `cam` 10 units up +z, looking down −z, its transform driven by `curves`.
+fn animated_camera(curves: &str, frame: Option<u32>) -> crate::scene::CameraDesc {
+    let text = format!(
+        "currentUnit -l centimeter -a degree -t film;\ncreateNode transform -n cam;\n\
+         \tsetAttr \".t\" -type \"double3\" 0 0 10 ;\ncreateNode camera -n camShape -p cam;\n{curves}"
+    );
+    parse_maya_with(&text, Path::new("dir/anim.ma"), None, frame).unwrap().camera.unwrap()
+}
+
+#[test]
+fn animation_curves_move_the_camera_at_the_frame() {
+    let tz = "createNode animCurveTL -n cam_translateZ;\n\tsetAttr \".tan\" 2;\n\
+              \tsetAttr -s 2 \".ktv[0:1]\"  1 10 11 20;\nconnectAttr \"cam_translateZ.o\" \"cam.translateZ\";\n";
+    assert_eq!(animated_camera(tz, Some(1)).eye.z, 10.0);
+    assert_eq!(animated_camera(tz, Some(6)).eye.z, 15.0);
+    // Without a frame: the saved current time, else the playback start, else frame 1.
+    assert_eq!(animated_camera(&format!("{tz}select -ne :time1;\n\tsetAttr \".o\" 11;\n"), None).eye.z, 20.0);
+    let playback = "createNode script -n \"sceneConfigurationScriptNode\";\n\
+                    \tsetAttr \".b\" -type \"string\" \"playbackOptions -min 6 -max 24 -ast 1 -aet 48 \";\n";
+    assert_eq!(animated_camera(&format!("{tz}{playback}"), None).eye.z, 15.0);
+    assert_eq!(animated_camera(tz, None).eye.z, 10.0);
+    // An angle curve in degrees turns the camera a quarter turn about y: it looks along −x.
+    let ry = "createNode animCurveTA -n cam_rotateY;\n\tsetAttr \".tan\" 2;\n\
+              \tsetAttr -s 2 \".ktv[0:1]\"  1 0 11 90;\nconnectAttr \"cam_rotateY.o\" \"cam.ry\";\n";
+    let c = animated_camera(ry, Some(11));
+    assert!(close((c.target - c.eye).normalize(), Vec3::NEG_X), "{:?}", c.target - c.eye);
+    let c = animated_camera(ry, Some(6));
+    assert!(close((c.target - c.eye).normalize(), Vec3::new(-1.0, 0.0, -1.0).normalize()));
+    // The focal length, animated, narrows the view.
+    let fl = "createNode animCurveTU -n camShape_focalLength;\n\tsetAttr \".tan\" 2;\n\
+              \tsetAttr -s 2 \".ktv[0:1]\"  1 35 2 70;\nconnectAttr \"camShape_focalLength.o\" \"camShape.fl\";\n";
+    assert!(animated_camera(fl, Some(2)).vfov < 0.6 * animated_camera(fl, Some(1)).vfov);
+}
+
+#[test]
+fn bad_curves_and_other_drivers_are_warnings_naming_line_and_node() {
+    let warnings = |curves: &str| {
+        let text = format!("createNode transform -n cam;\ncreateNode camera -n camShape -p cam;\n{curves}");
+        parse_maya_with(&text, Path::new("dir/anim.ma"), None, Some(5)).unwrap().warnings
+    };
+    let curve = |ktv: &str| {
+        format!("createNode animCurveTL -n bad;\n\tsetAttr \".ktv[0:1]\" {ktv};\nconnectAttr \"bad.o\" \"cam.tx\";\n")
+    };
+    for (ktv, says) in [
+        ("1 0 2", "not time/value pairs"),
+        ("1 0 nan 1", "must be numbers"),
+        ("2 0 1 1", "do not increase"),
+        ("1 0 1 1", "do not increase"),
+    ] {
+        let w = warnings(&curve(ktv));
+        assert!(w.iter().any(|w| w.contains("line 4") && w.contains("animCurveTL bad") && w.contains(says)), "{w:?}");
+    }
+    // Other drivers and attributes tress does not read: one warning per kind, counted.
+    let others = "createNode expression -n e1;\nconnectAttr \"e1.out[0]\" \"cam.tx\";\n\
+                  createNode expression -n e2;\nconnectAttr \"e2.out[0]\" \"cam.ty\";\n\
+                  createNode animCurveUL -n driven;\nconnectAttr \"driven.o\" \"cam.tz\";\n\
+                  createNode pointConstraint -n pc -p cam;\nconnectAttr \"pc.ctx\" \"cam.tx\";\n\
+                  createNode lambert -n l;\ncreateNode animCurveTU -n lc;\n\tsetAttr \".ktv[0]\" 1 1;\n\
+                  connectAttr \"lc.o\" \"l.itr\";\n";
+    let w = warnings(others);
+    for says in ["expressions (2)", "driven keys (animCurveU*) (1)", "constraints (1)", "lambert.itr (1)"] {
+        assert!(w.iter().any(|w| w.contains(says)), "{says}: {w:?}");
+    }
+}
+
+#[test]
+fn xgen_grooms_follow_their_animated_mesh() {
+    let a: &[[f32; 3]] = &[[0.0, 1.0, 0.0], [0.0, 2.0, 0.0]];
+    // Saved at frame 5, when the sphere stood at x = 4: the splines are there in world space.
+    let text = format!(
+        "currentUnit -l centimeter -a degree -t film;\ncreateNode transform -n ball;\n\
+         createNode mesh -n ballShape -p ball;\ncreateNode polySphere -n ps;\nconnectAttr \"ps.out\" \"ballShape.i\";\n\
+         createNode animCurveTL -n ball_tx;\n\tsetAttr \".tan\" 2;\n\tsetAttr -s 2 \".ktv[0:1]\"  1 0 5 4;\n\
+         connectAttr \"ball_tx.o\" \"ball.tx\";\nselect -ne :time1;\n\tsetAttr \".o\" 5;\n\
+         createNode transform -n d;\ncreateNode xgmSplineDescription -n dShape -p d;\n\tsetAttr \".w\" 0.1;\n\
+         createNode xgmSplineBase -n base;\n\tsetAttr \".csd\" -type \"xgmSplineData\" {};\n\
+         connectAttr \"base.osd\" \"dShape.isd\";\nconnectAttr \"ballShape.w\" \"base.bm[0]\";\n",
+        spline_data_words(&[&a.iter().map(|p| [p[0] + 4.0, p[1], p[2]]).collect::<Vec<_>>()], None)
+    );
+    let root = |frame| {
+        let s = parse_maya_with(&text, Path::new("dir/groom.ma"), None, frame).unwrap();
+        strands(&s)[0][0]
+    };
+    assert!(close(root(None), Vec3::new(4.0, 1.0, 0.0)));
+    assert!(close(root(Some(5)), Vec3::new(4.0, 1.0, 0.0)));
+    assert!(close(root(Some(1)), Vec3::new(0.0, 1.0, 0.0)), "{}", root(Some(1)));
+    assert!(close(root(Some(3)), Vec3::new(2.0, 1.0, 0.0)));
 }

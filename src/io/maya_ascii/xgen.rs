@@ -46,6 +46,9 @@ pub struct Splines {
     pub strands: Vec<Vec<Vec3>>,
     /// `WIDTH_CV` at each control vertex (1 when the data has none).
     pub widths: Vec<Vec<f32>>,
+    /// The bound mesh each spline grows on: the index `k` of its item's name
+    /// `.boundMesh[k]`, the base's `.bm[k]` input.
+    pub bound: Vec<Option<usize>>,
 }
 
 /// Reads the quoted words of an `xgmSplineData` value.
@@ -82,6 +85,7 @@ pub fn spline_data(words: &[String]) -> Result<Splines, String> {
                 }
             }
         };
+        let bound = item["Name"].as_str().and_then(super::plug_index);
         let infos = array("PrimitiveInfos")?.ok_or("an item has no `PrimitiveInfos`")?;
         let positions = floats(array("Positions")?.ok_or("an item has no `Positions`")?, "Positions")?;
         let widths = array("WIDTH_CV")?.map(|a| floats(a, "WIDTH_CV")).transpose()?;
@@ -108,6 +112,7 @@ pub fn spline_data(words: &[String]) -> Result<Splines, String> {
                 return Err(format!("spline {k} has a control vertex that is not finite"));
             }
             out.strands.push(strand);
+            out.bound.push(bound);
             out.widths.push(match &widths {
                 Some(w) => w[range].iter().map(|x| if x.is_finite() { x.max(0.0) } else { 1.0 }).collect(),
                 None => vec![1.0; count as usize],
@@ -171,9 +176,12 @@ impl Reader<'_> {
                 None => Ramp::constant(1.0),
             };
             let first = set.strand_count();
-            for (strand, widths) in splines.strands.iter().zip(&splines.widths) {
+            let moves = self.bound_mesh_moves(base)?;
+            for ((strand, widths), bound) in splines.strands.iter().zip(&splines.widths).zip(&splines.bound) {
                 let last = (strand.len() - 1) as f32;
+                let m = bound.and_then(|k| moves.get(&k)).copied().unwrap_or(glam::Affine3A::IDENTITY);
                 set.push_strand(strand.iter().zip(widths).enumerate().map(|(k, (&p, &w))| {
+                    let p = m.transform_point3(p);
                     (p, 0.5 * w * ramp.eval(k as f32 / last).max(0.0) * if scale.is_nan() { 1.0 } else { scale })
                 }));
             }
@@ -204,6 +212,29 @@ impl Reader<'_> {
             self.collection(p);
         }
         Ok(())
+    }
+
+    /// How each mesh bound to an `xgmSplineBase` (`.bm[k]`, from the mesh's `.worldMesh`)
+    /// moved between the file's saved time, when XGen stored the splines in world space,
+    /// and the frame read: its world matrix at the frame times the inverse of the one at the
+    /// saved time, by `k`. Empty when the frame is the saved time.
+    fn bound_mesh_moves(&mut self, base: usize) -> Res<std::collections::HashMap<usize, glam::Affine3A>> {
+        let mut out = std::collections::HashMap::new();
+        let Some(saved) = self.saved_pose else { return Ok(out) };
+        let bound: Vec<(usize, usize)> = self
+            .g
+            .inputs_of(base)
+            .filter(|c| matches!(super::plug_base(&c.dst_attr), "bm" | "boundMesh"))
+            .filter_map(|c| Some((super::plug_index(&c.dst_attr)?, c.src)))
+            .collect();
+        for (k, mesh) in bound {
+            let then = Reader::new(saved).world(mesh)?;
+            let now = self.world(mesh)?;
+            if then.matrix3.determinant().abs() > 1e-12 {
+                out.insert(k, super::to_affine(&(now * then.inverse())));
+            }
+        }
+        Ok(out)
     }
 
     /// An XGen collection (`xgmPalette`): each of its descriptions that its collection file
