@@ -390,8 +390,8 @@ fn influences(prim: &Prim, time: TimeCode, pose: &Pose) -> Checked<Vec<DMat4>> {
         ));
     }
     let points = match value(prim, "points", time).map_err(stage_err)? {
-        Some(v) => vec3s(Some(v), "points").map_err(stage_err)?.map_or(0, |p| p.len()),
-        None => 0,
+        Some(v) => vec3s(Some(v), "points").map_err(stage_err)?.map(|p| p.len()),
+        None => None,
     };
     let interp = match indices_attr.get_metadata::<sdf::Value>("interpolation").map_err(stage_err)? {
         None if indices.len() == es => "constant".to_string(),
@@ -400,7 +400,7 @@ fn influences(prim: &Prim, time: TimeCode, pose: &Pose) -> Checked<Vec<DMat4>> {
     };
     let components = match interp.as_str() {
         "constant" => 1,
-        "vertex" => points,
+        "vertex" => points.ok_or_else(|| format!("{path}: per-point joint influences on a prim without points"))?,
         other => {
             return Err(format!(
                 "{path}: joint influences of `{other}` interpolation (UsdSkel reads vertex or constant)"

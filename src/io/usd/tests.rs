@@ -982,6 +982,7 @@ fn skinned_meshes_and_bindings_inherited_from_ancestors() {
             int[] faceVertexCounts = [3]
             int[] faceVertexIndices = [0, 1, 2]
             point3f[] points = [(0, 1, 0), (0, 2, 0), (1, 1, 0)]
+            normal3f[] normals = [(0, 1, 0), (0, 1, 0), (1, 0, 0)] (interpolation = "vertex")
             int[] primvars:skel:jointIndices = [0, 1, 1] (interpolation = "vertex" elementSize = 1)
             float[] primvars:skel:jointWeights = [1, 1, 1] (interpolation = "vertex" elementSize = 1)
         }"#;
@@ -1005,6 +1006,51 @@ fn skinned_meshes_and_bindings_inherited_from_ancestors() {
     let MeshEntry { source: MeshSource::Inline(m), transform, .. } = &s.contents.meshes[0] else { panic!() };
     let got: Vec<Vec3> = m.positions.iter().map(|p| transform.transform_point3(*p)).collect();
     assert_near(&got, &[Vec3::new(10.0, 1.0, 0.0), Vec3::new(9.0, 1.0, 0.0), Vec3::new(10.0, 2.0, 0.0)], &s);
+    // Vertex normals turn with their points.
+    let normals = m.normals.as_ref().expect("normals");
+    assert_near(normals, &[Vec3::Y, -Vec3::X, Vec3::Y], &s);
+}
+
+#[test]
+fn gprims_with_a_rigid_binding_move_whole() {
+    let ball = |influences: &str| {
+        format!(
+            r#"def Sphere "Ball" (prepend apiSchemas = ["SkelBindingAPI"]) {{
+                rel skel:skeleton = </Rig/Skel>
+                double radius = 0.5
+                matrix4d primvars:skel:geomBindTransform = ((1,0,0,0),(0,1,0,0),(0,0,1,0),(0,2,0,1))
+                {influences}
+            }}"#
+        )
+    };
+    // Its centre, one above joint B at bind time, turns with B to (-1, 1, 0) in the
+    // skeleton's space, (9, 1, 0) in the world.
+    let s = read_skel(
+        &ball(
+            r#"int[] primvars:skel:jointIndices = [1] (interpolation = "constant" elementSize = 1)
+               float[] primvars:skel:jointWeights = [1] (interpolation = "constant" elementSize = 1)"#,
+        ),
+        10,
+    );
+    let centre = s.contents.meshes[0].transform.transform_point3(Vec3::ZERO);
+    assert!((centre - Vec3::new(9.0, 1.0, 0.0)).length() < 1e-4, "{centre} {:?}", s.warnings);
+    // Per-point influences have no points to apply to: the rest pose, said.
+    let s = read_skel(
+        &ball(
+            r#"int[] primvars:skel:jointIndices = [1, 1] (interpolation = "vertex" elementSize = 1)
+               float[] primvars:skel:jointWeights = [1, 1] (interpolation = "vertex" elementSize = 1)"#,
+        ),
+        10,
+    );
+    let centre = s.contents.meshes[0].transform.transform_point3(Vec3::ZERO);
+    assert!((centre - Vec3::new(10.0, 0.0, 50.0)).length() < 1e-4, "{centre} {:?}", s.warnings);
+    assert!(
+        s.warnings
+            .iter()
+            .any(|w| w.contains("rest pose") && w.contains("per-point joint influences on a prim without points")),
+        "{:?}",
+        s.warnings
+    );
 }
 
 #[test]
