@@ -51,6 +51,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 seed: 1,
                 guides: None,
                 lod: None,
+                grows_on: None,
+                width_profile: None,
             }],
             ..Default::default()
         },

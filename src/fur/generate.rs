@@ -8,7 +8,8 @@
 //! Density or any other triangle changes. The share is by true surface area
 //! ([`Placement::Area`], the default) or, as Maya does, by UV area ([`Placement::Uv`]).
 //! Baldness keeps a root's hair with probability equal to its value (mrLiquid's rule);
-//! hairs of length 0 are not grown.
+//! hairs of length 0 are not grown. Triangles a face mask ([`GrowOptions::grows_on`])
+//! leaves out weigh nothing, so Density is spread over the others.
 //!
 //! **Shape** (specification section 3): a frame from the normal `N` and the surface's U
 //! tangent `U0` (`V0 = N x U0`); Polar `p` turns `U0, V0` about `N` by `(p - 0.5) 2 pi` to
@@ -29,6 +30,9 @@
 //! `p = 10^(-ClumpShape / 10)` (`s` the fraction along the hair), so Clumping 1 brings
 //! the tips onto the centre hair's tip. **Attraction** to guide curves follows clumping
 //! ([`super::guides`]).
+//!
+//! **Width** runs linearly from Base to Tip Width, times the width profile when one is
+//! given ([`GrowOptions::width_profile`]).
 //!
 //! Everything is a function of (seed, triangle, index), and hairs are written to fixed
 //! places, so the result is the same for any number of threads.
@@ -70,6 +74,13 @@ pub struct GrowOptions<'a> {
     pub guides: Option<(&'a StrandSet, &'a Attractors)>,
     /// The description's image maps, decoded (every file [`super::image_map_paths`] lists).
     pub images: &'a [MapImage],
+    /// Which triangles grow fur, one flag per triangle of the mesh; all when `None`.
+    /// Density counts hairs over the triangles that grow.
+    pub grows_on: Option<&'a [bool]>,
+    /// A multiplier of the width along the hair: values at evenly spaced fractions from
+    /// root (first) to tip (last), at least two, interpolated linearly; applied on top of
+    /// Base and Tip Width.
+    pub width_profile: Option<&'a [f32]>,
 }
 
 /// Grown fur: strands and the shading parameters that go with them.
@@ -344,8 +355,9 @@ fn clumps(g: &Grower, total_weight: f64) -> Clumps {
     Clumps { points, roots: surface, candidates }
 }
 
-/// Placement weight and U tangent of every triangle.
-fn triangles(mesh: &TriangleMesh, placement: Placement) -> Vec<Triangle> {
+/// Placement weight and U tangent of every triangle; triangles `grows_on` leaves out weigh
+/// nothing, so they get no roots.
+fn triangles(mesh: &TriangleMesh, placement: Placement, grows_on: Option<&[bool]>) -> Vec<Triangle> {
     (0..mesh.indices.len() as u32)
         .into_par_iter()
         .map(|tri| {
@@ -362,9 +374,17 @@ fn triangles(mesh: &TriangleMesh, placement: Placement) -> Vec<Triangle> {
                 }
                 None => (mesh.area(tri) as f64, None),
             };
-            Triangle { weight: if weight.is_finite() { weight } else { 0.0 }, dpdu }
+            let grows = grows_on.is_none_or(|g| g[tri as usize]);
+            Triangle { weight: if weight.is_finite() && grows { weight } else { 0.0 }, dpdu }
         })
         .collect()
+}
+
+/// The width profile `w` (evenly spaced from root to tip) at fraction `f`, linearly.
+fn profile_at(w: &[f32], f: f32) -> f32 {
+    let x = f.clamp(0.0, 1.0) * (w.len() - 1) as f32;
+    let i = (x as usize).min(w.len() - 2);
+    w[i] + (w[i + 1] - w[i]) * (x - i as f32)
 }
 
 /// Per-strand values besides the points.
@@ -405,7 +425,23 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
         }
         None => None,
     };
-    let triangles = triangles(mesh, options.placement);
+    if let Some(g) = options.grows_on {
+        if g.len() != mesh.indices.len() {
+            return Err(FurError::Invalid(format!(
+                "the face mask has {} flags for {} triangles",
+                g.len(),
+                mesh.indices.len()
+            )));
+        }
+    }
+    if let Some(w) = options.width_profile {
+        if w.len() < 2 || !w.iter().all(|v| v.is_finite() && *v >= 0.0) {
+            return Err(FurError::Invalid(format!(
+                "the width profile needs at least two finite values >= 0, it has {w:?}"
+            )));
+        }
+    }
+    let triangles = triangles(mesh, options.placement, options.grows_on);
     let total_weight: f64 = triangles.iter().map(|t| t.weight).sum();
     if options.placement == Placement::Uv && total_weight <= 0.0 {
         return Err(FurError::Invalid("the mesh's UVs cover no area, so placement = \"uv\" cannot place roots".into()));
@@ -492,7 +528,8 @@ pub fn grow(mesh: &TriangleMesh, desc: &FurDescription, options: GrowOptions) ->
                 let (c0, c1) = (c(ColorAttr::BaseColor), c(ColorAttr::TipColor));
                 for (i, x) in hair.iter().enumerate() {
                     let f = i as f32 / segments as f32;
-                    points[i] = [x.x, x.y, x.z, w0 + (w1 - w0) * f];
+                    let profile = options.width_profile.map_or(1.0, |w| profile_at(w, f));
+                    points[i] = [x.x, x.y, x.z, (w0 + (w1 - w0) * f) * profile];
                     colors[i] = c0.lerp(c1, f).to_array();
                     opacity[i] = o0 + (o1 - o0) * f;
                 }

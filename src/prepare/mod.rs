@@ -161,6 +161,8 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
             seed: f.seed,
             guides: guides.as_ref().map(|(s, a)| (s, *a)),
             images: &images,
+            grows_on: f.grows_on.as_deref(),
+            width_profile: f.width_profile.as_deref(),
         };
         let grown = crate::fur::grow(mesh, &f.description, options).map_err(|e| what(e.to_string()))?;
         lods.push(f.lod);

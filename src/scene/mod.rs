@@ -148,6 +148,13 @@ pub struct FurEntry {
     pub guides: Option<(HairSource, crate::fur::Attractors)>,
     /// Level of detail (stochastic pruning), when wanted.
     pub lod: Option<LodParams>,
+    /// Which of the mesh's triangles grow fur (one flag each); all when `None`. Readers
+    /// set it for growth limited to some faces (an XGen patch's face list).
+    pub grows_on: Option<Vec<bool>>,
+    /// A width multiplier along the hair, root to tip ([`crate::fur::GrowOptions`]);
+    /// readers set it for a width profile Maya Fur has no attribute for (XGen's taper
+    /// and width ramp).
+    pub width_profile: Option<Vec<f32>>,
 }
 
 /// Everything a scene says, before any file is read. The default is an empty scene seen

@@ -256,6 +256,8 @@ pub fn fur_entries(fur: &[MayaFur]) -> Result<(Vec<FurEntry>, Vec<String>), (u32
                 seed: 0,
                 guides: None,
                 lod: None,
+                grows_on: None,
+                width_profile: None,
             });
         }
     }

@@ -219,8 +219,9 @@ struct Reader<'g> {
     world: HashMap<usize, DAffine3>,
     /// Whether a node or one of its parents is hidden, by node, filled lazily.
     hidden: HashMap<usize, bool>,
-    /// Mesh index in `out.contents.meshes` and the world-space mesh, by mesh node.
-    meshes: HashMap<usize, (usize, TriangleMesh)>,
+    /// Mesh index in `out.contents.meshes`, the world-space mesh and its triangles' Maya
+    /// faces, by mesh node.
+    meshes: HashMap<usize, (usize, TriangleMesh, Faces)>,
     /// The camera asked for by name (`--camera`), if any.
     wanted_camera: Option<String>,
     /// Follicles whose UV no face covers, placed at the nearest UV: how many, the first.
@@ -549,7 +550,7 @@ impl<'g> Reader<'g> {
             r.kind(m) == "mesh" && r.g.nodes[m].attrs.iter().any(|a| a.name.starts_with("vt"))
                 || PROCEDURAL_MESHES.contains(&r.kind(m))
         };
-        let mesh = match history.first() {
+        let (mesh, faces) = match history.first() {
             Some(&src) if !stores(self, n) => {
                 // Built by a primitive node, or deformed from a shape upstream.
                 let from = match PROCEDURAL_MESHES.contains(&self.kind(src)) {
@@ -557,8 +558,8 @@ impl<'g> Reader<'g> {
                     false => self.rest_shape(n, stores),
                 };
                 let built = match from {
-                    Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?,
-                    Some(f) => self.procedural(f)?,
+                    Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?.map(|(m, f)| (m, Faces::Of(f))),
+                    Some(f) => self.procedural(f)?.map(|(m, count)| (m, Faces::Count(count))),
                     None => None,
                 };
                 match built {
@@ -574,7 +575,7 @@ impl<'g> Reader<'g> {
                 }
             }
             _ => match stored_mesh(g, n)? {
-                Some(m) => m,
+                Some((m, f)) => (m, Faces::Of(f)),
                 None => return Ok(()),
             },
         };
@@ -584,7 +585,7 @@ impl<'g> Reader<'g> {
         let mut placed = mesh.clone();
         let transform = finite_affine(g, n, &world)?;
         placed.transform(&transform);
-        self.meshes.insert(n, (self.out.contents.meshes.len(), placed));
+        self.meshes.insert(n, (self.out.contents.meshes.len(), placed, faces));
         self.out.contents.meshes.push(MeshEntry {
             source: MeshSource::Inline(mesh),
             material: material.into(),
@@ -594,8 +595,8 @@ impl<'g> Reader<'g> {
     }
 
     /// A mesh built by a primitive node, from that node's attributes (Maya's defaults when
-    /// unset); `None` for other history.
-    fn procedural(&self, src: usize) -> Res<Option<TriangleMesh>> {
+    /// unset), and how many faces Maya gives it; `None` for other history.
+    fn procedural(&self, src: usize) -> Res<Option<(TriangleMesh, u32)>> {
         let g = self.g;
         let check = |v: f64, what: &str| -> Res<f32> {
             match v.is_finite() && v > 0.0 && v < 1e12 {
@@ -608,29 +609,36 @@ impl<'g> Reader<'g> {
         };
         Ok(match self.kind(src) {
             "polySphere" => {
-                let mut m = poly_sphere(
-                    check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
-                    divisions(&["sa", "subdivisionsAxis"], 20.0)?,
-                    divisions(&["sh", "subdivisionsHeight"], 20.0)?,
-                );
+                let (sa, sh) =
+                    (divisions(&["sa", "subdivisionsAxis"], 20.0)?, divisions(&["sh", "subdivisionsHeight"], 20.0)?);
+                let mut m = poly_sphere(check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?, sa, sh);
                 let axis = vec3(g, src, &["ax", "axis"], &[["axx", "axisX"], ["axy", "axisY"], ["axz", "axisZ"]], 0.0)?;
                 if let Some(axis) = axis.as_vec3().try_normalize().filter(|_| attr(g, src, &["ax", "axis"]).is_some()) {
                     m.transform(&Affine3A::from_quat(glam::Quat::from_rotation_arc(Vec3::Y, axis)));
                 }
-                Some(m)
+                // Quads between the rings and a triangle (three Ptex faces) per column at
+                // each pole.
+                Some((m, sa * (sh - 2) + 6 * sa))
             }
-            "polyTorus" => Some(TriangleMesh::torus(
-                check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
-                check(scalar(g, src, &["sr", "sectionRadius"], 0.5)?, "sectionRadius")?,
-                divisions(&["sa", "subdivisionsAxis"], 20.0)?,
-                divisions(&["sh", "subdivisionsHeight"], 20.0)?,
-            )),
+            "polyTorus" => {
+                let (sa, sh) =
+                    (divisions(&["sa", "subdivisionsAxis"], 20.0)?, divisions(&["sh", "subdivisionsHeight"], 20.0)?);
+                let m = TriangleMesh::torus(
+                    check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?,
+                    check(scalar(g, src, &["sr", "sectionRadius"], 0.5)?, "sectionRadius")?,
+                    sa,
+                    sh,
+                );
+                Some((m, sa * sh))
+            }
             "polyPlane" => {
                 let w = check(scalar(g, src, &["w", "width"], 1.0)?, "width")?;
                 let h = check(scalar(g, src, &["h", "height"], 1.0)?, "height")?;
                 let mut m = TriangleMesh::plane(1.0);
                 m.transform(&Affine3A::from_scale(Vec3::new(w, 1.0, h)));
-                Some(m)
+                // Drawn as one quad; Maya divides it into a grid of faces (10 × 10 unless set).
+                let grid = |names: &[&str]| -> Res<u32> { Ok(scalar(g, src, names, 10.0)?.clamp(1.0, 1000.0) as u32) };
+                Some((m, grid(&["sw", "subdivisionsWidth"])? * grid(&["sh", "subdivisionsHeight"])?))
             }
             _ => None,
         })
@@ -676,7 +684,7 @@ impl<'g> Reader<'g> {
         if stored {
             return Ok(());
         }
-        let Some((_, mesh)) = self.meshes.get(&mesh_node) else { return Ok(()) };
+        let Some((_, mesh, _)) = self.meshes.get(&mesh_node) else { return Ok(()) };
         let uv = [scalar(g, f, &["pu", "parameterU"], 0.0)? as f32, scalar(g, f, &["pv", "parameterV"], 0.0)? as f32];
         let node = &g.nodes[f];
         let found = follicles_at_uvs(mesh, &[uv]).map_err(|e| (node.line, format!("follicle {}: {e}", node.name)))?;
@@ -1158,7 +1166,7 @@ impl<'g> Reader<'g> {
         let g = self.g;
         let mut out = Vec::new();
         let mut add = |mesh: usize| {
-            if let Some(&(i, _)) = self.meshes.get(&mesh) {
+            if let Some(&(i, ..)) = self.meshes.get(&mesh) {
                 if !out.contains(&i) {
                     out.push(i);
                 }
@@ -1635,8 +1643,9 @@ fn tangent_u(mesh: &TriangleMesh, t: u32) -> Option<Vec3> {
     (det != 0.0).then(|| (e1 * dv2 - e2 * dv1) / det)
 }
 
-/// The mesh a `mesh` node stores (`None` when it stores no faces).
-fn stored_mesh(g: &Graph, n: usize) -> Res<Option<TriangleMesh>> {
+/// The mesh a `mesh` node stores and the Ptex faces of each of its triangles' face
+/// ([`Faces::Of`]; `None` when it stores no faces).
+fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>> {
     let node = &g.nodes[n];
     let vt = dense(g, n, "vertex", elements(g, n, &["vt", "vrts"], 3)?)?;
     let tweaks = elements(g, n, &["pt", "pnts"], 3)?;
@@ -1666,6 +1675,7 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<TriangleMesh>> {
     let mut uv_out: Vec<[f32; 2]> = Vec::new();
     let mut original: Vec<u32> = Vec::new();
     let mut corners: HashMap<(u32, i64), u32> = HashMap::new();
+    let (mut face_of, mut ptex) = (Vec::new(), 0u32);
     for (_, line, faces) in chunks {
         for f in faces {
             let mut loop_: Vec<u32> = Vec::with_capacity(f.edges.len());
@@ -1699,9 +1709,12 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<TriangleMesh>> {
                 });
                 ids.push(id);
             }
+            let subfaces = if ids.len() == 4 { 1 } else { ids.len() as u32 };
             for k in 1..ids.len().saturating_sub(1) {
                 mesh.indices.push([ids[0], ids[k], ids[k + 1]]);
+                face_of.push([ptex, subfaces]);
             }
+            ptex += subfaces;
         }
     }
     if has_uvs {
@@ -1720,7 +1733,21 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<TriangleMesh>> {
         }
         mesh.normals = Some(original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect());
     }
-    Ok(Some(mesh))
+    Ok(Some((mesh, face_of)))
+}
+
+/// How a drawn mesh's triangles relate to the faces an XGen patch lists. XGen numbers
+/// faces as Ptex does (its maps are Ptex files): a quad is one face, any other polygon of
+/// `n` sides `n` faces, one per corner, in the mesh's face order (`test_0140`'s 20 × 20
+/// sphere, 360 quads and 40 triangles, lists 480).
+#[derive(Clone, Debug)]
+enum Faces {
+    /// For each triangle, its polygon's first Ptex face and how many it has (a mesh that
+    /// stores its faces).
+    Of(Vec<[u32; 2]>),
+    /// Only how many Ptex faces the mesh has (built by a primitive node, whose faces tress
+    /// does not number as Maya does).
+    Count(u32),
 }
 
 /// The geometry a curve node stores (its last `.cc` block), if any.

@@ -1009,13 +1009,35 @@ connectAttr "plane1.m" "plane1_description1Shape.t";
 "#;
 
 fn xgen_file(density: &str) -> String {
+    xgen_text(density, "", "", "")
+}
+
+/// A collection file for [`XGEN_SCENE`]: `spline` adds lines to the `SplinePrimitive`,
+/// `fx` sections after the Noise module, `patch` lines to the plane's `Patch` record.
+fn xgen_text(density: &str, spline: &str, fx: &str, patch: &str) -> String {
     format!(
         "FileVersion 18\n\nPalette\n\tname\t\t\tcollection1\n\tendAttrs\n\nDescription\n\tname\t\t\tdescription1\n\
          \tendAttrs\n\nSplinePrimitive\n\tlength\t\t\t$a=0.7500;#0.05,5.0\\n$a\n\twidth\t\t\t$a=0.0200;#0.005,0.5\\n$a\n\
-         \tendAttrs\n\nNoiseFXModule\n\tname\t\t\tNoise1\n\tendAttrs\n\nRandomGenerator\n\tdensity\t\t\t{density}\n\
+         {spline}\tendAttrs\n\nNoiseFXModule\n\tname\t\t\tNoise1\n\tendAttrs\n\n{fx}RandomGenerator\n\tdensity\t\t\t{density}\n\
          \tmask\t\t\tmap('${{DESC}}/density/') # painted\n\tendAttrs\n\nPatches\tdescription1\t0\nPatch\tSubd\n\tname\t\tplane1\n\
-         endObject\nendPatches\n"
+         {patch}endObject\nendPatches\n"
     )
+}
+
+/// Grows a fur entry as the renderer would, on its mesh placed in the world.
+fn grow_entry(s: &Imported, f: &crate::scene::FurEntry) -> crate::fur::GrownFur {
+    let MeshSource::Inline(m) = &s.contents.meshes[f.mesh].source else { panic!("inline") };
+    let mut mesh = m.clone();
+    mesh.transform(&s.contents.meshes[f.mesh].transform);
+    let options = crate::fur::GrowOptions {
+        placement: f.placement,
+        seed: f.seed,
+        guides: None,
+        images: &[],
+        grows_on: f.grows_on.as_deref(),
+        width_profile: f.width_profile.as_deref(),
+    };
+    crate::fur::grow(&mesh, &f.description, options).unwrap()
 }
 
 #[test]
@@ -1042,11 +1064,7 @@ fn xgen_collections_grow_their_density_and_length_on_the_bound_mesh() {
     let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).expect("one warning for it");
     assert!(w.contains("NoiseFXModule") && w.contains("RandomGenerator.mask") && w.contains("guides"), "{w}");
 
-    let MeshSource::Inline(m) = &s.contents.meshes[f.mesh].source else { panic!("inline") };
-    let mut mesh = m.clone();
-    mesh.transform(&s.contents.meshes[f.mesh].transform);
-    let options = crate::fur::GrowOptions { placement: f.placement, seed: 0, guides: None, images: &[] };
-    let grown = crate::fur::grow(&mesh, &f.description, options).unwrap();
+    let grown = grow_entry(&s, f);
     let n = grown.strands.strand_count();
     assert!((760..=840).contains(&n), "{n} strands for 800 expected");
     for k in 0..n {
@@ -1244,4 +1262,59 @@ fn xgen_grooms_follow_their_animated_mesh() {
     assert!(close(root(Some(5)), Vec3::new(4.0, 1.0, 0.0)));
     assert!(close(root(Some(1)), Vec3::new(0.0, 1.0, 0.0)), "{}", root(Some(1)));
     assert!(close(root(Some(3)), Vec3::new(2.0, 1.0, 0.0)));
+}
+
+#[test]
+fn xgen_face_lists_taper_and_width_ramp_shape_the_strands() {
+    let dir = tempfile::tempdir().unwrap();
+    let ma = dir.path().join("scene.ma");
+    std::fs::write(&ma, XGEN_SCENE).unwrap();
+    let write = |spline: &str, patch: &str| {
+        let text = xgen_text("100.0", spline, "", patch);
+        std::fs::write(dir.path().join("scene__collection1.xgen"), text).unwrap();
+    };
+    // Only face 1 (x from 0 to 2) is listed: 100 per unit area on its 4.
+    write("", "\tfaceIds\t\t1\t 1\n");
+    let s = read_maya(&ma, None, None).unwrap();
+    let f = &s.contents.fur[0];
+    assert_eq!(f.description.density, 400, "{:?}", s.warnings);
+    let grown = grow_entry(&s, f);
+    let n = grown.strands.strand_count();
+    assert!((370..=430).contains(&n), "{n} strands for 400 expected");
+    for k in 0..n {
+        let root = grown.strands.points[grown.strands.offsets[k] as usize];
+        assert!(root[0] >= -1e-5 && root[0] <= 2.0 + 1e-5, "a root off the listed face: {root:?}");
+    }
+    // Every face listed: the whole mesh, as without a list.
+    write("", "\tfaceIds\t\t2\t 0 1\n");
+    let s = read_maya(&ma, None, None).unwrap();
+    assert_eq!((s.contents.fur[0].description.density, s.contents.fur[0].grows_on.as_ref()), (800, None));
+    // A face list that does not hold what it promises: the file and line named, no panic.
+    write("", "\tfaceIds\t\t3\t 0 1\n");
+    let s = read_maya(&ma, None, None).unwrap();
+    assert!(s.contents.fur.is_empty());
+    assert!(
+        s.warnings.iter().any(|w| w.contains("scene__collection1.xgen: line 28") && w.contains("faceIds")),
+        "{:?}",
+        s.warnings
+    );
+
+    // Taper 0.5 from half way, and a width ramp falling linearly from 1 to 0.5: the width
+    // is 0.02 to the middle times the ramp (0.75 there), then the taper takes off up to
+    // half at the tip, 0.5 × 0.5 of the root's.
+    write(
+        "\ttaper\t\t\t$a=0.5000;#-1.0,1.0\\n$a\n\ttaperStart\t\t$a=0.5000;#0.0,1.0\\n$a\n\
+           \twidthRamp\t\trampUI(0.0,1.0,1:1.0,0.5,1)\n",
+        "",
+    );
+    let s = read_maya(&ma, None, None).unwrap();
+    let grown = grow_entry(&s, &s.contents.fur[0]);
+    let (a, b) = (grown.strands.offsets[0] as usize, grown.strands.offsets[1] as usize);
+    let radius: Vec<f32> = grown.strands.points[a..b].iter().map(|p| p[3]).collect();
+    let mid = radius.len() / 2;
+    assert!((radius[0] - 0.01).abs() < 1e-6, "{radius:?}");
+    assert!((radius[mid] - 0.0075).abs() < 1e-6, "{radius:?}");
+    assert!((radius[radius.len() - 1] - 0.0025).abs() < 1e-6, "{radius:?}");
+    let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).unwrap();
+    assert!(w.contains("taper 0.5 from 0.5, width ramp") && !w.contains("face list"), "{w}");
 }

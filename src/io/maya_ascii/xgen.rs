@@ -37,6 +37,9 @@ const MAX_CVS: u64 = 1 << 16;
 /// densities are per unit area, so a large mesh in small units could otherwise ask for
 /// more than memory holds.
 const MAX_COLLECTION_STRANDS: u32 = 1 << 21;
+/// Segments of an XGen collection strand whose width varies along it or that bends: XGen
+/// draws its strands as smooth curves, which 16 straight segments follow closely.
+const SHAPED_SEGMENTS: u32 = 16;
 
 /// The splines of one `xgmSplineData` value: each spline's control vertices and the width
 /// factor at each.
@@ -287,34 +290,39 @@ impl Reader<'_> {
                 ));
                 continue;
             }
+            let mut notes = vec!["straight along the normal".to_string(), "guides not used".to_string()];
             // The description's patches (`xgmSubdPatch` under the description's transform,
-            // through a transform of its own) and the meshes bound to them.
-            let mut meshes = Vec::new();
+            // through a transform of its own), the meshes bound to them and the faces
+            // that grow (the file's `Patch` record of the mesh's transform).
+            let mut meshes: Vec<(usize, f64, Option<Vec<bool>>)> = Vec::new();
             for patch in self.of_kind("xgmSubdPatch") {
                 if g.parent(patch).and_then(|pt| g.parent(pt)) != Some(t) {
                     continue;
                 }
                 for m in self.inputs(patch, &["geo", "geometry"]) {
-                    if let Some((i, mesh)) = self.meshes.get(&m) {
-                        if !meshes.iter().any(|&(j, _)| j == *i) {
-                            meshes.push((
-                                *i,
-                                (0..mesh.indices.len() as u32).map(|k| f64::from(mesh.area(k))).sum::<f64>(),
-                            ));
-                        }
+                    let Some((i, mesh, faces)) = self.meshes.get(&m) else { continue };
+                    if meshes.iter().any(|&(j, ..)| j == *i) {
+                        continue;
                     }
+                    let mesh_name = g.parent(m).map_or(g.nodes[m].name.as_str(), |p| g.nodes[p].name.as_str());
+                    let listed = cd
+                        .patches
+                        .iter()
+                        .find(|p| p.name == mesh_name || p.name == g.nodes[m].name)
+                        .and_then(|p| p.faces.as_deref());
+                    let grows_on = listed.and_then(|ids| grown_faces(ids, faces, mesh_name, &mut notes));
+                    let area = (0..mesh.indices.len())
+                        .filter(|&k| grows_on.as_ref().is_none_or(|g| g[k]))
+                        .map(|k| f64::from(mesh.area(k as u32)))
+                        .sum::<f64>();
+                    meshes.push((*i, area, grows_on));
                 }
             }
             if meshes.is_empty() {
                 self.out.warnings.push(format!("XGen description {name}: bound to no drawn mesh: no strands"));
                 continue;
             }
-            let mut notes = vec![
-                "straight along the normal".to_string(),
-                "guides not used".to_string(),
-                "taper and width ramp not applied (root and tip equally wide)".to_string(),
-                "the whole mesh grown (the patch's face list not read)".to_string(),
-            ];
+            let width_profile = cd.width_profile();
             if !cd.fx_modules.is_empty() {
                 notes.push(format!("FX modules not applied ({})", cd.fx_modules.join(", ")));
             }
@@ -327,13 +335,16 @@ impl Reader<'_> {
                     cd.fallbacks.join(", ")
                 ));
             }
-            for (mesh, area) in meshes {
+            for (mesh, area, grows_on) in meshes {
                 let wanted = cd.density * area;
                 let count = wanted.round().min(MAX_COLLECTION_STRANDS as f64) as u32;
                 if wanted > MAX_COLLECTION_STRANDS as f64 {
                     notes.push(format!("{wanted:.0} strands cut to {MAX_COLLECTION_STRANDS}"));
                 }
-                let mut desc = FurDescription { density: count, ..FurDescription::default() };
+                // One straight segment serves a plain strand; a width profile needs points
+                // along the strand.
+                let segments = if width_profile.is_some() { SHAPED_SEGMENTS } else { 1 };
+                let mut desc = FurDescription { density: count, segments, ..FurDescription::default() };
                 desc[Scalar::Length].value = cd.length as f32;
                 desc[Scalar::BaseWidth].value = cd.width as f32;
                 desc[Scalar::TipWidth].value = cd.width as f32;
@@ -347,17 +358,61 @@ impl Reader<'_> {
                     seed: 0,
                     guides: None,
                     lod: None,
+                    grows_on,
+                    width_profile: width_profile.clone(),
                 });
             }
             self.out.warnings.push(format!(
                 "XGen description {name}: approximated as Maya Fur from `{}` (density {} per unit area, length {}, \
-                 width {}): {}",
+                 width {}, taper {} from {}{}): {}",
                 path.display(),
                 cd.density,
                 cd.length,
                 cd.width,
+                cd.taper,
+                cd.taper_start,
+                if cd.width_ramp.is_some() { ", width ramp" } else { "" },
                 notes.join("; ")
             ));
+        }
+    }
+}
+
+/// Which triangles of a mesh grow strands, from a patch's face list `ids` (Ptex face ids,
+/// [`super::Faces`]): `None` when every face is listed. A triangle grows when any Ptex face
+/// of its polygon is listed. A mesh built by a primitive node, whose faces tress does not
+/// number as Maya does, grows whole when the list leaves faces out, noted; ids past the
+/// mesh's faces are noted too.
+fn grown_faces(ids: &[u32], faces: &super::Faces, mesh: &str, notes: &mut Vec<String>) -> Option<Vec<bool>> {
+    let count = match faces {
+        super::Faces::Of(of) => of.iter().map(|f| f[0] + f[1]).max().unwrap_or(0),
+        super::Faces::Count(c) => *c,
+    };
+    let mut listed = vec![false; count as usize];
+    let mut beyond = 0;
+    for &id in ids {
+        match listed.get_mut(id as usize) {
+            Some(l) => *l = true,
+            None => beyond += 1,
+        }
+    }
+    if beyond > 0 {
+        notes.push(format!("{beyond} face id(s) of {mesh}'s face list past its {count} faces ignored"));
+    }
+    if listed.iter().all(|&l| l) {
+        return None;
+    }
+    match faces {
+        super::Faces::Of(of) => {
+            Some(of.iter().map(|f| listed[f[0] as usize..(f[0] + f[1]) as usize].iter().any(|&l| l)).collect())
+        }
+        super::Faces::Count(_) => {
+            let n = listed.iter().filter(|&&l| l).count();
+            notes.push(format!(
+                "{mesh} grown whole: its face list names {n} of its {count} faces, and it is built by history, \
+                 whose faces tress does not number as Maya does"
+            ));
+            None
         }
     }
 }

@@ -41,6 +41,17 @@ pub struct CollectionDescription {
     pub length: f64,
     /// Strand diameter (`SplinePrimitive` `width`).
     pub width: f64,
+    /// `SplinePrimitive` `taper`: how much narrower the tip is than the root (negative:
+    /// wider), 0 when unread.
+    pub taper: f64,
+    /// `SplinePrimitive` `taperStart`: the fraction of the length where the taper begins.
+    pub taper_start: f64,
+    /// `SplinePrimitive` `widthRamp`, a width multiplier along the strand: its points
+    /// (position, value, interpolation of the span that follows), `None` when unread.
+    pub width_ramp: Option<Vec<(f64, f64, u32)>>,
+    /// The patches (`Patch` records of the description's `Patches`): the geometry's name
+    /// and its face list (`faceIds`), if it has one.
+    pub patches: Vec<Patch>,
     /// The primitive section of the description (`SplinePrimitive`, `CardPrimitive`,
     /// `ArchivePrimitive`, ...), if any.
     pub primitive: Option<String>,
@@ -52,11 +63,95 @@ pub struct CollectionDescription {
     pub fallbacks: Vec<String>,
 }
 
+/// One `Patch` record of a description: the geometry XGen grows it on and which faces.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Patch {
+    /// The geometry's name (the mesh's transform).
+    pub name: String,
+    /// The Maya face ids that grow strands (`faceIds COUNT ID...`); `None`: not given.
+    pub faces: Option<Vec<u32>>,
+}
+
+/// Points of width profiles ([`CollectionDescription::width_profile`]), enough for the
+/// ramps' smooth spans.
+const PROFILE_POINTS: usize = 33;
+
+impl CollectionDescription {
+    /// The width along the strand as a multiplier of `width`, at [`PROFILE_POINTS`] evenly
+    /// spaced fractions root to tip, or `None` when it is 1 throughout. Autodesk's XGen
+    /// Spline attributes: Taper "controls the width of the tip relative to the root;
+    /// positive values make the tip narrower than the root, negative wider", Taper Start
+    /// "where the tapering begins, 0 (root) to 1 (tip)", and the Width Ramp multiplies the
+    /// width along the strand. tress reads the taper as a linear change from `taperStart`
+    /// to the tip, where the width is `1 - taper` times the root's:
+    /// `ramp(s) × (1 − taper × max(0, (s − taperStart) / (1 − taperStart)))`, clamped at 0.
+    pub fn width_profile(&self) -> Option<Vec<f32>> {
+        let flat = self.width_ramp.as_ref().is_none_or(|r| r.iter().all(|p| p.1 == 1.0));
+        if self.taper == 0.0 && flat {
+            return None;
+        }
+        let start = self.taper_start.clamp(0.0, 1.0);
+        Some(
+            (0..PROFILE_POINTS)
+                .map(|k| {
+                    let s = k as f64 / (PROFILE_POINTS - 1) as f64;
+                    let along = if start < 1.0 { ((s - start) / (1.0 - start)).max(0.0) } else { 0.0 };
+                    let ramp = self.width_ramp.as_deref().map_or(1.0, |r| ramp_at(r, s));
+                    (ramp * (1.0 - self.taper * along)).max(0.0) as f32
+                })
+                .collect(),
+        )
+    }
+}
+
+/// SeExpr's curve at `s`: before the first point and after the last the end values; each
+/// span interpolated as its first point says (0 none: the first point's value, 1 linear,
+/// 2 smooth: smoothstep; the spline kinds, 3 and 4, linearly, which the reader notes).
+fn ramp_at(points: &[(f64, f64, u32)], s: f64) -> f64 {
+    let Some(first) = points.first() else { return 1.0 };
+    if s <= first.0 {
+        return first.1;
+    }
+    for w in points.windows(2) {
+        let ((p0, v0, kind), (p1, v1, _)) = (w[0], w[1]);
+        if s < p1 {
+            let t = if p1 > p0 { (s - p0) / (p1 - p0) } else { 1.0 };
+            let t = match kind {
+                0 => 0.0,
+                2 => t * t * (3.0 - 2.0 * t),
+                _ => t,
+            };
+            return v0 + (v1 - v0) * t;
+        }
+    }
+    points[points.len() - 1].1
+}
+
+/// A SeExpr ramp as XGen writes it, `rampUI(POS,VALUE,INTERP:POS,VALUE,INTERP...)`, its
+/// points sorted by position; `None` when the value is not one.
+fn ramp(value: &str) -> Option<Vec<(f64, f64, u32)>> {
+    let inner = value.trim().strip_prefix("rampUI(")?.strip_suffix(')')?;
+    let mut points = Vec::new();
+    for p in inner.split(':') {
+        let f: Vec<&str> = p.split(',').map(str::trim).collect();
+        let [pos, v, kind] = f.as_slice() else { return None };
+        let (pos, v, kind) = (pos.parse::<f64>().ok()?, v.parse::<f64>().ok()?, kind.parse::<u32>().ok()?);
+        if !(pos.is_finite() && v.is_finite()) {
+            return None;
+        }
+        points.push((pos, v, kind));
+    }
+    points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    (!points.is_empty()).then_some(points)
+}
+
 /// Reads the text of a collection file; `path` names it in messages. Errors (a value out of
 /// range, an attribute outside any section) name the file and the line.
 pub fn parse_collection(text: &str, path: &Path) -> Result<Vec<CollectionDescription>, String> {
     let mut out: Vec<CollectionDescription> = Vec::new();
     let mut section: Option<String> = None;
+    // The description a `Patches` record names, which its `Patch` records belong to.
+    let mut owner: Option<usize> = None;
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
         let at = |msg: String| format!("{}: line {line}: {msg}", path.display());
@@ -66,13 +161,25 @@ pub fn parse_collection(text: &str, path: &Path) -> Result<Vec<CollectionDescrip
         }
         if !raw.starts_with('\t') && !raw.starts_with(' ') {
             // A section name, or a one-line record (`FileVersion 18`, `Patches ...`).
-            let name = trimmed.split_whitespace().next().unwrap_or_default().to_string();
-            if name == "Description" {
+            let mut words = trimmed.split_whitespace();
+            let name = words.next().unwrap_or_default().to_string();
+            if name == "Patches" {
+                let of = words.next().unwrap_or_default();
+                owner = out.iter().position(|d| d.name == of);
+            } else if name == "Patch" {
+                if let Some(d) = owner.and_then(|k| out.get_mut(k)) {
+                    d.patches.push(Patch { name: String::new(), faces: None });
+                }
+            } else if name == "Description" {
                 out.push(CollectionDescription {
                     name: String::new(),
                     density: 0.0,
                     length: NEW_LENGTH,
                     width: NEW_WIDTH,
+                    taper: 0.0,
+                    taper_start: 0.0,
+                    width_ramp: None,
+                    patches: Vec::new(),
                     primitive: None,
                     fx_modules: Vec::new(),
                     maps: Vec::new(),
@@ -96,6 +203,15 @@ pub fn parse_collection(text: &str, path: &Path) -> Result<Vec<CollectionDescrip
             section = None;
             continue;
         }
+        if section.as_deref() == Some("Patch") {
+            let Some(patch) = owner.and_then(|k| out.get_mut(k)).and_then(|d| d.patches.last_mut()) else { continue };
+            match key {
+                "name" => patch.name = value.to_string(),
+                "faceIds" => patch.faces = Some(face_ids(value).map_err(at)?),
+                _ => {}
+            }
+            continue;
+        }
         let (Some(s), Some(d)) = (section.as_deref(), out.last_mut()) else { continue };
         // SeExpr comments start at `#` (XGen writes a slider's range there).
         // The renderers' sections (previews' colours) make no strands.
@@ -117,6 +233,20 @@ pub fn parse_collection(text: &str, path: &Path) -> Result<Vec<CollectionDescrip
                 Some(v) => return Err(at(format!("`{key}` {v} is negative or not finite"))),
                 None => d.fallbacks.push(format!("{key} (line {line})")),
             },
+            ("SplinePrimitive", "taper" | "taperStart") => match number(value) {
+                Some(v) if v.is_finite() => *if key == "taper" { &mut d.taper } else { &mut d.taper_start } = v,
+                Some(v) => return Err(at(format!("`{key}` {v} is not finite"))),
+                None => d.fallbacks.push(format!("{key} (line {line}, 0 used)")),
+            },
+            ("SplinePrimitive", "widthRamp") => match ramp(value) {
+                Some(r) => {
+                    if r.iter().any(|p| p.2 > 2) {
+                        d.fallbacks.push(format!("widthRamp's spline spans (line {line}, linear used)"));
+                    }
+                    d.width_ramp = Some(r);
+                }
+                None => d.fallbacks.push(format!("widthRamp (line {line}, 1 used)")),
+            },
             _ => {}
         }
     }
@@ -126,6 +256,22 @@ pub fn parse_collection(text: &str, path: &Path) -> Result<Vec<CollectionDescrip
         }
     }
     Ok(out)
+}
+
+/// A `faceIds` value: the count, then that many face ids.
+fn face_ids(value: &str) -> Result<Vec<u32>, String> {
+    let mut words = value.split_whitespace();
+    let count: usize = match words.next().map(str::parse) {
+        Some(Ok(n)) => n,
+        _ => return Err(format!("`faceIds` `{value}` does not start with a count")),
+    };
+    let ids: Vec<u32> = words
+        .map(|w| w.parse().map_err(|_| format!("`faceIds` holds `{w}`, not a face id")))
+        .collect::<Result<_, _>>()?;
+    if ids.len() != count {
+        return Err(format!("`faceIds` promises {count} faces and lists {}", ids.len()));
+    }
+    Ok(ids)
 }
 
 /// A plain number, or the slider form XGen's UI writes, `$a=NUMBER;#MIN,MAX\n$a` (the

@@ -241,6 +241,8 @@ pub(super) fn fur(f: &FurToml, meshes: usize, base: &Path) -> Result<FurEntry, S
         seed: f.seed,
         guides,
         lod: f.lod.as_ref().map(LodToml::params).transpose()?,
+        grows_on: None,
+        width_profile: None,
     })
 }
 
