@@ -112,7 +112,30 @@ impl Default for StandardHair {
     }
 }
 
-/// One parameter of a [`StandardHair`], to be set from a file.
+/// An Arnold shader tress maps to one of its materials: its parameters by Arnold's names,
+/// set by the Maya and USD readers alike, and the material they give.
+pub trait ArnoldShader: Default {
+    /// The names of the parameters read, as Arnold spells them.
+    const NAMES: &'static [&'static str];
+    /// The parameter named `name` (one of [`ArnoldShader::NAMES`]).
+    fn param(&mut self, name: &str) -> Option<Param<'_>>;
+    /// The material standing in for the shader, and the warning naming what it leaves out
+    /// (`shader` names the shader in it; `connected` lists the parameters driven by shading
+    /// networks tress does not evaluate, whose own values were used).
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>);
+}
+
+impl ArnoldShader for StandardHair {
+    const NAMES: &'static [&'static str] = &StandardHair::NAMES;
+    fn param(&mut self, name: &str) -> Option<Param<'_>> {
+        StandardHair::param(self, name)
+    }
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
+        StandardHair::material(self, shader, connected)
+    }
+}
+
+/// One parameter of an Arnold shader ([`ArnoldShader`]), to be set from a file.
 pub enum Param<'a> {
     /// A number.
     Float(&'a mut f32),
@@ -270,7 +293,8 @@ impl StandardHair {
     }
 }
 
-fn fmt_color(c: Color) -> String {
+/// A colour as `(r, g, b)` in warnings.
+pub(crate) fn fmt_color(c: Color) -> String {
     format!("({}, {}, {})", c.x, c.y, c.z)
 }
 

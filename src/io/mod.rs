@@ -6,6 +6,7 @@
 //! imports another.
 
 pub mod arnold_hair;
+pub mod arnold_surface;
 pub mod cem_hair;
 pub mod gzip;
 pub mod imported;

@@ -341,7 +341,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                 if token(values::value(&prim, "subdivisionScheme", time)?, "catmullClark") != "none" {
                     notes.note("subdivision surfaces: drawn as their control cage".into(), &prim);
                 }
-                push_mesh(out, mesh, shapes::surface_color(&prim, time, notes).map_err(what)?, transform);
+                push_mesh(out, mesh, surface_material(&prim, time, notes).map_err(what)?, transform);
             }
             k if shapes::GPRIMS.contains(&k) => {
                 let mesh = match shapes::read_gprim(&prim, k, time) {
@@ -351,7 +351,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                         continue;
                     }
                 };
-                push_mesh(out, mesh, shapes::surface_color(&prim, time, notes).map_err(what)?, transform);
+                push_mesh(out, mesh, surface_material(&prim, time, notes).map_err(what)?, transform);
             }
             light => {
                 out.contents.lights.push(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?)
@@ -411,8 +411,17 @@ fn render_resolution(prim: &Prim, time: TimeCode) -> Res<Option<[u32; 2]>> {
     })
 }
 
-fn push_mesh(out: &mut Imported, mesh: crate::geometry::TriangleMesh, color: Option<Vec3>, transform: Affine3A) {
-    let material = Material::Diffuse { color: color.unwrap_or(Vec3::splat(0.5)) };
+/// A surface prim's material: Arnold's `standard_surface` bound to it, else Lambert of its
+/// surface colour ([`shapes::surface_color`], 0.5 grey without one).
+fn surface_material(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Material> {
+    if let Some(m) = shapes::bound_standard_surface(prim, time, notes)? {
+        return Ok(m);
+    }
+    let color = shapes::surface_color(prim, time, notes)?;
+    Ok(Material::Diffuse { color: color.unwrap_or(Vec3::splat(0.5)) })
+}
+
+fn push_mesh(out: &mut Imported, mesh: crate::geometry::TriangleMesh, material: Material, transform: Affine3A) {
     out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform });
 }
 

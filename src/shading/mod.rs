@@ -104,8 +104,14 @@ impl Textured {
             },
         };
         let r = roughness.clamp(0.02, 1.0);
-        surface::phong(kd, self.specular, (2.0 / (r * r) - 2.0).max(0.0), sp.normal, wo, wi)
+        surface::phong(kd, self.specular, phong_exponent(r), sp.normal, wo, wi)
     }
+}
+
+/// The Phong exponent equivalent to a Beckmann roughness `r`: `2 / r² − 2` (Walter et al.
+/// 2007, "Microfacet Models for Refraction", section 5.2), 0 for `r` of 1 or more.
+pub fn phong_exponent(r: f32) -> f32 {
+    (2.0 / (r * r) - 2.0).max(0.0)
 }
 
 /// Texture coordinates at a hit and the width of the ray's footprint there in UV units.

@@ -71,7 +71,8 @@ pub mod xgen;
 pub mod xgen_collection;
 
 use self::parse::{Face, Graph, Value};
-use super::arnold_hair::{Param, StandardHair};
+use super::arnold_hair::{ArnoldShader, Param, StandardHair};
+use super::arnold_surface::StandardSurface;
 use super::imported::{relative_width, Imported, RELATIVE_WIDTH};
 use crate::error::LoadError;
 use crate::geometry::curve::Nurbs;
@@ -152,7 +153,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 56] = [
+const KNOWN: [&str; 57] = [
     "transform",
     "animCurveTL",
     "animCurveTA",
@@ -172,6 +173,7 @@ const KNOWN: [&str; 56] = [
     "aiAreaLight",
     "aiCurveCollector",
     "aiStandardHair",
+    "aiStandardSurface",
     "FurDescription",
     "FurFeedback",
     "FurGlobals",
@@ -243,6 +245,8 @@ struct Reader<'g> {
     /// The graph with its animation at the file's saved time, when the frame read is
     /// another and XGen grooms (stored as they stood then) must follow their meshes.
     saved_pose: Option<&'g Graph>,
+    /// The material of each `aiStandardSurface` met on meshes (its warning said once).
+    surface_shaders: HashMap<usize, Material>,
 }
 
 impl<'g> Reader<'g> {
@@ -262,6 +266,7 @@ impl<'g> Reader<'g> {
             unread_shaders: BTreeMap::new(),
             dir: None,
             saved_pose: None,
+            surface_shaders: HashMap::new(),
         }
     }
 
@@ -581,7 +586,18 @@ impl<'g> Reader<'g> {
         };
         mesh.validate().map_err(|e| (node.line, format!("mesh {}: {e}", node.name)))?;
         let world = self.world(n)?;
-        let material = Material::Diffuse { color: self.mesh_color(n)? };
+        let material = match self.mesh_shader(n) {
+            Some(shader) if self.kind(shader) == "aiStandardSurface" => match self.surface_shaders.get(&shader) {
+                Some(m) => m.clone(),
+                None => {
+                    let (m, warning) = self.arnold_params::<StandardSurface>(shader)?;
+                    self.out.warnings.extend(warning);
+                    self.surface_shaders.insert(shader, m.clone());
+                    m
+                }
+            },
+            _ => Material::Diffuse { color: self.mesh_color(n)? },
+        };
         let mut placed = mesh.clone();
         let transform = finite_affine(g, n, &world)?;
         placed.transform(&transform);
@@ -644,18 +660,21 @@ impl<'g> Reader<'g> {
         })
     }
 
+    /// The surface shader of the mesh's shading group, if it has one.
+    fn mesh_shader(&self, n: usize) -> Option<usize> {
+        let sg = self.g.outputs_of(n).find_map(|c| {
+            (matches!(plug_base(&c.src_attr), "iog" | "instObjGroups") && self.kind(c.dst) == "shadingEngine")
+                .then_some(c.dst)
+        })?;
+        self.inputs(sg, &["ss", "surfaceShader"]).first().copied()
+    }
+
     /// `color × diffuse` of the Lambert-family shader of the mesh's shading group; Maya's
     /// default `lambert1` (0.5 grey, diffuse 0.8) when there is none.
     fn mesh_color(&self, n: usize) -> Res<Vec3> {
         let g = self.g;
         let default = Vec3::splat(0.5 * 0.8);
-        let Some(sg) = g.outputs_of(n).find_map(|c| {
-            (matches!(plug_base(&c.src_attr), "iog" | "instObjGroups") && self.kind(c.dst) == "shadingEngine")
-                .then_some(c.dst)
-        }) else {
-            return Ok(default);
-        };
-        let Some(&shader) = self.inputs(sg, &["ss", "surfaceShader"]).first() else { return Ok(default) };
+        let Some(shader) = self.mesh_shader(n) else { return Ok(default) };
         let color = |names: &[&str], comps: &[[&str; 2]; 3], d: f64| vec3(g, shader, names, comps, d);
         Ok(match self.kind(shader) {
             "lambert" | "blinn" | "phong" | "phongE" => {
@@ -1111,7 +1130,7 @@ impl<'g> Reader<'g> {
         }
         let material = match self.kind(s) {
             "aiStandardHair" => {
-                let (m, warning) = self.standard_hair(s)?;
+                let (m, warning) = self.arnold_params::<StandardHair>(s)?;
                 self.out.warnings.extend(warning);
                 Some(m)
             }
@@ -1124,14 +1143,14 @@ impl<'g> Reader<'g> {
         Ok(material)
     }
 
-    /// An `aiStandardHair` node's parameters (MtoA names its attributes by Arnold's
+    /// An Arnold shader node's parameters (`aiStandardHair`, `aiStandardSurface`: MtoA names its attributes by Arnold's
     /// parameter names, `base_color`, with camel-case long names, `baseColor`; colours also
     /// by component, `base_colorR`), Arnold's defaults for those the file omits.
-    fn standard_hair(&self, s: usize) -> Res<(Material, Option<String>)> {
+    fn arnold_params<S: ArnoldShader>(&self, s: usize) -> Res<(Material, Option<String>)> {
         let g = self.g;
-        let mut shader = StandardHair::default();
+        let mut shader = S::default();
         let mut connected = Vec::new();
-        for name in StandardHair::NAMES {
+        for &name in S::NAMES {
             let long = camel_case(name);
             let names = [name, long.as_str()];
             let parts = ["R", "G", "B"].map(|c| [format!("{name}{c}"), format!("{long}{c}")]);

@@ -1318,3 +1318,23 @@ fn xgen_face_lists_taper_and_width_ramp_shape_the_strands() {
     let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).unwrap();
     assert!(w.contains("taper 0.5 from 0.5, width ramp") && !w.contains("face list"), "{w}");
 }
+
+#[test]
+fn meshes_take_their_ai_standard_surface() {
+    let text = "createNode transform -n p;\ncreateNode mesh -n ps -p p;\ncreateNode polySphere -n sph;\n\
+                connectAttr \"sph.out\" \"ps.i\";\ncreateNode aiStandardSurface -n gold;\n\
+                \tsetAttr \".metalness\" 1;\n\tsetAttr \".base\" 1;\n\tsetAttr \".base_color\" -type \"float3\" 1 0.8 0.3 ;\n\
+                \tsetAttr \".coat\" 1;\ncreateNode shadingEngine -n goldSG;\nconnectAttr \"gold.oc\" \"goldSG.ss\";\n\
+                connectAttr \"ps.iog\" \"goldSG.dsm\" -na;\n";
+    let s = read(text).unwrap();
+    let want = StandardSurface {
+        metalness: 1.0,
+        base: 1.0,
+        base_color: Vec3::new(1.0, 0.8, 0.3),
+        coat: 1.0,
+        ..StandardSurface::default()
+    }
+    .material("gold", &[]);
+    assert_eq!(s.contents.meshes[0].material, want.0.into());
+    assert!(s.warnings.iter().any(|w| w.contains("gold: Arnold standard_surface") && w.contains("coat 1")));
+}

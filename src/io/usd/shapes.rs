@@ -7,7 +7,8 @@ use super::skel::Skinning;
 use super::values::{boolean, interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res};
 use super::Notes;
 use crate::geometry::TriangleMesh;
-use crate::io::arnold_hair::{Param, StandardHair};
+use crate::io::arnold_hair::{ArnoldShader, Param, StandardHair};
+use crate::io::arnold_surface::StandardSurface;
 use crate::shading::Material;
 use glam::{Mat3, Vec3};
 use openusd::sdf;
@@ -219,15 +220,26 @@ pub fn surface_color(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Opti
 /// Arnold's parameter names (`inputs:melanin`), Arnold's defaults for those not written;
 /// what tress's model cannot hold is said in one note per shader.
 pub fn bound_standard_hair(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
+    bound_arnold::<StandardHair>(prim, "arnold:standard_hair", time, notes)
+}
+
+/// The material of Arnold's surface shader (`arnold:standard_surface`) bound to `prim`,
+/// as [`bound_standard_hair`] finds and reads it ([`crate::io::arnold_surface`]).
+pub fn bound_standard_surface(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
+    bound_arnold::<StandardSurface>(prim, "arnold:standard_surface", time, notes)
+}
+
+/// The material of the Arnold shader of type `id` bound to `prim`, by `S`'s parameters.
+fn bound_arnold<S: ArnoldShader>(prim: &Prim, id: &str, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
     let Some(material) = bound_material(prim)? else { return Ok(None) };
     for output in ["outputs:arnold:surface", "outputs:surface"] {
         let Some(shader) = connected_shader(&material, output)? else { continue };
-        if token(value(&shader, "info:id", time)?, "") != "arnold:standard_hair" {
+        if token(value(&shader, "info:id", time)?, "") != id {
             continue;
         }
-        let mut hair = StandardHair::default();
+        let mut hair = S::default();
         let mut connected = Vec::new();
-        for name in StandardHair::NAMES {
+        for &name in S::NAMES {
             let input = format!("inputs:{name}");
             if shader.attribute(&input).has_authored_connections()? {
                 connected.push(name.to_string());

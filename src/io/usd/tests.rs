@@ -1144,3 +1144,34 @@ proptest! {
         let _ = read_with("", &String::from_utf8_lossy(&bytes), &ImportOptions { frame: Some(5), camera: None });
     }
 }
+
+#[test]
+fn meshes_take_the_bound_arnold_standard_surface() {
+    let body = r#"
+def Material "Glass" {
+    token outputs:arnold:surface.connect = </Glass/standard_surface>
+    def Shader "standard_surface" {
+        uniform token info:id = "arnold:standard_surface"
+        float inputs:transmission = 1
+        float inputs:specular_IOR = 1.33
+        float inputs:specular_roughness = 0
+        token outputs:out
+    }
+}
+def Mesh "Bound" (prepend apiSchemas = ["MaterialBindingAPI"]) {
+    rel material:binding = </Glass>
+    int[] faceVertexCounts = [3]
+    int[] faceVertexIndices = [0, 1, 2]
+    point3f[] points = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+}
+def Mesh "Plain" {
+    int[] faceVertexCounts = [3]
+    int[] faceVertexIndices = [0, 1, 2]
+    point3f[] points = [(0, 0, 1), (1, 0, 1), (0, 1, 1)]
+}
+"#;
+    let s = read_body(body);
+    let glass = Material::Glass { ior: 1.33, color: Vec3::ONE };
+    assert_eq!(s.contents.meshes[0].material, glass.into());
+    assert_eq!(s.contents.meshes[1].material, Material::Diffuse { color: Vec3::splat(0.5) }.into());
+}

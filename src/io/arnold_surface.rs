@@ -1,0 +1,284 @@
+//! Arnold's surface shader, `standard_surface` (MtoA's `aiStandardSurface` node in Maya
+//! files, Arnold-USD's `arnold:standard_surface` shader in USD), as tress's surface
+//! materials. Both readers fill a [`StandardSurface`] by Arnold's parameter names through
+//! [`ArnoldShader`], as they do Arnold's hair shader ([`super::arnold_hair`]).
+//!
+//! Autodesk Standard Surface (the specification Arnold's shader implements) layers a
+//! dielectric specular coating over a diffuse base, blends to a metal by `metalness` and to
+//! a transmissive dielectric by `transmission`. tress's materials hold one of these at a
+//! time, so the mapping picks the dominant layer:
+//!
+//! - `transmission` 0.5 or more: `glass` of index `specular_IOR` and colour
+//!   `transmission_color`;
+//! - else `metalness` 0.5 or more: a metal, its reflectance `base × base_color`: a
+//!   `mirror` when `specular_roughness` is 0, else a `phong` lobe of that reflectance with
+//!   no diffuse;
+//! - else the dielectric: Lambert of `base × base_color` plus, unless `specular` is 0, a
+//!   `phong` lobe of reflectance `specular × specular_color × F0`, F0 = ((η − 1)/(η + 1))²
+//!   the coating's Fresnel reflectance at normal incidence (η = `specular_IOR`).
+//!
+//! The glossy lobe's exponent is [`crate::shading::phong_exponent`] of the microfacet
+//! roughness α = `specular_roughness`², Standard Surface's remapping of its roughness
+//! control (Georgiev et al. 2019, "Autodesk Standard Surface", specular section).
+//!
+//! What the mapping cannot hold (coat, sheen, subsurface, thin film, emission, opacity,
+//! thin walls, diffuse roughness, a partial metal or transmission, connected shading
+//! networks) is named in one warning per shader.
+
+use super::arnold_hair::{fmt_color, ArnoldShader, Param};
+use crate::math::Color;
+use crate::shading::{phong_exponent, Material};
+
+/// Smallest `specular_roughness` drawn as a glossy lobe (below it the exponent grows
+/// past what sampling resolves): a metal rougher than 0 but below this is a `phong` of
+/// this roughness.
+const MIN_ROUGHNESS: f32 = 0.01;
+
+/// Arnold's `standard_surface` parameters that tress reads, with Arnold's defaults.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StandardSurface {
+    /// Weight of the base (diffuse or metal) colour.
+    pub base: f32,
+    /// Base colour.
+    pub base_color: Color,
+    /// Oren–Nayar roughness of the diffuse base.
+    pub diffuse_roughness: f32,
+    /// Blend from dielectric (0) to metal (1).
+    pub metalness: f32,
+    /// Weight of the specular coating.
+    pub specular: f32,
+    /// Tint of the specular coating.
+    pub specular_color: Color,
+    /// Roughness of the specular coating (and of the metal).
+    pub specular_roughness: f32,
+    /// Index of refraction of the coating and of transmission.
+    pub specular_ior: f32,
+    /// Blend to a transmissive dielectric.
+    pub transmission: f32,
+    /// Transmission colour.
+    pub transmission_color: Color,
+    /// Weight of subsurface scattering.
+    pub subsurface: f32,
+    /// Weight of the sheen layer.
+    pub sheen: f32,
+    /// Weight of the clear coat.
+    pub coat: f32,
+    /// Thin-film thickness in nanometres (0: none).
+    pub thin_film_thickness: f32,
+    /// Weight of the emission.
+    pub emission: f32,
+    /// Colour of the emission.
+    pub emission_color: Color,
+    /// Opacity.
+    pub opacity: Color,
+    /// A thin, two-sided surface with no interior.
+    pub thin_walled: bool,
+}
+
+impl Default for StandardSurface {
+    /// Arnold's defaults (Arnold user guide, "Standard Surface").
+    fn default() -> Self {
+        StandardSurface {
+            base: 0.8,
+            base_color: Color::ONE,
+            diffuse_roughness: 0.0,
+            metalness: 0.0,
+            specular: 1.0,
+            specular_color: Color::ONE,
+            specular_roughness: 0.2,
+            specular_ior: 1.5,
+            transmission: 0.0,
+            transmission_color: Color::ONE,
+            subsurface: 0.0,
+            sheen: 0.0,
+            coat: 0.0,
+            thin_film_thickness: 0.0,
+            emission: 0.0,
+            emission_color: Color::ONE,
+            opacity: Color::ONE,
+            thin_walled: false,
+        }
+    }
+}
+
+impl ArnoldShader for StandardSurface {
+    const NAMES: &'static [&'static str] = &[
+        "base",
+        "base_color",
+        "diffuse_roughness",
+        "metalness",
+        "specular",
+        "specular_color",
+        "specular_roughness",
+        "specular_IOR",
+        "transmission",
+        "transmission_color",
+        "subsurface",
+        "sheen",
+        "coat",
+        "thin_film_thickness",
+        "emission",
+        "emission_color",
+        "opacity",
+        "thin_walled",
+    ];
+
+    fn param(&mut self, name: &str) -> Option<Param<'_>> {
+        use Param::{Bool, Color as C, Float};
+        Some(match name {
+            "base" => Float(&mut self.base),
+            "base_color" => C(&mut self.base_color),
+            "diffuse_roughness" => Float(&mut self.diffuse_roughness),
+            "metalness" => Float(&mut self.metalness),
+            "specular" => Float(&mut self.specular),
+            "specular_color" => C(&mut self.specular_color),
+            "specular_roughness" => Float(&mut self.specular_roughness),
+            "specular_IOR" => Float(&mut self.specular_ior),
+            "transmission" => Float(&mut self.transmission),
+            "transmission_color" => C(&mut self.transmission_color),
+            "subsurface" => Float(&mut self.subsurface),
+            "sheen" => Float(&mut self.sheen),
+            "coat" => Float(&mut self.coat),
+            "thin_film_thickness" => Float(&mut self.thin_film_thickness),
+            "emission" => Float(&mut self.emission),
+            "emission_color" => C(&mut self.emission_color),
+            "opacity" => C(&mut self.opacity),
+            "thin_walled" => Bool(&mut self.thin_walled),
+            _ => return None,
+        })
+    }
+
+    /// The material standing in for the shader (module documentation), and the warning
+    /// naming what it leaves out.
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
+        let mut left_out: Vec<String> = Vec::new();
+        // NaN takes the parameter's low end, like a value out of range.
+        let unit = |v: f32| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+        let rgb = |c: Color| c.clamp(Color::ZERO, Color::ONE);
+        let (transmission, metalness) = (unit(self.transmission), unit(self.metalness));
+        let ior = if self.specular_ior.is_finite() { self.specular_ior.clamp(1.0, 10.0) } else { 1.5 };
+        let roughness = unit(self.specular_roughness);
+        let exponent = || phong_exponent(roughness.max(MIN_ROUGHNESS).powi(2));
+        let base = rgb(self.base_color * unit(self.base));
+        let material = if transmission >= 0.5 {
+            if transmission < 1.0 {
+                left_out.push(format!("transmission {transmission} (drawn as glass)"));
+            }
+            if roughness > 0.0 {
+                left_out.push(format!("specular_roughness {roughness} of the glass (drawn smooth)"));
+            }
+            Material::Glass { ior, color: rgb(self.transmission_color) }
+        } else {
+            if transmission > 0.0 {
+                left_out.push(format!("transmission {transmission} (drawn opaque)"));
+            }
+            if metalness >= 0.5 {
+                if metalness < 1.0 {
+                    left_out.push(format!("metalness {metalness} (drawn as a metal)"));
+                }
+                match roughness == 0.0 {
+                    true => Material::Mirror { color: base },
+                    false => Material::Phong { diffuse: Color::ZERO, specular: base, exponent: exponent() },
+                }
+            } else {
+                if metalness > 0.0 {
+                    left_out.push(format!("metalness {metalness} (drawn as a dielectric)"));
+                }
+                let f0 = ((ior - 1.0) / (ior + 1.0)).powi(2);
+                let specular = rgb(self.specular_color * unit(self.specular) * f0);
+                match specular == Color::ZERO {
+                    true => Material::Diffuse { color: base },
+                    false => Material::Phong { diffuse: base, specular, exponent: exponent() },
+                }
+            }
+        };
+        for (name, v) in [
+            ("diffuse_roughness", self.diffuse_roughness),
+            ("subsurface", self.subsurface),
+            ("sheen", self.sheen),
+            ("coat", self.coat),
+            ("thin_film_thickness", self.thin_film_thickness),
+        ] {
+            if v != 0.0 {
+                left_out.push(format!("{name} {v}"));
+            }
+        }
+        if self.emission != 0.0 && self.emission_color != Color::ZERO {
+            left_out.push(format!("emission {} of colour {}", self.emission, fmt_color(self.emission_color)));
+        }
+        if self.opacity != Color::ONE {
+            left_out.push(format!("opacity {}", fmt_color(self.opacity)));
+        }
+        if self.thin_walled {
+            left_out.push("thin_walled".into());
+        }
+        if !connected.is_empty() {
+            left_out.push(format!("shading networks on {} (their own values used)", connected.join(", ")));
+        }
+        let warning = (!left_out.is_empty()).then(|| {
+            format!("{shader}: Arnold standard_surface settings tress does not represent: {}", left_out.join(", "))
+        });
+        (material, warning)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn material(s: StandardSurface) -> (Material, Option<String>) {
+        s.material("s", &[])
+    }
+
+    #[test]
+    fn the_default_is_a_grey_base_under_a_four_percent_coating() {
+        // α = 0.2² = 0.04: exponent 2/α² − 2 = 1248; F0 of η 1.5 is 0.04.
+        let (m, w) = material(StandardSurface::default());
+        let Material::Phong { diffuse, specular, exponent } = m else { panic!("{m:?}") };
+        assert_eq!(diffuse, Color::splat(0.8));
+        assert!((specular - Color::splat(0.04)).abs().max_element() < 1e-6, "{specular}");
+        assert!((exponent - 1248.0).abs() < 0.1, "{exponent}");
+        assert_eq!(w, None);
+        // No specular: plain Lambert of base × base_color.
+        let red =
+            StandardSurface { specular: 0.0, base: 0.5, base_color: Color::new(1.0, 0.2, 0.0), ..Default::default() };
+        assert_eq!(material(red).0, Material::Diffuse { color: Color::new(0.5, 0.1, 0.0) });
+    }
+
+    #[test]
+    fn metals_and_glass_take_the_dominant_layer() {
+        let gold = Color::new(1.0, 0.8, 0.3);
+        let metal = StandardSurface { metalness: 1.0, base: 1.0, base_color: gold, ..Default::default() };
+        let Material::Phong { diffuse, specular, .. } = material(metal.clone()).0 else { panic!() };
+        assert_eq!((diffuse, specular), (Color::ZERO, gold));
+        let polished = StandardSurface { specular_roughness: 0.0, ..metal };
+        assert_eq!(material(polished).0, Material::Mirror { color: gold });
+        let glass =
+            StandardSurface { transmission: 1.0, specular_ior: 1.33, specular_roughness: 0.0, ..Default::default() };
+        assert_eq!(material(glass).0, Material::Glass { ior: 1.33, color: Color::ONE });
+        // A half metal is drawn as a metal, said.
+        let half = StandardSurface { metalness: 0.6, ..Default::default() };
+        let (m, w) = material(half);
+        assert!(matches!(m, Material::Phong { diffuse, .. } if diffuse == Color::ZERO));
+        assert!(w.unwrap().contains("metalness 0.6 (drawn as a metal)"));
+    }
+
+    #[test]
+    fn what_the_mapping_cannot_hold_is_said_once_naming_the_shader() {
+        let s =
+            StandardSurface { coat: 1.0, sheen: 0.5, emission: 2.0, opacity: Color::splat(0.5), ..Default::default() };
+        let w = s.material("/Looks/car", &["base_color".into()]).1.unwrap();
+        for part in ["/Looks/car:", "coat 1", "sheen 0.5", "emission 2", "opacity", "shading networks on base_color"] {
+            assert!(w.contains(part), "{part}: {w}");
+        }
+        // Bad numbers are clamped, never a panic or a NaN material.
+        let bad = StandardSurface {
+            base: f32::NAN,
+            specular_ior: f32::INFINITY,
+            specular_roughness: -1.0,
+            ..Default::default()
+        };
+        let Material::Phong { diffuse, exponent, .. } = material(bad).0 else { panic!() };
+        assert!(diffuse == Color::ZERO && exponent.is_finite());
+    }
+}
