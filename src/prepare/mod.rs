@@ -264,8 +264,8 @@ pub fn prepare_owned(mut desc: Description) -> Result<(World, PrepareTimes), Pre
 fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result<(World, PrepareTimes), PrepareError> {
     desc.validate()?;
     let c = &desc.camera;
-    let camera = Camera::new(c.eye, c.target, c.up, c.vfov, desc.settings.width, desc.settings.height)?
-        .clipped(c.clip[0], c.clip[1])?;
+    let (w, h) = (desc.settings.width, desc.settings.height);
+    let camera = Camera::new(c.eye, c.target, c.up, c.vfov_for(w, h), w, h)?.clipped(c.clip[0], c.clip[1])?;
     let start = Instant::now();
     let LoadedGeometry { shapes, materials, lods, mut warnings } = load_geometry_taking(desc, taken)?;
     let lights = lights(desc, &mut warnings)?;

@@ -29,8 +29,12 @@ pub struct CameraDesc {
     pub target: Vec3,
     /// Up direction.
     pub up: Vec3,
-    /// Vertical field of view in degrees.
+    /// Vertical field of view in degrees; a [`Film`] overrides it.
     pub vfov: f32,
+    /// The film back of a camera read from a file with one (USD, Maya): the field of view
+    /// is fitted from it to the aspect of the image finally rendered, so an image size given
+    /// later (`-r`) refits it as the source application would.
+    pub film: Option<Film>,
     /// Near and far clipping distances, measured along the view direction (Blender's Clip
     /// Start and End, Maya's near and far clip planes): nothing nearer or farther is seen.
     /// `[0, inf]` clips nothing.
@@ -45,8 +49,60 @@ impl Default for CameraDesc {
             target: Vec3::ZERO,
             up: Vec3::Y,
             vfov: 35.0,
+            film: None,
             clip: [0.0, f32::INFINITY],
         }
+    }
+}
+
+impl CameraDesc {
+    /// The vertical field of view in degrees for a `width` x `height` image: the film's
+    /// fit when there is one, else `vfov`.
+    pub fn vfov_for(&self, width: u32, height: u32) -> f32 {
+        self.film.map_or(self.vfov, |f| f.vfov(width, height))
+    }
+}
+
+/// Which side of a film aperture meets the image edge when the two aspects differ (Maya's
+/// Film Fit; Arnold's USD reader always fits the horizontal aperture, as Arnold's
+/// `persp_camera` `fov` is horizontal).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FilmFit {
+    /// The horizontal aperture spans the image width.
+    Horizontal,
+    /// The vertical aperture spans the image height.
+    Vertical,
+    /// The film fills the image: the side that fits with the film's other side cropped.
+    Fill,
+    /// The whole film is seen: the side that fits with the image extending past the other.
+    Overscan,
+}
+
+/// A camera's film back: its apertures over its focal length, and how it fits the image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Film {
+    /// Horizontal and vertical aperture, each divided by the focal length (same unit), so
+    /// half of each is the tangent of that side's half angle. Finite and positive.
+    pub aperture: [f32; 2],
+    /// How the aperture is fitted to the image's aspect.
+    pub fit: FilmFit,
+}
+
+impl Film {
+    /// The vertical field of view in degrees for a `width` x `height` image (Maya's film
+    /// fit, Autodesk Maya Help "Camera Attribute Editor: Film Back"; `2 atan(aperture / 2)`
+    /// on the side that fits, the other side following the image aspect).
+    pub fn vfov(&self, width: u32, height: u32) -> f32 {
+        let [h, v] = self.aperture;
+        let image_aspect = width.max(1) as f32 / height.max(1) as f32;
+        let horizontal = match self.fit {
+            FilmFit::Horizontal => true,
+            FilmFit::Vertical => false,
+            FilmFit::Fill => image_aspect > h / v,
+            FilmFit::Overscan => image_aspect < h / v,
+        };
+        let height = if horizontal { h / image_aspect } else { v };
+        2.0 * (0.5 * height).atan().to_degrees()
     }
 }
 

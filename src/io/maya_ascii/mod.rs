@@ -81,7 +81,9 @@ use crate::hair_system::{
     follicles::follicles_at_uvs, Guides, HairColors, HairSystem, Interp, NoiseMethod, Ramp, RampKey,
 };
 use crate::light::Light;
-use crate::scene::{CameraDesc, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource};
+use crate::scene::{
+    CameraDesc, Film, FilmFit, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
+};
 use crate::shading::Material;
 use glam::{Affine3A, DAffine3, DMat3, DVec3, Vec3, Vec4};
 use std::collections::{BTreeMap, HashMap};
@@ -1268,22 +1270,20 @@ impl<'g> Reader<'g> {
         if !(focal > 0.0 && aperture[0] > 0.0 && aperture[1] > 0.0) {
             return Err((node.line, format!("camera {}: focal length and aperture must be positive", node.name)));
         }
-        let [w, h] = self.out.resolution.unwrap_or([640, 480]).map(|x| x as f64);
         // Film fit: 0 fill, 1 horizontal (the node default), 2 vertical, 3 overscan.
-        let fit = scalar(g, cam, &["ff", "filmFit"], 1.0)? as i64;
-        let (film_aspect, image_aspect) = (aperture[0] / aperture[1], w / h);
-        let horizontal = match fit {
-            0 => image_aspect > film_aspect,
-            2 => false,
-            3 => image_aspect < film_aspect,
-            _ => true,
+        let fit = match scalar(g, cam, &["ff", "filmFit"], 1.0)? as i64 {
+            0 => FilmFit::Fill,
+            2 => FilmFit::Vertical,
+            3 => FilmFit::Overscan,
+            _ => FilmFit::Horizontal,
         };
         // Aperture in inches, focal length in millimetres.
-        let half_tan = match horizontal {
-            true => aperture[0] * 25.4 / (2.0 * focal) / image_aspect,
-            false => aperture[1] * 25.4 / (2.0 * focal),
-        };
-        let vfov = (2.0 * half_tan.atan()).to_degrees() as f32;
+        let film = Film { aperture: aperture.map(|a| (a * 25.4 / focal) as f32), fit };
+        if !film.aperture.iter().all(|a| a.is_finite() && *a > 0.0) {
+            return Err((node.line, format!("camera {}: aperture over focal length out of range", node.name)));
+        }
+        let [w, h] = self.out.resolution.unwrap_or([640, 480]);
+        let vfov = film.vfov(w, h);
         // The clip planes, along the view direction: the node's defaults are in Maya's
         // internal centimetres, set values in the file's unit; the camera's scale
         // stretches them.
@@ -1297,7 +1297,7 @@ impl<'g> Reader<'g> {
         }
         let stretch = m.transform_vector3(DVec3::NEG_Z).length();
         let clip = [(near * stretch) as f32, (far * stretch) as f32];
-        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov, clip });
+        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov, film: Some(film), clip });
         Ok(())
     }
 

@@ -100,7 +100,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
                     clip[0], clip[1]
                 )));
             }
-            Some(CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov, clip })
+            Some(CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov, film: None, clip })
         }
         None => None,
     };

@@ -1,17 +1,19 @@
 //! `Camera` prims (UsdGeomCamera) to tress's camera, at the frame's time code.
 //!
-//! The camera looks down its local −Z with +Y up. Its vertical field of view is
-//! `2 atan(aperture / (2 focalLength))` (both in the same unit, so the ratio is all that
-//! counts), with the vertical aperture widened when the image is narrower than the
-//! horizontal aperture, as USD's default `expandAperture` fit does. Without an image size
-//! of its own (a `RenderSettings` prim's `resolution`), the image takes the apertures'
-//! aspect at tress's default width. `clippingRange` (near, far), the schema's (1, 10⁶) when
+//! The camera looks down its local −Z with +Y up. Its film is its apertures over
+//! `focalLength` (both in the same unit, so the ratio is all that counts), fitted to the
+//! image finally rendered by the horizontal aperture, as Arnold's USD reader does (it sets
+//! `persp_camera`'s horizontal `fov` from the horizontal aperture): the horizontal field of
+//! view is `2 atan(horizontalAperture / (2 focalLength))` and the vertical one follows the
+//! image aspect, also for an image size given later (`-r`). Without an image size of its
+//! own (a `RenderSettings` prim's `resolution`), the image takes the apertures' aspect at
+//! tress's default width. `clippingRange` (near, far), the schema's (1, 10⁶) when
 //! not authored, clips along the view direction, in the camera's units: a scale in the
 //! camera's transform scales the distances with it.
 
 use super::values::{number, short, token, value, Res};
 use super::Notes;
-use crate::scene::CameraDesc;
+use crate::scene::{CameraDesc, Film, FilmFit};
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
 use openusd::sdf;
@@ -46,10 +48,12 @@ pub fn read_camera(
         let width = RenderSettings::default().width;
         [width, ((width as f32 * v_ap / h_ap).round() as u32).clamp(1, 16 * width)]
     });
-    let aspect = w as f32 / h.max(1) as f32;
-    let v_ap = v_ap.max(h_ap / aspect);
-    let vfov = 2.0 * (0.5 * v_ap / focal).atan().to_degrees();
-    anyhow::ensure!(vfov > 0.0 && vfov < 180.0, "a field of view of {vfov}° from its apertures and focal length");
+    let film = Film { aperture: [h_ap / focal, v_ap / focal], fit: FilmFit::Horizontal };
+    anyhow::ensure!(
+        film.aperture.iter().all(|a| a.is_finite() && *a > 0.0),
+        "apertures {h_ap} × {v_ap} over focal length {focal} do not give a field of view"
+    );
+    let vfov = film.vfov(w, h);
     let eye = transform.transform_point3(Vec3::ZERO);
     let forward = transform.transform_vector3(-Vec3::Z);
     let up = transform.transform_vector3(Vec3::Y);
@@ -70,5 +74,5 @@ pub fn read_camera(
         "`clippingRange` ({near}, {far}) is not a range from a finite near distance >= 0 to a larger far one"
     );
     let clip = [near, far].map(|d| d * forward.length());
-    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, clip }, [w, h]))
+    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, film: Some(film), clip }, [w, h]))
 }

@@ -357,6 +357,19 @@ fn a_render_settings_resolution_widens_the_aperture_as_usd_fits_it() {
 }
 
 #[test]
+fn an_image_size_given_later_refits_the_horizontal_aperture() {
+    // No RenderSettings: the film goes with the camera, so `-r` refits it.
+    let c = read_with("", CAMERAS, &ImportOptions::default()).unwrap().camera.unwrap();
+    for (w, h) in [(800, 400), (500, 500), (300, 600)] {
+        let want = 2.0 * (0.5 * 36.0 / (w as f32 / h as f32) / 35.0).atan().to_degrees();
+        let got = c.vfov_for(w, h);
+        assert!((got - want).abs() < 1e-3, "{w}x{h}: {got} {want}");
+    }
+    // A 2:1 image of the 36 × 24 aperture keeps the 36 across: 18 mm high, not 24.
+    assert!(c.vfov_for(800, 400) < 0.8 * 2.0 * (12.0f32 / 35.0).atan().to_degrees());
+}
+
+#[test]
 fn lights_follow_usdlux_units_and_shapes() {
     let body = r#"
 def RectLight "Rect" {
