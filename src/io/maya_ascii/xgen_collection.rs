@@ -77,7 +77,7 @@ pub struct Patch {
 const PROFILE_POINTS: usize = 33;
 
 impl CollectionDescription {
-    /// The width along the strand as a multiplier of `width`, at [`PROFILE_POINTS`] evenly
+    /// The width along the strand as a multiplier of `width`, at `PROFILE_POINTS` (33) evenly
     /// spaced fractions root to tip, or `None` when it is 1 throughout. Autodesk's XGen
     /// Spline attributes: Taper "controls the width of the tip relative to the root;
     /// positive values make the tip narrower than the root, negative wider", Taper Start
