@@ -262,7 +262,8 @@ fn attraction_pulls_hairs_toward_a_guide() {
     let mut guide = StrandSet::new();
     guide.push_strand((0..=10).map(|i| (Vec3::new(0.1 * i as f32, 0.0, 0.0), 0.01)));
     let d = desc(3000, 8, &[]);
-    for model in [AttractorModel::Local, AttractorModel::Global] {
+    // (The guide and the hairs are 1 long, so Interpolate pulls as Local does.)
+    for model in [AttractorModel::Local, AttractorModel::Global, AttractorModel::Interpolate] {
         let attractors = Attractors { model, radius: 0.8, threshold_length: 0.0, ..Default::default() };
         let options = GrowOptions { seed: 7, guides: Some((&guide, &attractors)), ..Default::default() };
         let fur = grow(&plane, &d, options).unwrap();
@@ -278,7 +279,7 @@ fn attraction_pulls_hairs_toward_a_guide() {
                 let pull = 1.0 - d_root / 0.8;
                 let free_tip = root + Vec3::Y;
                 let target = match model {
-                    AttractorModel::Local => root + Vec3::X,
+                    AttractorModel::Local | AttractorModel::Interpolate => root + Vec3::X,
                     AttractorModel::Global => Vec3::X,
                 };
                 assert!(((tip - free_tip) - (target - free_tip) * pull).length() < 1e-3, "{model:?} hair at {root}");

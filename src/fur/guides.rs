@@ -12,6 +12,11 @@
 //!   its shape relative to its root stands for that change.)
 //! - `global` model: the target is the guide curve itself, so fur grows toward it and
 //!   gathers around it (a clumping look).
+//! - [`AttractorModel::Interpolate`] (XGen's guides, no Maya Fur model): as `local`, but
+//!   each guide's shape keeps its own length, times the hair's Length as a factor, so hairs
+//!   among guides of different lengths take a length between theirs (Autodesk's XGen
+//!   primitive attributes: under guide control, "Length scales primitive based on the guide
+//!   length").
 //!
 //! `global_scale` multiplies radius, power, influence and the threshold length, as Maya's
 //! attractor Global Scale does. Hairs shorter than `threshold_length * global_scale` are
@@ -30,6 +35,10 @@ pub enum AttractorModel {
     Local,
     /// Hairs grow toward the nearest guides.
     Global,
+    /// Hairs take the weighted mean of the nearest guides' shapes from their own root, each
+    /// guide at its own length times the hair's Length (a factor here, not a length): XGen's
+    /// guide interpolation.
+    Interpolate,
 }
 
 /// Maya's FurCurveAttractors attributes, with its node defaults.
@@ -192,6 +201,7 @@ impl GuideField {
                         AttractorModel::Local => {
                             root + (on_guide - self.at(g, 0.0)) * (length / self.lengths[g as usize])
                         }
+                        AttractorModel::Interpolate => root + (on_guide - self.at(g, 0.0)) * length,
                     };
             }
             *p = p.lerp(target / weight_sum, w);
@@ -250,6 +260,30 @@ mod tests {
         let mut h = hair(5);
         field.attract(&mut h, 1.0, 0.0);
         assert_eq!(h, hair(5));
+    }
+
+    #[test]
+    fn interpolation_keeps_the_guides_lengths_times_the_hair_length() {
+        // Guides 1 and 2 long along +x, at z = 0 and z = 1; a hair between them.
+        let mut g = guide(&[Vec3::ZERO, Vec3::X]);
+        g.push_strand([(Vec3::Z, 0.01), (Vec3::new(2.0, 0.0, 1.0), 0.01)]);
+        let at = Attractors {
+            model: AttractorModel::Interpolate,
+            curves_per_fur: 2,
+            radius: 2.0,
+            power: 0.0,
+            influence: 1e9,
+            threshold_length: 0.0,
+            ..Default::default()
+        };
+        let field = GuideField::new(&g, &at).unwrap();
+        let root = Vec3::new(0.0, 0.0, 0.5);
+        let mut h: Vec<Vec3> = (0..5).map(|i| root + Vec3::Y * (i as f32 / 4.0)).collect();
+        field.attract(&mut h, 0.5, 1.0);
+        // Equal weights: the mean of 1 and 2, times the hair's Length 0.5, and a straight
+        // hair along the guides' direction.
+        assert!((h[4] - (root + Vec3::new(0.75, 0.0, 0.0))).length() < 1e-5, "{}", h[4]);
+        assert!((h[2] - (root + Vec3::new(0.375, 0.0, 0.0))).length() < 1e-5, "{}", h[2]);
     }
 
     #[test]

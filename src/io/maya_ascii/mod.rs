@@ -155,7 +155,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 57] = [
+const KNOWN: [&str; 59] = [
     "transform",
     "animCurveTL",
     "animCurveTA",
@@ -194,6 +194,8 @@ const KNOWN: [&str; 57] = [
     "xgmPalette",
     "xgmDescription",
     "xgmSubdPatch",
+    "xgmSplineGuide",
+    "xgmMakeGuide",
     "materialInfo",
     "partition",
     "lightLinker",

@@ -1338,3 +1338,40 @@ fn meshes_take_their_ai_standard_surface() {
     assert_eq!(s.contents.meshes[0].material, want.0.into());
     assert!(s.warnings.iter().any(|w| w.contains("gold: Arnold standard_surface") && w.contains("coat 1")));
 }
+
+#[test]
+fn xgen_guides_shape_the_strands_at_their_length() {
+    let dir = tempfile::tempdir().unwrap();
+    let ma = dir.path().join("scene.ma");
+    // One guide at the plane's centre, up half a unit then half a unit along +X.
+    let guide = "createNode transform -n \"g1\" -p \"plane1_description1\";\n\
+                 createNode xgmSplineGuide -n \"g1Shape\" -p \"g1\";\ncreateNode xgmMakeGuide -n \"mg1\";\n\
+                 \tsetAttr \".cgm\" -type \"pointArray\" 3 0 1 0 1 0 1.5 0 1 0.5 1.5 0 1 ;\n\
+                 connectAttr \"mg1.os\" \"g1Shape.is\";\n";
+    std::fs::write(&ma, format!("{XGEN_SCENE}{guide}")).unwrap();
+    std::fs::write(dir.path().join("scene__collection1.xgen"), xgen_file("20.0")).unwrap();
+    let s = read_maya(&ma, None, None).unwrap();
+    let f = &s.contents.fur[0];
+    // The description's length scales the guide's.
+    assert_eq!(f.description[Scalar::Length].value, 0.75);
+    let Some((crate::scene::HairSource::Inline(set), attractors)) = &f.guides else { panic!("guides") };
+    let MeshSource::Inline(m) = &s.contents.meshes[f.mesh].source else { panic!("inline") };
+    let mut mesh = m.clone();
+    mesh.transform(&s.contents.meshes[f.mesh].transform);
+    let options = crate::fur::GrowOptions { guides: Some((set, attractors)), ..Default::default() };
+    let grown = crate::fur::grow(&mesh, &f.description, options).unwrap();
+    assert!(grown.strands.strand_count() > 100);
+    for k in 0..grown.strands.strand_count() {
+        let (a, b) = (grown.strands.offsets[k] as usize, grown.strands.offsets[k + 1] as usize);
+        let (root, tip) = (grown.strands.position(a as u32), grown.strands.position(b as u32 - 1));
+        let mid = grown.strands.position(((a + b) / 2) as u32);
+        // Every strand follows the bend at 0.75 of the guide's size: tip = root + 0.75 (0.5,
+        // 0.5, 0), the middle at the elbow.
+        assert!((root.y - 1.0).abs() < 1e-5, "{root}");
+        assert!((tip - root - Vec3::new(0.375, 0.375, 0.0)).length() < 1e-3, "{root} -> {tip}");
+        // (The guide is resampled by arc length, which rounds the elbow off a little.)
+        assert!((mid - root - Vec3::new(0.0, 0.375, 0.0)).length() < 0.02, "{root} mid {mid}");
+    }
+    let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).unwrap();
+    assert!(w.contains("1 guide(s) on 1 of its 1 patch(es)") && !w.contains("straight along"), "{w}");
+}

@@ -21,10 +21,11 @@
 
 use super::parse::Value;
 use super::{attr, build_ramp, ramp_keys, scalar, xgen_collection, Reader, Res};
+use crate::fur::{AttractorModel, Attractors};
 use crate::fur::{FurDescription, Placement, Scalar};
 use crate::geometry::StrandSet;
 use crate::hair_system::Ramp;
-use crate::scene::FurEntry;
+use crate::scene::{FurEntry, HairSource};
 use glam::Vec3;
 use std::collections::BTreeSet;
 use std::io::Read;
@@ -240,6 +241,44 @@ impl Reader<'_> {
         Ok(out)
     }
 
+    /// The guides of the patch under transform `pt` (`xgmSplineGuide`s under transforms of
+    /// its own, their world-space control points in the `.cgm` point array of the
+    /// `xgmMakeGuide` feeding each), `None` when it has none; guides whose points cannot be
+    /// read are noted and left out. XGen ties guides to their patch, so each mesh follows
+    /// its own.
+    fn patch_guides(&self, pt: usize, notes: &mut Vec<String>) -> Option<StrandSet> {
+        let g = self.g;
+        let mut set = StrandSet::new();
+        let mut bad = Vec::new();
+        for guide in self.of_kind("xgmSplineGuide") {
+            if g.parent(guide).and_then(|gt| g.parent(gt)) != Some(pt) {
+                continue;
+            }
+            let points =
+                self.inputs(guide, &["is"]).into_iter().find(|&m| self.kind(m) == "xgmMakeGuide").and_then(|m| {
+                    match attr(g, m, &["cgm"]).map(|a| &a.value) {
+                        Some(Value::Numbers(v)) => Some(v.clone()),
+                        _ => None,
+                    }
+                });
+            // `COUNT x y z w ...`.
+            let cvs = points.filter(|v| {
+                v.first().is_some_and(|&n| n >= 2.0 && n.fract() == 0.0 && v.len() == 1 + 4 * n as usize)
+                    && v.iter().all(|x| x.is_finite())
+            });
+            match cvs {
+                Some(v) => {
+                    set.push_strand(v[1..].chunks(4).map(|c| (Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32), 0.01)))
+                }
+                None => bad.push(g.nodes[guide].name.clone()),
+            }
+        }
+        if !bad.is_empty() {
+            notes.push(format!("guide(s) without readable control points left out: {}", bad.join(", ")));
+        }
+        (set.strand_count() > 0).then_some(set)
+    }
+
     /// An XGen collection (`xgmPalette`): each of its descriptions that its collection file
     /// (`.xfn`, beside the scene) describes grows as Maya Fur on the meshes its
     /// `xgmSubdPatch`es are bound to ([`xgen_collection`]); a missing or unreadable file
@@ -290,15 +329,14 @@ impl Reader<'_> {
                 ));
                 continue;
             }
-            let mut notes = vec!["straight along the normal".to_string(), "guides not used".to_string()];
+            let mut notes = Vec::new();
             // The description's patches (`xgmSubdPatch` under the description's transform,
             // through a transform of its own), the meshes bound to them and the faces
             // that grow (the file's `Patch` record of the mesh's transform).
-            let mut meshes: Vec<(usize, f64, Option<Vec<bool>>)> = Vec::new();
+            let mut meshes: Vec<GrownMesh> = Vec::new();
             for patch in self.of_kind("xgmSubdPatch") {
-                if g.parent(patch).and_then(|pt| g.parent(pt)) != Some(t) {
-                    continue;
-                }
+                let Some(pt) = g.parent(patch).filter(|&pt| g.parent(pt) == Some(t)) else { continue };
+                let guides = self.patch_guides(pt, &mut notes);
                 for m in self.inputs(patch, &["geo", "geometry"]) {
                     let Some((i, mesh, faces)) = self.meshes.get(&m) else { continue };
                     if meshes.iter().any(|&(j, ..)| j == *i) {
@@ -315,7 +353,11 @@ impl Reader<'_> {
                         .filter(|&k| grows_on.as_ref().is_none_or(|g| g[k]))
                         .map(|k| f64::from(mesh.area(k as u32)))
                         .sum::<f64>();
-                    meshes.push((*i, area, grows_on));
+                    let guides = guides.clone().map(|set| {
+                        let a = guide_attraction(&set, mesh);
+                        (set, a)
+                    });
+                    meshes.push((*i, area, grows_on, guides));
                 }
             }
             if meshes.is_empty() {
@@ -323,6 +365,17 @@ impl Reader<'_> {
                 continue;
             }
             let width_profile = cd.width_profile();
+            let guided: Vec<u32> =
+                meshes.iter().filter_map(|m| m.3.as_ref().map(|g| g.0.strand_count() as u32)).collect();
+            notes.push(match guided.iter().sum::<u32>() {
+                0 => "straight along the normal (no guides)".to_string(),
+                n => format!(
+                    "{n} guide(s) on {} of its {} patch(es) shape their strands (each the mean of the up to 3 nearest \
+                     guides' shapes, weighted 1 − d/radius, at their lengths × length)",
+                    guided.len(),
+                    meshes.len()
+                ),
+            });
             if !cd.fx_modules.is_empty() {
                 notes.push(format!("FX modules not applied ({})", cd.fx_modules.join(", ")));
             }
@@ -335,7 +388,7 @@ impl Reader<'_> {
                     cd.fallbacks.join(", ")
                 ));
             }
-            for (mesh, area, grows_on) in meshes {
+            for (mesh, area, grows_on, guides) in meshes {
                 let wanted = cd.density * area;
                 let count = wanted.round().min(MAX_COLLECTION_STRANDS as f64) as u32;
                 if wanted > MAX_COLLECTION_STRANDS as f64 {
@@ -343,8 +396,9 @@ impl Reader<'_> {
                 }
                 // One straight segment serves a plain strand; a width profile needs points
                 // along the strand.
-                let segments = if width_profile.is_some() { SHAPED_SEGMENTS } else { 1 };
+                let segments = if width_profile.is_some() || guides.is_some() { SHAPED_SEGMENTS } else { 1 };
                 let mut desc = FurDescription { density: count, segments, ..FurDescription::default() };
+                // Under guides, XGen's Length scales the guides' lengths.
                 desc[Scalar::Length].value = cd.length as f32;
                 desc[Scalar::BaseWidth].value = cd.width as f32;
                 desc[Scalar::TipWidth].value = cd.width as f32;
@@ -356,7 +410,7 @@ impl Reader<'_> {
                     description: desc,
                     placement: Placement::Area,
                     seed: 0,
-                    guides: None,
+                    guides: guides.map(|(set, a)| (HairSource::Inline(set), a)),
                     lod: None,
                     grows_on,
                     width_profile: width_profile.clone(),
@@ -375,6 +429,35 @@ impl Reader<'_> {
                 notes.join("; ")
             ));
         }
+    }
+}
+
+/// A mesh an XGen description grows on: its index in the scene's meshes, the area that
+/// grows, which triangles grow (all when `None`), and its patch's guides with how the
+/// strands follow them.
+type GrownMesh = (usize, f64, Option<Vec<bool>>, Option<(StrandSet, Attractors)>);
+
+/// How an XGen collection's strands follow their patch's guides, through Maya Fur's
+/// attraction: each strand becomes the weighted mean of the shapes of the (up to) three
+/// guides nearest its root, weighted `1 − d / radius`, each at its own length times the
+/// description's length ([`AttractorModel::Interpolate`]), wholly (an influence so large
+/// the pull is always complete). The radius is twice the farthest any vertex of `mesh` lies
+/// from its nearest guide root, so every root has a guide.
+fn guide_attraction(guides: &StrandSet, mesh: &crate::geometry::TriangleMesh) -> Attractors {
+    let roots: Vec<Vec3> = guides.offsets[..guides.offsets.len() - 1].iter().map(|&o| guides.position(o)).collect();
+    let farthest = mesh
+        .positions
+        .iter()
+        .map(|p| roots.iter().map(|r| (*r - *p).length()).fold(f32::INFINITY, f32::min))
+        .fold(0.0f32, f32::max);
+    Attractors {
+        model: AttractorModel::Interpolate,
+        curves_per_fur: 3,
+        global_scale: 1.0,
+        radius: (2.0 * farthest).max(1e-6),
+        power: 0.0,
+        influence: 1e9,
+        threshold_length: 0.0,
     }
 }
 

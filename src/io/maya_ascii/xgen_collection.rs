@@ -5,7 +5,8 @@
 //! collection's folder (maps, guides, expressions); tress does not run XGen. It reads, per
 //! `Description` section, the few values that fix how many strands grow and how big they
 //! are, and grows them with [`crate::fur`] on the mesh each of the description's
-//! `xgmSubdPatch` nodes is bound to (`mesh.o → patch.geo`), straight along the normal:
+//! `xgmSubdPatch` nodes is bound to (`mesh.o → patch.geo`), straight along the normal or
+//! shaped by the patch's guides (read from the `.ma`, see the reader in `xgen.rs`):
 //!
 //! - `RandomGenerator` `density`: strands per unit area (scene units), so the fur's
 //!   Density (strands over the whole mesh) is density × the mesh's world area;
