@@ -8,8 +8,9 @@
 //! each section's extent, the structural sections' element counts (compressed blocks at
 //! most [`MAX_EXPANSION`] times their size), and every value the fields point to: array
 //! lengths, time samples, dictionaries (nested at most [`MAX_VALUE_DEPTH`] deep, as the
-//! crate reads them recursively), vectors and list ops. Whatever passes, the stage read
-//! still runs inside `catch_unwind` (see the parent module), for the reader's panics.
+//! crate reads them recursively), vectors and each list a list op's header announces.
+//! Whatever passes, the stage read still runs inside `catch_unwind` (see the parent
+//! module), for the reader's panics.
 //!
 //! The layout is the crate file format of USD (Pixar, `crateFile.cpp`, and the USD Core
 //! Specification §16.3): an 88-byte bootstrap (`PXR-USDC`, version, offset of the table
@@ -265,25 +266,74 @@ impl Values<'_> {
                 }
                 Ok(())
             }
-            // A dictionary: a count, then per entry a string index and an offset to the
-            // value's representation, the next entry after it.
-            31 => {
-                let count = self.b.u64_at(payload)?;
-                bounded(count, 12, "a dictionary")?;
-                let mut at = payload + 8;
-                for _ in 0..count {
-                    let rep_at = self.offset(at + 4)?;
-                    self.check(self.b.u64_at(rep_at)?, depth + 1)?;
-                    at = rep_at + 8;
-                }
-                Ok(())
-            }
-            // List ops: a header byte, then a count first.
-            32..=39 | 54 | 55 => bounded(self.b.u64_at(payload + 1).unwrap_or(0), 4, "a list op"),
+            31 => self.dictionary(payload, depth).map(|_| ()),
+            32..=39 | 54 | 55 => self.list_op(kind, payload, depth),
             // Vectors and the variant selection map: a count first.
             40 | 41 | 45 | 48 | 49 | 50 => bounded(self.b.u64_at(payload)?, 4, "a vector"),
             _ => Ok(()),
         }
+    }
+
+    /// A dictionary at `at`: a count, then per entry a string index and an offset to the
+    /// value's representation, the next entry after it. Returns where it ends.
+    fn dictionary(&self, at: u64, depth: usize) -> Result<u64, String> {
+        let count = self.b.u64_at(at)?;
+        if count.checked_mul(12).is_none_or(|n| n > self.b.len().saturating_sub(at)) {
+            return Err(format!("a dictionary at byte {at} claims {count} entries"));
+        }
+        let mut at = at + 8;
+        for _ in 0..count {
+            let rep_at = self.offset(at + 4)?;
+            self.check(self.b.u64_at(rep_at)?, depth + 1)?;
+            at = rep_at + 8;
+        }
+        Ok(at)
+    }
+
+    /// A list op of value type `kind` at `at`: a header byte of flags, then, only for the
+    /// lists the flags say are present, a `u64` count and that many items, in the order
+    /// `crateFile.cpp` writes them (explicit, added, prepended, appended, deleted,
+    /// ordered). A flag byte alone is a valid list op (an explicit empty list, `= None`
+    /// in text), so no count is read where the flags announce none.
+    fn list_op(&self, kind: u64, at: u64, depth: usize) -> Result<(), String> {
+        const HAS_EXPLICIT: u8 = 1 << 1;
+        const HAS_ADDED: u8 = 1 << 2;
+        const HAS_DELETED: u8 = 1 << 3;
+        const HAS_ORDERED: u8 = 1 << 4;
+        const HAS_PREPENDED: u8 = 1 << 5;
+        const HAS_APPENDED: u8 = 1 << 6;
+        let header = self.b.byte_at(at)?;
+        // Item sizes: indices of tokens, strings and paths and 32-bit integers take 4
+        // bytes, 64-bit ones 8; a payload is an asset-path string and a prim path index,
+        // with a 16-byte layer offset from version 0.8.0; a reference has the offset and
+        // a custom-data dictionary after them, so its items are walked one by one.
+        let item = match kind {
+            37 | 39 => 8,
+            55 if self.version >= [0, 8, 0] => 24,
+            55 => 8,
+            35 => 24,
+            _ => 4,
+        };
+        let start = at;
+        let mut at = at + 1;
+        for list in [HAS_EXPLICIT, HAS_ADDED, HAS_PREPENDED, HAS_APPENDED, HAS_DELETED, HAS_ORDERED] {
+            if header & list == 0 {
+                continue;
+            }
+            let count = self.b.u64_at(at)?;
+            at += 8;
+            let Some(bytes) = count.checked_mul(item).filter(|&n| n <= self.b.len().saturating_sub(at)) else {
+                return Err(format!("a list op at byte {start} claims {count} entries"));
+            };
+            if kind == 35 {
+                for _ in 0..count {
+                    at = self.dictionary(at + 24, depth + 1)?;
+                }
+            } else {
+                at += bytes;
+            }
+        }
+        Ok(())
     }
 
     /// The position an `i64` offset at `at` leads to (the crate's recursive offsets are
@@ -293,5 +343,52 @@ impl Values<'_> {
         at.checked_add_signed(off)
             .filter(|&p| p + 8 <= self.b.len())
             .ok_or_else(|| format!("an offset at byte {at} leads outside the file"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `list_op` (a list op's bytes) at byte 8 of a file, checked as a value of `kind`.
+    fn check_list_op(kind: u64, list_op: &[u8]) -> Result<(), String> {
+        let mut file = vec![0u8; 8];
+        file.extend_from_slice(list_op);
+        let b = Bytes(&file);
+        let values = Values { b: &b, version: [0, 9, 0], reps_checked: std::cell::Cell::new(0) };
+        values.check(kind << 48 | 8, 0)
+    }
+
+    fn le(words: &[u64], bytes: usize) -> Vec<u8> {
+        words.iter().flat_map(|w| w.to_le_bytes()[..bytes].to_vec()).collect()
+    }
+
+    /// Only the lists a list op's header announces have a count: an explicit empty list
+    /// (`= None`) is the header byte alone, whatever bytes follow it (here eight 0xff,
+    /// which read as a count would claim 2⁶⁴ − 1 entries).
+    #[test]
+    fn list_ops_have_counts_only_for_the_lists_their_header_announces() {
+        for kind in [32, 34, 35, 37, 55] {
+            assert_eq!(check_list_op(kind, &[&[0x01][..], &[0xff; 8]].concat()), Ok(()), "type {kind}");
+        }
+        // Added (two token indices), then deleted (one): each count is read after the
+        // items before it, and a deleted list claiming 2⁴⁰ entries is refused.
+        let tokens = |deleted: u64| [vec![0x0c], le(&[2], 8), le(&[5, 6], 4), le(&[deleted], 8), le(&[7], 4)].concat();
+        assert_eq!(check_list_op(32, &tokens(1)), Ok(()));
+        let e = check_list_op(32, &tokens(1 << 40)).unwrap_err();
+        assert_eq!(e, format!("a list op at byte 8 claims {} entries", 1u64 << 40));
+        // 64-bit integers take 8 bytes: two of them fit 16 bytes, three do not.
+        let int64s = |count: u64| [vec![0x02], le(&[count], 8), le(&[1, 2], 8)].concat();
+        assert_eq!(check_list_op(37, &int64s(2)), Ok(()));
+        assert!(check_list_op(37, &int64s(3)).is_err());
+        // A prepended reference (asset path, prim path, layer offset and a custom-data
+        // dictionary of no entries), then an appended one whose dictionary claims 2⁴⁰
+        // entries: the walk goes through the first reference to find the second.
+        let reference = |entries: u64| [le(&[1], 4), le(&[2], 4), vec![0; 16], le(&[entries], 8)].concat();
+        let references = |entries: u64| {
+            [vec![0x60], le(&[1], 8), reference(0), le(&[1], 8), reference(entries), vec![0; 16]].concat()
+        };
+        assert_eq!(check_list_op(35, &references(0)), Ok(()));
+        assert!(check_list_op(35, &references(1 << 40)).unwrap_err().contains("dictionary"));
     }
 }
