@@ -248,6 +248,11 @@ pub struct Graph {
     by_src: Vec<Vec<u32>>,
     /// Files referenced with `file -r`, in file order.
     pub references: Vec<String>,
+    /// The data type (`-type`) last given to each node's array attribute, by node and the
+    /// attribute's name without its element range (`fc` for `.fc[0:499]`): Maya writes
+    /// the type on the first chunk of a long array only, and the chunks after it (`setAttr
+    /// ".fc[500:999]"` with no `-type`) hold data of the same type.
+    array_types: HashMap<(usize, String), String>,
 }
 
 /// Most words one statement may hold (a 50-million-vertex mesh chunk is far beyond what
@@ -539,6 +544,15 @@ impl Graph {
         if values.is_empty() && type_name.is_none() {
             // Flags only (`setAttr -k off ".v";`): no value to keep.
             return Ok(());
+        }
+        if let Some((array, _)) = name.strip_suffix(']').and_then(|n| n.rsplit_once('[')) {
+            let key = (node, array.to_string());
+            match &type_name {
+                Some(t) => {
+                    self.array_types.insert(key, t.clone());
+                }
+                None => type_name = self.array_types.get(&key).cloned(),
+            }
         }
         let value = read_value(type_name.as_deref(), &values, line)?;
         self.nodes[node].attrs.push(Attr { name, value, line });

@@ -1375,3 +1375,29 @@ fn xgen_guides_shape_the_strands_at_their_length() {
     let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).unwrap();
     assert!(w.contains("1 guide(s) on 1 of its 1 patch(es)") && !w.contains("straight along"), "{w}");
 }
+
+#[test]
+fn face_chunks_after_the_first_take_its_polyfaces_type() {
+    // Maya writes `-type "polyFaces"` on the first chunk of a long face list only
+    // (`.fc[0:499]`, then `.fc[500:999]` with no type): the plane's two quads in two chunks.
+    let mesh = |second: &str| {
+        format!(
+            "createNode mesh -n m;\n\tsetAttr -s 6 \".vt[0:5]\" -2 0 1 0 0 1 2 0 1 -2 0 -1 0 0 -1 2 0 -1;\n\
+             \tsetAttr -s 7 \".ed[0:6]\" 0 1 0 1 2 0 3 4 0 4 5 0 0 3 0 1 4 0 2 5 0;\n\
+             \tsetAttr \".fc[0]\" -type \"polyFaces\"\n\t\tf 4 0 5 -3 -5 ;\n\
+             \tsetAttr \".fc[1]\"{second}\n\t\tf 4 1 6 -4 -6 ;\n"
+        )
+    };
+    for second in ["", " -type \"polyFaces\""] {
+        let s = read(&mesh(second)).unwrap();
+        let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+        assert_eq!((m.positions.len(), m.indices.len()), (6, 4), "{second:?}");
+    }
+    // A face list never given its type is still an error naming its line, and so is a
+    // malformed chunk that inherits the type.
+    let untyped = "createNode mesh -n m;\nsetAttr \".vt[0:1]\" 0 0 0 1 0 0;\nsetAttr \".fc[0]\"\n f 1 0;\n";
+    let e = read(untyped).unwrap_err().to_string();
+    assert!(e.starts_with("dir/scene.ma: line 3:") && e.contains("polyFaces"), "{e}");
+    let e = read(&mesh("").replace("f 4 1 6", "f 9 1 6")).unwrap_err().to_string();
+    assert!(e.starts_with("dir/scene.ma: line 7:") && e.contains("polyFaces"), "{e}");
+}
