@@ -353,9 +353,10 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                 };
                 push_mesh(out, mesh, surface_material(&prim, time, notes).map_err(what)?, transform);
             }
-            light => {
-                out.contents.lights.push(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?)
-            }
+            light => out
+                .contents
+                .lights
+                .extend(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?),
         }
     }
     let chosen = match &options.camera {

@@ -1,7 +1,8 @@
 //! What every layer goes through before the `openusd` crate reads it: checks that keep
 //! hostile text from overflowing the crate parser's stack or sending its path walks round
-//! forever, the number forms of the USDA grammar the crate's tokenizer does not accept,
-//! and the file resolver that applies both to every layer a stage opens.
+//! forever, the parts of the USDA grammar the crate's parser does not accept (number forms,
+//! legacy type names, `//` comments, unsigned arrays, asset-valued time samples), and the
+//! file resolver that applies all of them to every layer a stage opens.
 
 use openusd::ar;
 use std::io;
@@ -26,7 +27,8 @@ pub enum LayerKind {
 }
 
 /// Checks a layer's bytes and returns them as the crate should read them: text layers
-/// with their numbers rewritten by [`normalize_numbers`] (line numbers unchanged), binary
+/// rewritten by [`normalize_numbers`], [`legacy_type_names`] and [`grammar_gaps`] (line
+/// numbers unchanged), binary
 /// crate files (their sizes checked by [`super::crate_file::check`]) and packages as they
 /// are (a package's layers checked by `check_package`).
 pub fn prepare_layer(bytes: Vec<u8>) -> Result<(LayerKind, Vec<u8>), String> {
@@ -41,7 +43,7 @@ pub fn prepare_layer(bytes: Vec<u8>) -> Result<(LayerKind, Vec<u8>), String> {
     let text = std::str::from_utf8(&bytes)
         .map_err(|_| "neither USD text nor a binary `PXR-USDC` layer nor a `.usdz` package".to_string())?;
     check_text(text)?;
-    Ok((LayerKind::Text, legacy_type_names(&normalize_numbers(text)).into_bytes()))
+    Ok((LayerKind::Text, grammar_gaps(&legacy_type_names(&normalize_numbers(text))).into_bytes()))
 }
 
 /// Checks a text layer before the crate parses it: a `#usda` header, at most
@@ -70,7 +72,7 @@ fn check_text(text: &str) -> Result<(), String> {
 
 /// Calls `visit(bytes, index, line)` for every byte of `text` outside comments, strings
 /// (single, double and triple quoted) and asset paths (`@…@`, `@@@…@@@`); a path literal
-/// (`<…>`) is visited at its `<` and skipped to its `>`.
+/// (`<…>`) is visited at its `<` and skipped to its `>`, a `//` comment at its first `/`.
 fn scan(text: &str, mut visit: impl FnMut(&[u8], usize, u32)) {
     let b = text.as_bytes();
     let (mut i, mut line) = (0usize, 1u32);
@@ -95,7 +97,10 @@ fn scan(text: &str, mut visit: impl FnMut(&[u8], usize, u32)) {
     while i < b.len() {
         match b[i] {
             b'\n' => line += 1,
-            b'#' => {
+            c @ (b'#' | b'/') if c == b'#' || b.get(i + 1) == Some(&b'/') => {
+                if c == b'/' {
+                    visit(b, i, line);
+                }
                 while i < b.len() && b[i] != b'\n' {
                     i += 1;
                 }
@@ -236,6 +241,82 @@ pub fn legacy_type_names(text: &str) -> String {
     for (from, to, with) in edits {
         out.push_str(&text[last..from]);
         out.push_str(with);
+        last = to;
+    }
+    out.push_str(&text[last..]);
+    out
+}
+
+/// Array types the crate cannot parse and the type it reads their values as: tress reads
+/// no unsigned array, so widening one keeps the layer readable and loses nothing it uses.
+const ARRAY_STAND_INS: [(&str, &str); 2] = [("uint[]", "int64[]"), ("uint64[]", "int64[]")];
+
+/// Rewrites three forms of the USDA grammar (Pixar's `Sdf` text format) the crate's parser
+/// rejects, outside strings and paths, so the rest of the layer reads:
+/// - `//` line comments (the format's lexer skips `#`, `//` and `/* */` comments; the
+///   crate only `#` and `/* */`) become `# ` comments;
+/// - `uint[]` and `uint64[]` attributes become `int64[]`;
+/// - the `@path@` samples of an `asset` attribute's `.timeSamples` (an IES profile or a
+///   volume file per frame; the crate reads no asset there) become the strings `"path"`.
+///
+/// No edit adds or removes a line break, so errors keep their line numbers.
+pub fn grammar_gaps(text: &str) -> String {
+    let ident = |c: u8| c.is_ascii_alphanumeric() || c == b'_' || c == b':';
+    let mut edits: Vec<(usize, usize, String)> = Vec::new();
+    let mut asset_blocks: Vec<usize> = Vec::new();
+    scan(text, |b, i, _| {
+        if b[i] == b'/' && b.get(i + 1) == Some(&b'/') {
+            edits.push((i, i + 2, "# ".into()));
+            return;
+        }
+        if i > 0 && ident(b[i - 1]) {
+            return;
+        }
+        for (from, to) in ARRAY_STAND_INS {
+            if b[i..].starts_with(from.as_bytes()) && b.get(i + from.len()).is_some_and(|c| c.is_ascii_whitespace()) {
+                edits.push((i, i + from.len(), to.into()));
+            }
+        }
+        if b[i..].starts_with(b"asset") && b.get(i + 5).is_some_and(|c| *c == b' ' || *c == b'\t') {
+            // `asset NAME.timeSamples = {` on one line.
+            let line_end = b[i..].iter().position(|&c| c == b'\n').map_or(b.len(), |n| i + n);
+            let decl: String = String::from_utf8_lossy(&b[i + 5..line_end]).split_whitespace().collect();
+            if decl.contains(".timeSamples={") {
+                asset_blocks.push(i + 5 + b[i + 5..line_end].iter().position(|&c| c == b'{').unwrap_or(0));
+            }
+        }
+    });
+    let b = text.as_bytes();
+    for open in asset_blocks {
+        // Inside the block only times, `:`, `,`, `None` and the asset paths stand.
+        let mut j = open + 1;
+        while j < b.len() && b[j] != b'}' {
+            if b[j] != b'@' {
+                j += 1;
+                continue;
+            }
+            let delim = if b[j..].starts_with(b"@@@") { 3 } else { 1 };
+            let body = j + delim;
+            let Some(len) = b[body..].windows(delim).position(|w| w.iter().all(|&c| c == b'@')) else { break };
+            let path = &b[body..body + len];
+            // A path holding what a string would read otherwise is left for the crate to refuse.
+            if !path.iter().any(|&c| matches!(c, b'"' | b'\\' | b'\n')) {
+                let quote = "\"".repeat(delim);
+                edits.push((j, body, quote.clone()));
+                edits.push((body + len, body + len + delim, quote));
+            }
+            j = body + len + delim;
+        }
+    }
+    if edits.is_empty() {
+        return text.to_string();
+    }
+    edits.sort_by_key(|e| e.0);
+    let mut out = String::with_capacity(text.len());
+    let mut last = 0;
+    for (from, to, with) in edits {
+        out.push_str(&text[last..from]);
+        out.push_str(&with);
         last = to;
     }
     out.push_str(&text[last..]);

@@ -1,5 +1,5 @@
-//! UsdLux lights: `DistantLight`, `SphereLight`, `RectLight`, `DiskLight`, `DomeLight` and
-//! `DomeLight_1`.
+//! UsdLux lights: `DistantLight`, `SphereLight`, `RectLight`, `DiskLight`, `CylinderLight`,
+//! `DomeLight` and `DomeLight_1`.
 //!
 //! UsdLux gives every light the same emission: `inputs:color × inputs:intensity ×
 //! 2^inputs:exposure` is the radiance of its surface (UsdLux's `LightAPI`), divided by the
@@ -8,7 +8,12 @@
 //! unnormalized one's disk radiate it instead, far darker): a delta light without an
 //! authored `inputs:angle`, a disk of that angular diameter with one. Lights
 //! shine along their local −Z; a rect light is `width × height` in its local XY plane, a
-//! disk light of radius `radius` is drawn as the square of the same area and emission.
+//! disk light of radius `radius` is drawn as the square of the same area and emission. A
+//! cylinder light (`length` along its local X, `radius`, emitting from its side only) is
+//! drawn as a row of spheres of its radius along its axis: `length / 2·radius` such spheres
+//! have exactly its side's area (n · 4πr² = 2πr · length); when the count is rounded to a
+//! whole number, their radius is set so their area (and so, at the cylinder's radiance,
+//! their power) is still the side's.
 //!
 //! A dome's `inputs:texture:file` (latitude-longitude, `texture:format` `automatic` or
 //! `latlong`) is an environment map times the emission (read when the scene is prepared), oriented as UsdLux specifies after
@@ -28,8 +33,12 @@ use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
 
 /// The light types this module reads.
-pub const LIGHT_TYPES: [&str; 6] =
-    ["DistantLight", "SphereLight", "RectLight", "DiskLight", "DomeLight", "DomeLight_1"];
+pub const LIGHT_TYPES: [&str; 7] =
+    ["DistantLight", "SphereLight", "RectLight", "DiskLight", "CylinderLight", "DomeLight", "DomeLight_1"];
+
+/// Most spheres a cylinder light is drawn with (a cylinder longer than this many diameters
+/// gets spheres larger than its radius, so that their area still matches).
+const MAX_CYLINDER_SPHERES: usize = 64;
 
 /// An `inputs:` attribute, or the same name without the prefix as lights authored before
 /// UsdLux took it (USD 21.02) spell it.
@@ -40,8 +49,9 @@ fn input(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<openusd::sdf::Va
     }
 }
 
-/// The light `prim` of type `kind`, placed by `transform` (local to world); `z_up` when the
-/// stage's up axis is Z (for `DomeLight_1`'s `poleAxis = "scene"`).
+/// The light `prim` of type `kind`, placed by `transform` (local to world), as the lights
+/// tress draws it with (one, but a cylinder's row of spheres); `z_up` when the stage's up
+/// axis is Z (for `DomeLight_1`'s `poleAxis = "scene"`).
 pub fn read_light(
     prim: &Prim,
     kind: &str,
@@ -49,7 +59,7 @@ pub fn read_light(
     time: TimeCode,
     z_up: bool,
     notes: &mut Notes,
-) -> Res<LightSource> {
+) -> Res<Vec<LightSource>> {
     let num = |name: &str, d: f32| -> Res<f32> {
         let x = number(input(prim, name, time)?, name)?.map_or(d, |x| x as f32);
         anyhow::ensure!(x.is_finite(), "`inputs:{name}` must be finite");
@@ -77,7 +87,11 @@ pub fn read_light(
         anyhow::ensure!(x >= 0.0, "`inputs:{name}` must not be negative");
         Ok(x)
     };
-    Ok(LightSource::Inline(match kind {
+    if kind == "CylinderLight" {
+        let (length, radius) = (size("length", 1.0)?, size("radius", 0.5)?);
+        return Ok(cylinder_spheres(transform, length, radius, emission, normalize));
+    }
+    Ok(vec![LightSource::Inline(match kind {
         "DistantLight" => {
             let direction = transform.transform_vector3(Vec3::Z).normalize_or(Vec3::Y);
             // Irradiance is the emission whatever the angle (as USD's Storm and RenderMan
@@ -115,7 +129,7 @@ pub fn read_light(
                         .placement
                         .rotated(crate::math::orthogonal_part(transform) * pole)
                         .seen_by_camera(camera_visibility);
-                    return Ok(LightSource::File(map));
+                    return Ok(vec![LightSource::File(map)]);
                 }
                 None => Light::Environment { radiance: emission, camera_visibility },
             }
@@ -144,7 +158,41 @@ pub fn read_light(
             let radiance = if normalize && area > 0.0 { emission / area } else { emission };
             Light::Quad { corner, edge_u, edge_v, radiance }
         }
-    }))
+    })])
+}
+
+/// A cylinder light (`length` along its local X, `radius`, centred on its origin, emitting
+/// `emission` from its side, per unit area when `normalize`) as a row of spheres along its
+/// placed axis with the side's area and power (the module docs).
+fn cylinder_spheres(
+    transform: &Affine3A,
+    length: f32,
+    radius: f32,
+    emission: Vec3,
+    normalize: bool,
+) -> Vec<LightSource> {
+    let axis = transform.transform_vector3(Vec3::X);
+    let length = length * axis.length();
+    // The radius scales with the transform's two other axes.
+    let radius =
+        radius * (transform.transform_vector3(Vec3::Y).length() * transform.transform_vector3(Vec3::Z).length()).sqrt();
+    let side = std::f32::consts::TAU * radius * length;
+    let n = if radius > 0.0 {
+        (length / (2.0 * radius)).round().clamp(1.0, MAX_CYLINDER_SPHERES as f32) as usize
+    } else {
+        1
+    };
+    // Spheres with the side's area in all: n · 4π r_s² = 2π r · length.
+    let r = if n > 0 && side > 0.0 { (side / (4.0 * std::f32::consts::PI * n as f32)).sqrt() } else { radius };
+    let radiance = if normalize && side > 0.0 { emission / side } else { emission };
+    let centre = transform.transform_point3(Vec3::ZERO);
+    let step = axis.normalize_or(Vec3::X) * (length / n as f32);
+    (0..n)
+        .map(|k| {
+            let center = centre + step * (k as f32 + 0.5 - 0.5 * n as f32);
+            LightSource::Inline(Light::Sphere { center, radius: r, radiance })
+        })
+        .collect()
 }
 
 /// A dome's texture as a map in its own frame (before its transform), times `emission`;

@@ -266,6 +266,44 @@ fn the_number_rewrite_leaves_strings_paths_comments_and_names_alone() {
     );
 }
 
+#[test]
+fn slash_comments_unsigned_arrays_and_asset_samples_are_read() {
+    let body = r#"// Written by a tool that comments C-style: don't stop here.
+def BasisCurves "C" { // the strands
+        uniform token type = "linear"
+        uint[] arnold:node_idxs = [0, 4000000000]
+        uint64[] ids = [1]
+        int[] curveVertexCounts = [2]
+        point3f[] points = [(0, 0, 0), (0, 2, 0)] // root, tip
+        float[] widths = [0.5] (interpolation = "constant")
+        asset file.timeSamples = {
+            1: @./a//b.ies@,
+            2: @@,
+            3: @@@c.vdb@@@,
+        }
+        rel r = </C>
+    }"#;
+    let s = read_body(body);
+    let c = strands(&s, 0);
+    assert_eq!((point(c, 0), point(c, 1)), (Vec3::ZERO, Vec3::new(0.0, 2.0, 0.0)));
+    assert_eq!(c.points[0][3], 0.25);
+    let text = format!("#usda 1.0\n{body}");
+    let fixed = layer::grammar_gaps(&text);
+    assert_eq!(fixed.lines().count(), text.lines().count());
+    assert!(
+        fixed.contains("{ #  the strands") && fixed.contains("\"./a//b.ies\"") && fixed.contains("\"\"\"c.vdb\"\"\""),
+        "{fixed}"
+    );
+    // The crate alone refuses each form; the rewrite is what reads it.
+    for one in
+        ["def \"A\" { // note\n}", "def \"A\" { uint[] a = [1] }", "def \"A\" { asset a.timeSamples = { 1: @x.ies@ } }"]
+    {
+        let text = format!("#usda 1.0\n{one}\n");
+        assert!(openusd::usda::parser::Parser::new(&text).parse().is_err(), "{one}");
+        assert!(openusd::usda::parser::Parser::new(&layer::grammar_gaps(&text)).parse().is_ok(), "{one}");
+    }
+}
+
 const ANIMATED: &str = r#"def BasisCurves "Hair" {
     uniform token type = "linear"
     int[] curveVertexCounts.timeSamples = { 0: [2], 10: [2], 20: [3] }
@@ -421,6 +459,48 @@ def DomeLight "Backdrop" { float inputs:intensity = 2 double primvars:arnold:cam
     assert!(s.warnings.iter().any(|w| w.contains("dome texture `sky.exr` is missing")), "{:?}", s.warnings);
     // Arnold-USD's camera weight: hidden from the camera, lighting as before.
     assert_eq!(s.contents.lights[6], Light::Environment { radiance: Vec3::splat(2.0), camera_visibility: 0.0 }.into());
+}
+
+#[test]
+fn cylinder_lights_are_rows_of_spheres_with_their_side_area_and_power() {
+    let body = r#"
+def CylinderLight "Tube" {
+    float inputs:length = 4
+    float inputs:radius = 0.5
+    float inputs:intensity = 3
+    bool inputs:normalize = 1
+    double3 xformOp:translate = (0, 2, 0)
+    float xformOp:rotateZ = 90
+    uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateZ"]
+}
+def CylinderLight "Stub" { float inputs:length = 1.5 float inputs:radius = 0.5 }
+"#;
+    let s = read_body(body);
+    let spheres = |range: std::ops::Range<usize>| -> Vec<(Vec3, f32, Vec3)> {
+        s.contents.lights[range]
+            .iter()
+            .map(|l| match l {
+                LightSource::Inline(Light::Sphere { center, radius, radiance }) => (*center, *radius, *radiance),
+                other => panic!("{other:?}"),
+            })
+            .collect()
+    };
+    // 4 long, radius 0.5: four spheres of radius 0.5 (4 · 4π · 0.25 = 2π · 0.5 · 4), their
+    // centres along the turned axis (+Y) from y = 0.5 to 3.5, radiance 3 over the side's 4π.
+    assert_eq!(s.contents.lights.len(), 4 + 2);
+    let tube = spheres(0..4);
+    for (k, (c, r, radiance)) in tube.iter().enumerate() {
+        assert!((*c - Vec3::new(0.0, 0.5 + k as f32, 0.0)).length() < 1e-5, "{c}");
+        assert!((r - 0.5).abs() < 1e-6);
+        assert!((*radiance - Vec3::splat(3.0 / (4.0 * std::f32::consts::PI))).length() < 1e-6);
+    }
+    // 1.5 long: rounded to two spheres, smaller so that their area is still the side's,
+    // at the unnormalized radiance 1.
+    let stub = spheres(4..6);
+    let area: f32 = stub.iter().map(|(_, r, _)| 4.0 * std::f32::consts::PI * r * r).sum();
+    assert!((area - std::f32::consts::TAU * 0.5 * 1.5).abs() < 1e-4, "{area}");
+    assert!(stub.iter().all(|(_, _, l)| *l == Vec3::ONE));
+    assert!((stub[0].0.x + 0.375).abs() < 1e-6 && (stub[1].0.x - 0.375).abs() < 1e-6);
 }
 
 #[test]
