@@ -1062,7 +1062,10 @@ fn xgen_collections_grow_their_density_and_length_on_the_bound_mesh() {
     assert_eq!(f.description.density, 800);
     assert_eq!((f.description[Scalar::Length].value, f.description[Scalar::BaseWidth].value), (0.75, 0.02));
     let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).expect("one warning for it");
-    assert!(w.contains("NoiseFXModule") && w.contains("RandomGenerator.mask") && w.contains("guides"), "{w}");
+    assert!(
+        w.contains("Noise1 (as Scraggle 0.00)") && w.contains("RandomGenerator.mask") && w.contains("no guides"),
+        "{w}"
+    );
 
     let grown = grow_entry(&s, f);
     let n = grown.strands.strand_count();
@@ -1373,7 +1376,71 @@ fn xgen_guides_shape_the_strands_at_their_length() {
         assert!((mid - root - Vec3::new(0.0, 0.375, 0.0)).length() < 0.02, "{root} mid {mid}");
     }
     let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).unwrap();
-    assert!(w.contains("1 guide(s) on 1 of its 1 patch(es)") && !w.contains("straight along"), "{w}");
+    assert!(w.contains("1 guide(s) on 1 of its 1 patch(es)") && !w.contains("along the normal"), "{w}");
+}
+
+/// Reads [`XGEN_SCENE`] with a collection file whose FX sections are `fx`, and grows its
+/// fur: the warning on the description and the strands.
+fn xgen_fx(fx: &str) -> (String, crate::geometry::StrandSet) {
+    let dir = tempfile::tempdir().unwrap();
+    let ma = dir.path().join("scene.ma");
+    std::fs::write(&ma, XGEN_SCENE).unwrap();
+    std::fs::write(dir.path().join("scene__collection1.xgen"), xgen_text("50.0", "", fx, "")).unwrap();
+    let s = read_maya(&ma, None, None).unwrap();
+    let w = s.warnings.iter().find(|w| w.contains("description1: approximated")).unwrap().clone();
+    (w, grow_entry(&s, &s.contents.fur[0]).strands)
+}
+
+/// Each strand's root and tip.
+fn roots_and_tips(set: &crate::geometry::StrandSet) -> Vec<(Vec3, Vec3)> {
+    (0..set.strand_count()).map(|k| (set.position(set.offsets[k]), set.position(set.offsets[k + 1] - 1))).collect()
+}
+
+#[test]
+fn xgen_cut_shortens_the_strands_and_coils_are_named() {
+    let cut = "CutFXModule\n\tactive\t\t\ttrue\n\tmask\t\t\t0.8\n\tname\t\t\tCut1\n\tamount\t\t\trand(0.2,0.3)\n\tendAttrs\n\n\
+               CoilFXModule\n\tname\t\t\tCoil1\n\tcount\t\t\t0.1\n\tradius\t\t\t0.1\n\tendAttrs\n\n";
+    let (w, set) = xgen_fx(cut);
+    // 0.75 long, less 0.8 × the mean of rand(0.2, 0.3): 0.55, straight up.
+    assert!(set.strand_count() > 300);
+    for (root, tip) in roots_and_tips(&set) {
+        assert!((tip - root - Vec3::new(0.0, 0.55, 0.0)).length() < 1e-4, "{root} -> {tip}");
+    }
+    assert!(
+        w.contains("FX modules applied as Maya Fur: Noise1 (as Scraggle 0.00), Cut1 (cut 0.200 from the tip)"),
+        "{w}"
+    );
+    assert!(w.contains("FX modules not applied: Coil1 (no Maya Fur counterpart)"), "{w}");
+    // An expression the reader cannot evaluate leaves its module out, said.
+    let (w, set) = xgen_fx("CutFXModule\n\tname\t\t\tCut1\n\tamount\t\t\t$a*2\n\tendAttrs\n\n");
+    assert!(w.contains("Cut1 (amount an expression)"), "{w}");
+    assert!(roots_and_tips(&set).iter().all(|(r, t)| ((*t - *r).length() - 0.75).abs() < 1e-4));
+}
+
+#[test]
+fn xgen_noise_bends_and_clumping_gathers_the_strands() {
+    // Noise of magnitude 0.3 (its scale 0.5 to 1 along the strand, mean 0.75) on strands
+    // 0.75 long: Scraggle 2 × 0.225 / (π 0.75) = 0.19.
+    let noise = "NoiseFXModule\n\tname\t\t\tNoise2\n\tmagnitude\t\t0.3\n\tfrequency\t\t2.0\n\
+                 \tmagnitudeScale\t\trampUI(0.0,0.5,1:1.0,1.0,1)\n\tendAttrs\n\n";
+    let (w, set) = xgen_fx(noise);
+    assert!(w.contains("Noise2 (as Scraggle 0.19)"), "{w}");
+    let pairs = roots_and_tips(&set);
+    let sideways =
+        pairs.iter().map(|(r, t)| Vec3::new(t.x - r.x, 0.0, t.z - r.z).length()).sum::<f32>() / pairs.len() as f32;
+    assert!(sideways > 0.03, "tips {sideways} off the normal on average");
+    // Clumping 1 at the tip: every tip on its clump centre's, about √(2 × 8) = 4 squared
+    // clumps over the 8-unit plane.
+    let clump = "ClumpingFXModule\n\tname\t\t\tClumping1\n\tclump\t\t\t1.0\n\tptDensity\t\t2.0\n\
+                 \tclumpScale\t\trampUI(0.0,0.0,1:1.0,1.0,1)\n\tendAttrs\n\n";
+    let (w, set) = xgen_fx(clump);
+    assert!(w.contains("Clumping1 (as Clumping 1.00, 4 clumps across)"), "{w}");
+    let pairs = roots_and_tips(&set);
+    let mut tips: Vec<[i64; 3]> =
+        pairs.iter().map(|(_, t)| [t.x, t.y, t.z].map(|c| (c * 1e4).round() as i64)).collect();
+    tips.sort_unstable();
+    tips.dedup();
+    assert!(pairs.len() > 300 && tips.len() <= 40 && tips.len() >= 4, "{} tips of {}", tips.len(), pairs.len());
 }
 
 #[test]

@@ -368,7 +368,7 @@ impl Reader<'_> {
             let guided: Vec<u32> =
                 meshes.iter().filter_map(|m| m.3.as_ref().map(|g| g.0.strand_count() as u32)).collect();
             notes.push(match guided.iter().sum::<u32>() {
-                0 => "straight along the normal (no guides)".to_string(),
+                0 => "along the normal (no guides)".to_string(),
                 n => format!(
                     "{n} guide(s) on {} of its {} patch(es) shape their strands (each the mean of the up to 3 nearest \
                      guides' shapes, weighted 1 − d/radius, at their lengths × length)",
@@ -376,9 +376,6 @@ impl Reader<'_> {
                     meshes.len()
                 ),
             });
-            if !cd.fx_modules.is_empty() {
-                notes.push(format!("FX modules not applied ({})", cd.fx_modules.join(", ")));
-            }
             if !cd.maps.is_empty() {
                 notes.push(format!("maps not read ({})", cd.maps.join(", ")));
             }
@@ -388,18 +385,28 @@ impl Reader<'_> {
                     cd.fallbacks.join(", ")
                 ));
             }
-            for (mesh, area, grows_on, guides) in meshes {
+            for (k, (mesh, area, grows_on, guides)) in meshes.into_iter().enumerate() {
                 let wanted = cd.density * area;
                 let count = wanted.round().min(MAX_COLLECTION_STRANDS as f64) as u32;
                 if wanted > MAX_COLLECTION_STRANDS as f64 {
                     notes.push(format!("{wanted:.0} strands cut to {MAX_COLLECTION_STRANDS}"));
                 }
-                // One straight segment serves a plain strand; a width profile needs points
-                // along the strand.
-                let segments = if width_profile.is_some() || guides.is_some() { SHAPED_SEGMENTS } else { 1 };
-                let mut desc = FurDescription { density: count, segments, ..FurDescription::default() };
+                let mut desc = FurDescription { density: count, ..FurDescription::default() };
                 // Under guides, XGen's Length scales the guides' lengths.
                 desc[Scalar::Length].value = cd.length as f32;
+                let length = cd.length * guides.as_ref().map_or(1.0, |g| mean_length(&g.0));
+                let (applied, not) = cd.apply_fx(&mut desc, area, length, guides.is_some());
+                // (The modules are the same on every mesh: said once.)
+                if k == 0 && !applied.is_empty() {
+                    notes.push(format!("FX modules applied as Maya Fur: {}", applied.join(", ")));
+                }
+                if k == 0 && !not.is_empty() {
+                    notes.push(format!("FX modules not applied: {}", not.join(", ")));
+                }
+                // One straight segment serves a plain strand; a width profile, guides or FX
+                // modules need points along the strand.
+                let shaped = width_profile.is_some() || guides.is_some() || !applied.is_empty();
+                desc.segments = if shaped { SHAPED_SEGMENTS } else { 1 };
                 desc[Scalar::BaseWidth].value = cd.width as f32;
                 desc[Scalar::TipWidth].value = cd.width as f32;
                 // Maya Fur's curl 0.5 is straight (its node default 0 curls).
@@ -459,6 +466,17 @@ fn guide_attraction(guides: &StrandSet, mesh: &crate::geometry::TriangleMesh) ->
         influence: 1e9,
         threshold_length: 0.0,
     }
+}
+
+/// The mean length of the strands of `set` (polylines through their points).
+fn mean_length(set: &StrandSet) -> f64 {
+    let total: f64 = (0..set.strand_count())
+        .map(|k| {
+            let (a, b) = (set.offsets[k], set.offsets[k + 1]);
+            (a + 1..b).map(|i| f64::from((set.position(i) - set.position(i - 1)).length())).sum::<f64>()
+        })
+        .sum();
+    total / set.strand_count().max(1) as f64
 }
 
 /// Which triangles of a mesh grow strands, from a patch's face list `ids` (Ptex face ids,

@@ -11,7 +11,9 @@
 //! - `RandomGenerator` `density`: strands per unit area (scene units), so the fur's
 //!   Density (strands over the whole mesh) is density × the mesh's world area;
 //! - `SplinePrimitive` `length` and `width` (the strand's diameter, root and tip alike).
-//!   Other primitives (cards, archives, spheres) are not strands and are left out, said.
+//!   Other primitives (cards, archives, spheres) are not strands and are left out, said;
+//! - the FX modules that have a Maya Fur counterpart (cut, noise, clumping:
+//!   [`CollectionDescription::apply_fx`]).
 //!
 //! The file is plain text: a section name on a line of its own (`Palette`, `Description`,
 //! `SplinePrimitive`, `RandomGenerator`, `NoiseFXModule`, ...), then its attributes, one a
@@ -21,6 +23,7 @@
 //! and plain numbers are read, anything else (maps, other expressions) falls back to the
 //! value a new description is written with, said.
 
+use crate::fur::{FurDescription, Scalar};
 use std::path::Path;
 
 /// A description's `length` and `width` when its file's value cannot be read: the values
@@ -56,13 +59,59 @@ pub struct CollectionDescription {
     /// The primitive section of the description (`SplinePrimitive`, `CardPrimitive`,
     /// `ArchivePrimitive`, ...), if any.
     pub primitive: Option<String>,
-    /// The FX modules of the description (`NoiseFXModule`, ...), not applied.
-    pub fx_modules: Vec<String>,
+    /// The FX modules of the description (`NoiseFXModule`, ...), in file order (XGen's
+    /// stack, first computed first); [`CollectionDescription::apply_fx`] maps them.
+    pub fx_modules: Vec<FxModule>,
     /// Attributes whose value reads a map (`map('${DESC}/...')`), as `Section.key`.
     pub maps: Vec<String>,
     /// Values that could not be read and fell back: `key (line N)`.
     pub fallbacks: Vec<String>,
 }
+
+/// One FX module section of a description, as written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FxModule {
+    /// The section's name: `NoiseFXModule`, `CutFXModule`, `ClumpingFXModule`, ...
+    pub kind: String,
+    /// Its attributes, key and value, in file order.
+    pub attrs: Vec<(String, String)>,
+}
+
+impl FxModule {
+    /// The module's `name` (its kind when it has none).
+    pub fn name(&self) -> &str {
+        self.value("name").unwrap_or(&self.kind)
+    }
+
+    fn value(&self, key: &str) -> Option<&str> {
+        self.attrs.iter().find(|a| a.0 == key).map(|a| a.1.as_str())
+    }
+
+    /// Attribute `key` as a number ([`fx_number`]), `default` when absent; `Err` names it
+    /// when it is an expression.
+    fn number(&self, key: &str, default: f64) -> Result<f64, String> {
+        match self.value(key) {
+            None => Ok(default),
+            Some(v) => fx_number(v).ok_or_else(|| format!("{key} an expression")),
+        }
+    }
+
+    /// The mean of ramp attribute `key` over the strand and its value at the tip, (1, 1)
+    /// when absent or not a ramp.
+    fn ramp_mean_and_tip(&self, key: &str) -> (f64, f64) {
+        match self.value(key).and_then(ramp) {
+            Some(r) => {
+                let n = PROFILE_POINTS - 1;
+                let mean = (0..=n).map(|k| ramp_at(&r, k as f64 / n as f64)).sum::<f64>() / (n + 1) as f64;
+                (mean, ramp_at(&r, 1.0))
+            }
+            None => (1.0, 1.0),
+        }
+    }
+}
+
+/// Most clumps across a description's mesh: Maya Fur's Clumping Frequency limit.
+const MAX_CLUMPING_FREQUENCY: f64 = 1000.0;
 
 /// One `Patch` record of a description: the geometry XGen grows it on and which faces.
 #[derive(Clone, Debug, PartialEq)]
@@ -78,6 +127,102 @@ pub struct Patch {
 const PROFILE_POINTS: usize = 33;
 
 impl CollectionDescription {
+    /// Maps the description's FX modules onto the Maya Fur `desc` grown on `area` (world
+    /// units squared) with strands `length` long, and says per module what was applied and
+    /// what not, in that order. With `guided`, the guides replace the strands' shape, so
+    /// only a cut applies. Each module's `mask` (a number, 1 when absent) scales its
+    /// effect; a module that is not `active`, or whose values are expressions other than
+    /// numbers, sliders and `rand(a, b)` (read as its mean, (a + b) / 2), is not applied.
+    ///
+    /// - `CutFXModule`: Autodesk's Cut modifier "specifies the amount of the primitive to be
+    ///   cut, starting at the tip": Length × (1 − mask × amount / length), at least 0.
+    /// - `NoiseFXModule`: Autodesk's Noise modifier displaces the control vertices by up to
+    ///   `magnitude` (times `magnitudeScale` along the strand; its mean is used), at
+    ///   `frequency` cycles per unit length, `correlation` between neighbours. As Maya
+    ///   Fur's Scraggle, which turns the strand by up to Scraggle × π over its length: a
+    ///   steady turn at that rate moves the tip sideways by Scraggle × π × length / 2, so
+    ///   Scraggle = 2 × mask × magnitude × mean scale / (π × length), at most 1; Scraggle
+    ///   Frequency = frequency × length (kinks along the strand), Scraggle Correlation =
+    ///   correlation.
+    /// - `ClumpingFXModule`: `clump` pulls strands to clump centres scattered at
+    ///   `ptDensity` per unit area, `clumpScale` the pull along the strand. As Maya Fur's
+    ///   clumping (about Clumping Frequency² centres over the mesh, the pull Clumping ×
+    ///   s^p at fraction s): Clumping Frequency = √(ptDensity × area), Clumping = mask ×
+    ///   clump × clumpScale(tip), at most 1, and p such that s^p has the ramp's mean over
+    ///   its tip value, 1 / (p + 1) (Clump Shape = −10 log10 p). Maya Fur has one level of
+    ///   clumps: only the first clumping module applies.
+    /// - Others (`CoilFXModule`: Maya Fur's curl bends a strand at most half a circle, no
+    ///   coil) are not applied.
+    pub fn apply_fx(
+        &self,
+        desc: &mut FurDescription,
+        area: f64,
+        length: f64,
+        guided: bool,
+    ) -> (Vec<String>, Vec<String>) {
+        let (mut applied, mut not) = (Vec::new(), Vec::new());
+        let mut clumped = false;
+        for fx in &self.fx_modules {
+            let name = fx.name();
+            let kind = fx.kind.as_str();
+            let skip = if fx.value("active") == Some("false") {
+                Some("inactive".to_string())
+            } else if guided && kind != "CutFXModule" {
+                Some("the guides give the shape".to_string())
+            } else if kind == "ClumpingFXModule" && clumped {
+                Some("Maya Fur has one level of clumps".to_string())
+            } else if !matches!(kind, "CutFXModule" | "NoiseFXModule" | "ClumpingFXModule") {
+                Some("no Maya Fur counterpart".to_string())
+            } else {
+                None
+            };
+            if let Some(why) = skip {
+                not.push(format!("{name} ({why})"));
+                continue;
+            }
+            let done = (|| -> Result<String, String> {
+                let mask = fx.number("mask", 1.0)?.clamp(0.0, 1.0);
+                Ok(match kind {
+                    "CutFXModule" => {
+                        let cut = mask * fx.number("amount", 0.0)?.max(0.0);
+                        let l = &mut desc[Scalar::Length].value;
+                        *l *= (1.0 - cut / length.max(f64::MIN_POSITIVE)).max(0.0) as f32;
+                        format!("{name} (cut {cut:.3} from the tip)")
+                    }
+                    "NoiseFXModule" => {
+                        let (magnitude, frequency) = (fx.number("magnitude", 0.0)?, fx.number("frequency", 1.0)?);
+                        let correlation = fx.number("correlation", 0.0)?;
+                        let (mean, _) = fx.ramp_mean_and_tip("magnitudeScale");
+                        let amplitude = (mask * magnitude * mean).abs();
+                        let scraggle = (2.0 * amplitude / (std::f64::consts::PI * length)).min(1.0);
+                        desc[Scalar::Scraggle].value = scraggle as f32;
+                        desc[Scalar::ScraggleFrequency].value = (frequency.abs() * length).min(1000.0) as f32;
+                        desc[Scalar::ScraggleCorrelation].value = correlation.clamp(0.0, 1.0) as f32;
+                        format!("{name} (as Scraggle {scraggle:.2})")
+                    }
+                    _ => {
+                        let (clump, density) = (fx.number("clump", 0.0)?, fx.number("ptDensity", 0.0)?);
+                        let (mean, tip) = fx.ramp_mean_and_tip("clumpScale");
+                        let amount = (mask * clump * tip).clamp(0.0, 1.0);
+                        // 1 / (p + 1) = mean / tip.
+                        let p = if mean > 0.0 { (tip / mean - 1.0).max(1e-6) } else { 1.0 };
+                        let frequency = (density.max(0.0) * area).sqrt().min(MAX_CLUMPING_FREQUENCY);
+                        desc[Scalar::Clumping].value = amount as f32;
+                        desc[Scalar::ClumpingFrequency].value = frequency as f32;
+                        desc[Scalar::ClumpShape].value = (-10.0 * p.log10()).clamp(-10.0, 10.0) as f32;
+                        clumped = true;
+                        format!("{name} (as Clumping {amount:.2}, {frequency:.0} clumps across)")
+                    }
+                })
+            })();
+            match done {
+                Ok(a) => applied.push(a),
+                Err(e) => not.push(format!("{name} ({e})")),
+            }
+        }
+        (applied, not)
+    }
+
     /// The width along the strand as a multiplier of `width`, at `PROFILE_POINTS` (33) evenly
     /// spaced fractions root to tip, or `None` when it is 1 throughout. Autodesk's XGen
     /// Spline attributes: Taper "controls the width of the tip relative to the root;
@@ -188,7 +333,7 @@ pub fn parse_collection(text: &str, path: &Path) -> Result<Vec<CollectionDescrip
                 });
             } else if let Some(d) = out.last_mut() {
                 if name.ends_with("FXModule") {
-                    d.fx_modules.push(name.clone());
+                    d.fx_modules.push(FxModule { kind: name.clone(), attrs: Vec::new() });
                 } else if name.ends_with("Primitive") {
                     d.primitive = Some(name.clone());
                 }
@@ -218,6 +363,12 @@ pub fn parse_collection(text: &str, path: &Path) -> Result<Vec<CollectionDescrip
         // The renderers' sections (previews' colours) make no strands.
         if !s.ends_with("Renderer") && value.split('#').next().is_some_and(|v| v.contains("map(")) {
             d.maps.push(format!("{s}.{key}"));
+        }
+        if s.ends_with("FXModule") {
+            if let Some(fx) = d.fx_modules.last_mut() {
+                fx.attrs.push((key.to_string(), value.to_string()));
+            }
+            continue;
         }
         match (s, key) {
             ("Description", "name") => d.name = value.to_string(),
@@ -275,6 +426,17 @@ fn face_ids(value: &str) -> Result<Vec<u32>, String> {
     Ok(ids)
 }
 
+/// An FX module's value: a number ([`number`]), or SeExpr's `rand(a, b)` read as its mean.
+fn fx_number(value: &str) -> Option<f64> {
+    let v = value.split('#').next().unwrap_or_default().trim();
+    if let Some(args) = v.strip_prefix("rand(").and_then(|r| r.strip_suffix(')')) {
+        let (a, b) = args.split_once(',')?;
+        let (a, b) = (a.trim().parse::<f64>().ok()?, b.trim().parse::<f64>().ok()?);
+        return Some(0.5 * (a + b)).filter(|m| m.is_finite());
+    }
+    number(value).filter(|x| x.is_finite())
+}
+
 /// A plain number, or the slider form XGen's UI writes, `$a=NUMBER;#MIN,MAX\n$a` (the
 /// `\n` as two characters, or a real newline).
 fn number(value: &str) -> Option<f64> {
@@ -309,7 +471,8 @@ mod tests {
         let d = parse_collection(text, Path::new("c.xgen")).unwrap();
         assert_eq!(d.len(), 1);
         assert_eq!((d[0].name.as_str(), d[0].density, d[0].length, d[0].width), ("d1", 12.5, NEW_LENGTH, 0.2));
-        assert_eq!(d[0].fx_modules, vec!["NoiseFXModule".to_string()]);
+        assert_eq!(d[0].fx_modules[0].kind, "NoiseFXModule");
+        assert_eq!(d[0].fx_modules[0].name(), "Noise1");
         assert_eq!(d[0].primitive.as_deref(), Some("SplinePrimitive"));
         assert_eq!(d[0].maps, vec!["SplinePrimitive.length".to_string()]);
         assert_eq!(d[0].fallbacks, vec!["length (line 9)".to_string()]);
