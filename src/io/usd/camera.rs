@@ -10,8 +10,14 @@
 //! tress's default width. `clippingRange` (near, far), the schema's (1, 10⁶) when
 //! not authored, clips along the view direction, in the camera's units: a scale in the
 //! camera's transform scales the distances with it.
+//!
+//! Arnold's USD writer also stores the `persp_camera` parameters as `primvars:arnold:`
+//! primvars, and Arnold's reader applies them over the schema's attributes: `fov` (Arnold's
+//! horizontal field of view, in degrees) replaces the horizontal aperture's, and a camera
+//! with no transform operations of its own is placed by `position`, `look_at` and `up` (in
+//! its parent's space), as Arnold places it.
 
-use super::values::{number, short, token, value, Res};
+use super::values::{floats, number, short, token, value, vec3, Res};
 use super::Notes;
 use crate::scene::{CameraDesc, Film, FilmFit};
 use crate::world::RenderSettings;
@@ -48,15 +54,38 @@ pub fn read_camera(
         let width = RenderSettings::default().width;
         [width, ((width as f32 * v_ap / h_ap).round() as u32).clamp(1, 16 * width)]
     });
-    let film = Film { aperture: [h_ap / focal, v_ap / focal], fit: FilmFit::Horizontal };
+    let h_ratio = match arnold_number(prim, "fov", time)? {
+        Some(fov) => {
+            anyhow::ensure!(fov > 0.0 && fov < 180.0, "`primvars:arnold:fov` {fov} is not an angle between 0 and 180°");
+            2.0 * (0.5 * fov).to_radians().tan()
+        }
+        None => h_ap / focal,
+    };
+    let film = Film { aperture: [h_ratio, h_ratio * v_ap / h_ap], fit: FilmFit::Horizontal };
     anyhow::ensure!(
         film.aperture.iter().all(|a| a.is_finite() && *a > 0.0),
         "apertures {h_ap} × {v_ap} over focal length {focal} do not give a field of view"
     );
     let vfov = film.vfov(w, h);
-    let eye = transform.transform_point3(Vec3::ZERO);
-    let forward = transform.transform_vector3(-Vec3::Z);
-    let up = transform.transform_vector3(Vec3::Y);
+    let arnold_position = vec3(value(prim, "primvars:arnold:position", time)?, "primvars:arnold:position")?;
+    // `forward` is along the view, as long as the transform makes one unit of the camera's.
+    let (eye, forward, up) = match arnold_position
+        .filter(|_| value(prim, "xformOpOrder", time).ok().flatten().is_none())
+    {
+        Some(position) => {
+            let look_at = vec3(value(prim, "primvars:arnold:look_at", time)?, "primvars:arnold:look_at")?;
+            let up = vec3(value(prim, "primvars:arnold:up", time)?, "primvars:arnold:up")?;
+            // Arnold's defaults: looking down −Z with +Y up.
+            let (look_at, up) = (look_at.unwrap_or(position - Vec3::Z), up.unwrap_or(Vec3::Y));
+            let view = (look_at - position).normalize_or(-Vec3::Z);
+            (transform.transform_point3(position), transform.transform_vector3(view), transform.transform_vector3(up))
+        }
+        None => (
+            transform.transform_point3(Vec3::ZERO),
+            transform.transform_vector3(-Vec3::Z),
+            transform.transform_vector3(Vec3::Y),
+        ),
+    };
     anyhow::ensure!(
         eye.is_finite() && forward.length() > 0.0 && up.cross(forward).length() > 0.0,
         "its transform does not give a view direction and an up direction"
@@ -75,4 +104,19 @@ pub fn read_camera(
     );
     let clip = [near, far].map(|d| d * forward.length());
     Ok((CameraDesc { eye, target, up: up.normalize(), vfov, film: Some(film), clip }, [w, h]))
+}
+
+/// An Arnold parameter Arnold-USD writes as a `primvars:arnold:NAME` primvar: a number, or
+/// an array of one.
+fn arnold_number(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<f32>> {
+    let what = format!("primvars:arnold:{name}");
+    let v = value(prim, &what, time)?;
+    let x = match v {
+        Some(sdf::Value::FloatVec(_) | sdf::Value::DoubleVec(_) | sdf::Value::HalfVec(_)) => {
+            floats(v, &what)?.and_then(|v| v.first().copied())
+        }
+        other => number(other, &what)?.map(|x| x as f32),
+    };
+    anyhow::ensure!(x.is_none_or(f32::is_finite), "`{what}` must be finite");
+    Ok(x)
 }

@@ -385,6 +385,41 @@ fn cameras_give_the_view_field_of_view_and_image_aspect() {
 }
 
 #[test]
+fn arnold_camera_primvars_place_and_zoom_a_camera_without_transform_ops() {
+    // As Arnold-USD writes a camera: no xformOps, its place and lens in Arnold primvars
+    // (the apertures over the default 50 mm say 60°; Arnold renders the primvar's 20°).
+    let camera = r#"def Xform "Up" {
+    double3 xformOp:translate = (0, 10, 0)
+    uniform token[] xformOpOrder = ["xformOp:translate"]
+    def Camera "Arnold" {
+        float horizontalAperture = 57.735023
+        float verticalAperture = 28.867512
+        float[] primvars:arnold:fov = [20]
+        vector3f[] primvars:arnold:position = [(0, 2, 6)]
+        vector3f[] primvars:arnold:look_at = [(0, 2, 0)]
+        vector3f[] primvars:arnold:up = [(0, 1, 0)]
+    }
+    def Camera "Placed" {
+        vector3f[] primvars:arnold:position = [(5, 5, 5)]
+        double3 xformOp:translate = (0, 0, 3)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+    }
+}
+"#;
+    let pick = |path: &str| ImportOptions { frame: None, camera: Some(path.into()) };
+    let c = read_with("", camera, &pick("/Up/Arnold")).unwrap().camera.unwrap();
+    assert!((c.eye - Vec3::new(0.0, 12.0, 6.0)).length() < 1e-5, "{}", c.eye);
+    assert!((c.target - Vec3::new(0.0, 12.0, 5.0)).length() < 1e-5, "{}", c.target);
+    // 20° across a 2:1 image: the vertical field of view is 2 atan(tan 10° / 2).
+    let film = c.film.unwrap();
+    let want = 2.0 * (10f32.to_radians().tan() / 2.0).atan().to_degrees();
+    assert!((film.vfov(200, 100) - want).abs() < 1e-3, "{} {want}", film.vfov(200, 100));
+    // A camera with transform operations of its own is placed by them, not the primvar.
+    let c = read_with("", camera, &pick("/Up/Placed")).unwrap().camera.unwrap();
+    assert!((c.eye - Vec3::new(0.0, 10.0, 3.0)).length() < 1e-5, "{}", c.eye);
+}
+
+#[test]
 fn a_render_settings_resolution_widens_the_aperture_as_usd_fits_it() {
     let body = format!("{CAMERAS}\ndef RenderSettings \"R\" {{ uniform int2 resolution = (400, 400) }}");
     let s = read_with("", &body, &ImportOptions::default()).unwrap();
