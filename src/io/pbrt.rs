@@ -6,8 +6,9 @@
 //! `Identity`, `CoordinateSystem`/`CoordSysTransform`, `ReverseOrientation`,
 //! `AttributeBegin`/`End` (and the older `TransformBegin`/`End`), `Include`/`Import`
 //! (paths relative to the first file's directory, as pbrt resolves them), `Camera
-//! "perspective"` (`fov`, on the shorter image side), `Film` (`xresolution`,
-//! `yresolution`), `Sampler` (`pixelsamples`), `Integrator`, `LightSource` `distant`,
+//! "perspective"` (`fov` spanning the shorter image side, or the window `screenwindow` or
+//! `frameaspectratio` give, for the file's image size and one given later alike), `Film`
+//! (`xresolution`, `yresolution`), `Sampler` (`pixelsamples`), `Integrator`, `LightSource` `distant`,
 //! `infinite`, `point` and `spot`, `Material` and `MakeNamedMaterial`/`NamedMaterial`,
 //! and `Shape` `curve`, `trianglemesh`, `plymesh`, `sphere`, `disk`, `cylinder` and
 //! `bilinearmesh` (the last three as meshes, `surfaces.rs`).
@@ -71,7 +72,7 @@ use crate::geometry::curve::{cubic_point, CubicBasis};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::{Light, MapPlacement};
 use crate::scene::{
-    CameraDesc, EnvironmentFile, HairEntry, HairSource, LightSource, MeshEntry, MeshSource, Projection,
+    CameraDesc, EnvironmentFile, Film, FilmFit, HairEntry, HairSource, LightSource, MeshEntry, MeshSource, Projection,
 };
 use crate::shading::hair_bsdf::{color_from_sigma_a, Absorption, HairParams, PhysicalHair};
 use crate::shading::Material;
@@ -352,6 +353,10 @@ struct Parser {
     strands: Vec<(usize, StrandSet)>,
     camera_to_world: Option<DMat4>,
     fov: f64,
+    /// Half the width and height of the camera's screen window when the file sets one
+    /// (`screenwindow`, `frameaspectratio`), in units of the tangent of half `fov`; else
+    /// the window is 1 on the shorter image side, whatever the image size.
+    screen: Option<[f64; 2]>,
     /// pbrt's imaging ratio (Film `iso` / 100 × the camera's exposure time × v3's Film
     /// `scale`): the factor between scene radiance and pixel values.
     image_scale: f64,
@@ -385,6 +390,7 @@ impl Parser {
             strands: Vec::new(),
             camera_to_world: None,
             fov: 90.0,
+            screen: None,
             image_scale: 1.0,
             file_name: String::new(),
             unused: BTreeMap::new(),
@@ -552,6 +558,7 @@ impl Parser {
                 if !(self.fov > 0.0 && self.fov < 180.0) {
                     return Err((line, format!("fov {} is not between 0 and 180", self.fov)));
                 }
+                self.screen = self.screen_window(&p)?;
                 // pbrt-v4's exposure time is the shutter interval (Pharr et al. 4th ed. §5.4.2).
                 let exposure = p.float("shutterclose", 1.0)? - p.float("shutteropen", 0.0)?;
                 if !(exposure.is_finite() && exposure > 0.0) {
@@ -670,6 +677,36 @@ impl Parser {
             other => return Err((line, format!("unknown directive `{other}`"))),
         }
         Ok(())
+    }
+
+    /// The camera's screen window as half its width and height, when `p` sets one:
+    /// `screenwindow` (x min, x max, y min, y max), else `frameaspectratio` f, whose
+    /// window is [-f, f] × [-1, 1] when f > 1 and [-1, 1] × [-1/f, 1/f] otherwise, as pbrt
+    /// builds it. tress's camera looks through the window's centre, so an off-centre
+    /// window is drawn centred, with a warning.
+    fn screen_window(&mut self, p: &Params) -> Res<Option<[f64; 2]>> {
+        let line = p.line;
+        if let Some(w) = p.floats("screenwindow") {
+            let &[x0, x1, y0, y1] = w else {
+                return Err((line, format!("\"screenwindow\" has {} numbers, not 4", w.len())));
+            };
+            if !(w.iter().all(|v| v.is_finite()) && x1 > x0 && y1 > y0) {
+                return Err((line, format!("screenwindow [{x0} {x1} {y0} {y1}] is not a window")));
+            }
+            if (x0 + x1).abs() > 1e-6 * (x1 - x0) || (y0 + y1).abs() > 1e-6 * (y1 - y0) {
+                self.warnings
+                    .insert("camera `screenwindow` off centre: drawn centred (the window's size is kept)".into());
+            }
+            return Ok(Some([0.5 * (x1 - x0), 0.5 * (y1 - y0)]));
+        }
+        if !p.has("frameaspectratio") {
+            return Ok(None);
+        }
+        let f = p.float("frameaspectratio", 1.0)?;
+        match f.is_finite() && f > 0.0 {
+            true => Ok(Some(if f > 1.0 { [f, 1.0] } else { [1.0, 1.0 / f] })),
+            false => Err((line, format!("frameaspectratio {f} must be finite and positive"))),
+        }
     }
 
     fn apply(&mut self, m: DMat4) {
@@ -995,17 +1032,21 @@ impl Parser {
             let forward = c2w.transform_vector3(DVec3::Z).normalize_or(DVec3::Z);
             let up = c2w.transform_vector3(DVec3::Y).normalize_or(DVec3::Y);
             let right = c2w.transform_vector3(DVec3::X).normalize_or(DVec3::X);
-            let [w, h] = self.out.resolution.unwrap_or([1280, 720]).map(f64::from);
-            // pbrt's fov spans the shorter image side.
-            let vfov = match w >= h {
-                true => self.fov,
-                false => 2.0 * ((0.5 * self.fov.to_radians()).tan() * h / w).atan().to_degrees(),
-            };
+            let [w, h] = self.out.resolution.unwrap_or([1280, 720]);
+            // pbrt maps its screen window onto the image, and `fov` spans the window's
+            // extent of 2 (Pharr et al. 4th ed. §5.2): by default [-1, 1] on the
+            // shorter image side, the longer side following the image's aspect. As a
+            // film, that is an aperture of 2 tan(fov / 2) times the window, overscanned:
+            // the shorter side fits, for the file's image size and one given later alike.
+            let t = (0.5 * self.fov.to_radians()).tan();
+            let [sx, sy] = self.screen.unwrap_or([1.0, 1.0]);
+            let film = Film { aperture: [(2.0 * sx * t) as f32, (2.0 * sy * t) as f32], fit: FilmFit::Overscan };
             self.out.camera = Some(CameraDesc {
                 eye: eye.as_vec3(),
                 target: (eye + forward).as_vec3(),
                 up: up.as_vec3(),
-                vfov: vfov as f32,
+                vfov: film.vfov(w, h),
+                film: Some(film),
                 ..Default::default()
             });
             // pbrt shows camera +x on the right of the image; a right-handed camera shows

@@ -413,3 +413,44 @@ fn a_pinhole_cameras_focus_distance_is_not_reported_a_lens_is() {
     let w = warnings("\"float lensradius\" 0.2 \"float focaldistance\" 21");
     assert!(w.len() == 1 && w[0].contains("lensradius") && w[0].contains("depth of field"), "{w:?}");
 }
+
+/// pbrt's `fov` spans the shorter image side (its screen window is [-1, 1] there, Pharr et
+/// al. 4th ed. §5.2), so an image of another size (`-r`) refits the vertical field of
+/// view: a 40° fov is the vertical one at 2:1 and 1:1, and at 1:2 the horizontal one,
+/// the vertical one 2 atan(2 tan 20°). A screen window of its own is what `fov` spans.
+#[test]
+fn the_field_of_view_spans_the_shorter_side_of_any_image_size() {
+    let camera = |params: &str| {
+        let text = format!("Camera \"perspective\" \"float fov\" 40 {params}\nFilm \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100\nWorldBegin\n");
+        read(&text).unwrap()
+    };
+    let s = camera("");
+    let c = s.camera.unwrap();
+    let t = 20f32.to_radians().tan();
+    let tall = 2.0 * (2.0 * t).atan().to_degrees();
+    assert!((c.vfov - 40.0).abs() < 1e-4, "{}", c.vfov);
+    for ([w, h], want) in [([200, 100], 40.0), ([100, 100], 40.0), ([100, 200], tall)] {
+        assert!((c.vfov_for(w, h) - want).abs() < 1e-3, "{w}x{h}: {} {want}", c.vfov_for(w, h));
+    }
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    // A window twice as high as wide: `fov` spans its width of 2, so a 1:2 image sees
+    // 2 atan(2 tan 20°) vertically, a square one that window overscanned to its height.
+    let s = camera("\"float screenwindow\" [-1 1 -2 2]");
+    let c = s.camera.unwrap();
+    for ([w, h], want) in [([100, 200], tall), ([100, 100], tall), ([200, 100], tall)] {
+        assert!((c.vfov_for(w, h) - want).abs() < 1e-3, "{w}x{h}: {} {want}", c.vfov_for(w, h));
+    }
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    // A frame aspect ratio of 1/2 is that window too; an off-centre window is said.
+    let c = camera("\"float frameaspectratio\" 0.5").camera.unwrap();
+    assert!((c.vfov_for(100, 200) - tall).abs() < 1e-3, "{}", c.vfov_for(100, 200));
+    let w = camera("\"float screenwindow\" [0 2 -1 1]").warnings;
+    assert!(w.len() == 1 && w[0].contains("screenwindow") && w[0].contains("centre"), "{w:?}");
+    for bad in
+        ["\"float screenwindow\" [1 -1 -1 1]", "\"float screenwindow\" [-1 1 -1]", "\"float frameaspectratio\" 0"]
+    {
+        let text = format!("Camera \"perspective\" {bad}\nWorldBegin\n");
+        let e = read(&text).unwrap_err().to_string();
+        assert!(e.contains("line 1") && (e.contains("screenwindow") || e.contains("frameaspectratio")), "{e}");
+    }
+}
