@@ -247,11 +247,7 @@ impl Values<'_> {
                 false => Err(format!("an array at byte {payload} claims {count} elements")),
             };
         }
-        let room = self.b.len().saturating_sub(payload);
-        let bounded = |count: u64, item: u64, what: &str| match count.checked_mul(item).is_some_and(|n| n <= room) {
-            true => Ok(()),
-            false => Err(format!("{what} at byte {payload} claims {count} entries")),
-        };
+        let bounded = |count: u64, item: u64, what: &str| self.fits(count, item, payload, payload, what).map(|_| ());
         match kind {
             // Time samples: an offset to the times' representation, then an offset to
             // the count and representations of the values.
@@ -278,9 +274,7 @@ impl Values<'_> {
     /// value's representation, the next entry after it. Returns where it ends.
     fn dictionary(&self, at: u64, depth: usize) -> Result<u64, String> {
         let count = self.b.u64_at(at)?;
-        if count.checked_mul(12).is_none_or(|n| n > self.b.len().saturating_sub(at)) {
-            return Err(format!("a dictionary at byte {at} claims {count} entries"));
-        }
+        self.fits(count, 12, at, at, "a dictionary")?;
         let mut at = at + 8;
         for _ in 0..count {
             let rep_at = self.offset(at + 4)?;
@@ -322,9 +316,7 @@ impl Values<'_> {
             }
             let count = self.b.u64_at(at)?;
             at += 8;
-            let Some(bytes) = count.checked_mul(item).filter(|&n| n <= self.b.len().saturating_sub(at)) else {
-                return Err(format!("a list op at byte {start} claims {count} entries"));
-            };
+            let bytes = self.fits(count, item, at, start, "a list op")?;
             if kind == 35 {
                 for _ in 0..count {
                     at = self.dictionary(at + 24, depth + 1)?;
@@ -334,6 +326,15 @@ impl Values<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The bytes `count` items of `item` bytes take from `at`, when the file holds them;
+    /// otherwise an error naming `what` starts at byte `start` and the count it claims.
+    fn fits(&self, count: u64, item: u64, at: u64, start: u64, what: &str) -> Result<u64, String> {
+        count
+            .checked_mul(item)
+            .filter(|&n| n <= self.b.len().saturating_sub(at))
+            .ok_or_else(|| format!("{what} at byte {start} claims {count} entries"))
     }
 
     /// The position an `i64` offset at `at` leads to (the crate's recursive offsets are
