@@ -12,11 +12,12 @@
 //! - `Camera` to the camera ([`camera`]), `--camera PATH` or the first one;
 //! - UsdLux lights ([`lights`]);
 //! - UsdSkel: meshes and curves bound to a skeleton are skinned at the time code
-//!   (linear blend skinning by the bound `SkelAnimation`, [`skel`]).
+//!   (their blend shapes, then linear blend skinning, by the bound `SkelAnimation`,
+//!   [`skel`]).
 //!
 //! `upAxis = "Z"` stages are turned Y-up; geometry stays in the stage's unit
 //! (`metersPerUnit`), which tress, unitless, takes as its own. Everything else a stage
-//! holds that draws or lights (other prim types, blend shapes, unread attributes, failed
+//! holds that draws or lights (other prim types, unread attributes, failed
 //! composition arcs) is reported: one warning per kind with a count and the first prim.
 //!
 //! Every layer passes [`layer::prepare_layer`] first: its checks keep hostile text from

@@ -29,9 +29,22 @@
 //! bindings shared by a group of gprims. A binding that cannot be evaluated (counts that do
 //! not match, an index out of range, weights that are not finite, unknown joint names, a
 //! target that is missing or of the wrong type) is one warning naming the prim and the
-//! problem, and the prim is drawn in its rest pose. Blend shapes are not applied (said).
+//! problem, and the prim is drawn in its rest pose.
+//!
+//! Blend shapes ("Schemas In-Depth": BlendShape) deform the points first, in the prim's
+//! rest space: the prim's `skel:blendShapes` names its `skel:blendShapeTargets` (both
+//! inherited like the influences), each target a `BlendShape` whose `offsets` (and
+//! `normalOffsets`, for vertex normals) move every point, or the points of its
+//! `pointIndices`, by the weight the bound animation's `blendShapeWeights` gives that name
+//! in its `blendShapes` (0 for names it does not list). A target's inbetween shapes
+//! (`inbetweens:NAME` offsets, a `weight` in their metadata) join the implicit rest shape at
+//! weight 0 and the primary shape at 1: a weight takes the linear blend of the two shapes
+//! around it, extrapolated from the two nearest below the first or above the last, as
+//! `UsdSkelBlendShapeQuery` resolves them. Blend shapes that cannot be applied (counts
+//! that do not match, an index out of range, a target that is no `BlendShape`) are one
+//! warning naming the prim and why; the prim is skinned without them.
 
-use super::values::{floats, ints, short, token, value, vec3s, Res};
+use super::values::{floats, ints, number, short, token, value, vec3s, Res};
 use super::Notes;
 use glam::{DMat3, DMat4, DQuat, DVec3, Vec3};
 use openusd::sdf;
@@ -39,14 +52,25 @@ use openusd::usd::{Prim, TimeCode};
 use std::collections::HashMap;
 use std::rc::Rc;
 
-/// What skinning a prim does at one time code: each point's blended matrix (one for the
-/// whole prim with constant influences), taking bind-time prim points to skeleton space,
-/// and the skeleton's local-to-world, which replaces the prim's own transform.
+/// What skinning a prim does at one time code: the blend-shape offsets of its points,
+/// each point's blended matrix (one for the whole prim with constant influences), taking
+/// bind-time prim points to skeleton space, and the skeleton's local-to-world, which
+/// replaces the prim's own transform.
 pub struct Skinning {
     /// Per point, or one for all, `Σ w_i · skinning_i · geomBindTransform`.
     matrices: Vec<DMat4>,
+    /// The weighted blend shapes, added to the points before they are skinned.
+    shapes: Option<Offsets>,
     /// The Skeleton prim's local-to-world at the time code.
     pub skel_to_world: DMat4,
+}
+
+/// The summed blend-shape offsets of a prim's points, in its rest space.
+struct Offsets {
+    /// One per point.
+    points: Vec<Vec3>,
+    /// One per point, when a target authors `normalOffsets`.
+    normals: Option<Vec<Vec3>>,
 }
 
 impl Skinning {
@@ -59,19 +83,27 @@ impl Skinning {
         self.matrices[if self.matrices.len() == 1 { 0 } else { i }]
     }
 
-    /// Skins `points` (the prim's, as authored) into skeleton space.
+    /// Deforms `points` (the prim's, as authored) by the blend shapes and skins them into
+    /// skeleton space.
     pub fn points(&self, points: &mut [Vec3]) -> Res<()> {
         self.fits(points.len())?;
+        if let Some(shapes) = &self.shapes {
+            points.iter_mut().zip(&shapes.points).for_each(|(p, d)| *p += *d);
+        }
         for (i, p) in points.iter_mut().enumerate() {
             *p = self.matrix(i).transform_point3(p.as_dvec3()).as_vec3();
         }
         Ok(())
     }
 
-    /// Skins vertex `normals` (one per point): each by the inverse transpose of its
-    /// point's matrix, renormalised.
+    /// Skins vertex `normals` (one per point): the blend shapes' normal offsets added and
+    /// renormalised, as `UsdSkelBlendShapeQuery` deforms normals, then each by the inverse
+    /// transpose of its point's matrix, renormalised.
     pub fn normals(&self, normals: &mut [Vec3]) -> Res<()> {
         self.fits(normals.len())?;
+        if let Some(offsets) = self.shapes.as_ref().and_then(|s| s.normals.as_ref()) {
+            normals.iter_mut().zip(offsets).for_each(|(n, d)| *n = (*n + *d).normalize_or_zero());
+        }
         for (i, n) in normals.iter_mut().enumerate() {
             let m = DMat3::from_mat4(self.matrix(i)).inverse().transpose();
             *n = (m * n.as_dvec3()).normalize_or_zero().as_vec3();
@@ -82,6 +114,10 @@ impl Skinning {
     fn fits(&self, n: usize) -> Res<()> {
         let m = self.matrices.len();
         anyhow::ensure!(m == 1 || m == n, "the skinning has influences for {m} points, the prim {n}");
+        if let Some(shapes) = &self.shapes {
+            let k = shapes.points.len();
+            anyhow::ensure!(k == n, "the blend shapes move {k} points, the prim has {n}");
+        }
         Ok(())
     }
 }
@@ -104,9 +140,6 @@ pub fn skinning(prim: &Prim, time: TimeCode, poses: &mut Poses, notes: &mut Note
         notes.note("skeleton bindings outside a `SkelRoot`: not skinned (UsdSkel skins only beneath one)".into(), prim);
         return Ok(None);
     }
-    if inherited(prim, "skel:blendShapes").is_some() {
-        notes.note("UsdSkel blend shapes: not applied".into(), prim);
-    }
     if token(value(prim, "primvars:skel:skinningMethod", time)?, "classicLinear") == "dualQuaternion" {
         notes.note("dual-quaternion skinning: skinned linearly".into(), prim);
     }
@@ -121,11 +154,23 @@ pub fn skinning(prim: &Prim, time: TimeCode, poses: &mut Poses, notes: &mut Note
         }
     };
     let skinned = (*pose).as_ref().map_err(String::clone).and_then(|pose| {
-        let matrices = influences(prim, time, pose)?;
-        Ok(Skinning { matrices, skel_to_world: pose.skel_to_world })
+        let points = vec3s(value(prim, "points", time).map_err(|e| format!("{e:#}"))?, "points")
+            .map_err(|e| format!("{}: {e:#}", prim.path()))?
+            .map(|p| p.len());
+        Ok((influences(prim, time, pose, points)?, pose, points))
     });
     match skinned {
-        Ok(s) => Ok(Some(s)),
+        Ok((matrices, pose, points)) => {
+            let shapes = match blend_shapes(prim, time, &pose.blend_weights, points, notes) {
+                Ok(shapes) => shapes,
+                Err(why) => {
+                    let what = "UsdSkel blend shapes that cannot be applied: skinned without them";
+                    notes.note_why(what.into(), prim, &why);
+                    None
+                }
+            };
+            Ok(Some(Skinning { matrices, shapes, skel_to_world: pose.skel_to_world }))
+        }
         Err(why) => {
             notes.note_why("UsdSkel bindings that cannot be evaluated: drawn in the rest pose".into(), prim, &why);
             Ok(None)
@@ -215,6 +260,8 @@ pub struct Pose {
     joints: Vec<String>,
     /// The Skeleton prim's local-to-world.
     skel_to_world: DMat4,
+    /// The animation's blend-shape weights by name, or why they cannot be read.
+    blend_weights: Checked<HashMap<String, f32>>,
 }
 
 /// `skeleton` posed at `time` by `anim` (else by its rest transforms).
@@ -259,11 +306,13 @@ fn skeleton_pose(skeleton: &Prim, anim: Option<&Prim>, time: TimeCode, notes: &m
         Some(r) => return Ok(Err(format!("{at}: {} `restTransforms` for {n} joints", r.len()))),
         None => vec![None; n],
     };
+    let mut blend_weights = Ok(HashMap::new());
     match anim {
         Some(anim) if anim.type_name()?.is_some_and(|t| t.as_str() == "SkelAnimation") => {
             if let Err(why) = animate(anim, time, &index, &mut local, notes) {
                 return Ok(Err(format!("{}: {why}", anim.path())));
             }
+            blend_weights = animation_weights(anim, time).map_err(|why| format!("{}: {why}", anim.path()));
         }
         Some(anim) => {
             return Ok(Err(format!("`skel:animationSource` targets {}, which is not a SkelAnimation", anim.path())))
@@ -293,7 +342,151 @@ fn skeleton_pose(skeleton: &Prim, anim: Option<&Prim>, time: TimeCode, notes: &m
         Ok(m) => m,
         Err(e) => return Ok(Err(format!("{at}: {e:#}"))),
     };
-    Ok(Ok(Pose { skinning, joints, skel_to_world }))
+    Ok(Ok(Pose { skinning, joints, skel_to_world, blend_weights }))
+}
+
+/// The blend-shape weights of `anim` at `time` by name: its `blendShapes` and
+/// `blendShapeWeights` (none when it has neither).
+fn animation_weights(anim: &Prim, time: TimeCode) -> Checked<HashMap<String, f32>> {
+    let get = |name: &str| value(anim, name, time).map_err(|e| format!("{e:#}"));
+    let names = tokens(get("blendShapes")?, "blendShapes")?.unwrap_or_default();
+    let weights = floats(get("blendShapeWeights")?, "blendShapeWeights").map_err(|e| format!("{e:#}"))?;
+    let weights = weights.unwrap_or_default();
+    if names.len() != weights.len() {
+        return Err(format!("{} `blendShapeWeights` for {} `blendShapes`", weights.len(), names.len()));
+    }
+    if let Some((name, w)) = names.iter().zip(&weights).find(|(_, w)| !w.is_finite()) {
+        return Err(format!("the weight of blend shape `{name}` is not finite ({w})"));
+    }
+    Ok(names.into_iter().zip(weights).collect())
+}
+
+/// One shape of a blend shape: the implicit rest shape (no offsets) at weight 0, the
+/// primary shape at 1, or an inbetween at its authored weight.
+struct SubShape {
+    weight: f64,
+    /// `(offsets, normalOffsets)` attribute names, `None` for the rest shape.
+    attrs: Option<(String, String)>,
+}
+
+/// The summed blend-shape offsets of `prim`'s `points` points at `time`, weighted by
+/// `weights` (the bound animation's, by name): `None` when it has no blend shapes or
+/// none weighs anything.
+fn blend_shapes(
+    prim: &Prim,
+    time: TimeCode,
+    weights: &Checked<HashMap<String, f32>>,
+    points: Option<usize>,
+    notes: &mut Notes,
+) -> Checked<Option<Offsets>> {
+    let stage_err = |e: anyhow::Error| format!("{e:#}");
+    let Some(holder) = inherited(prim, "skel:blendShapes") else { return Ok(None) };
+    let names = tokens(value(&holder, "skel:blendShapes", time).map_err(stage_err)?, "skel:blendShapes")?;
+    let names = names.unwrap_or_default();
+    let mut targets = Vec::new();
+    for p in lineage(prim) {
+        targets = p.relationship("skel:blendShapeTargets").targets().map_err(stage_err)?;
+        if !targets.is_empty() {
+            break;
+        }
+    }
+    if names.len() != targets.len() {
+        return Err(format!("{} `skel:blendShapes` for {} `skel:blendShapeTargets`", names.len(), targets.len()));
+    }
+    let weights = weights.as_ref().map_err(String::clone)?;
+    let n = points.ok_or("blend shapes on a prim without points")?;
+    let mut out: Option<Offsets> = None;
+    for (name, target) in names.iter().zip(targets) {
+        let w = f64::from(weights.get(name).copied().unwrap_or(0.0));
+        if w == 0.0 {
+            continue;
+        }
+        let shape = prim.stage().prim(target.clone());
+        if shape.type_name().map_err(stage_err)?.is_none_or(|t| t.as_str() != "BlendShape") {
+            return Err(format!("`skel:blendShapeTargets` names {target}, which is not a BlendShape"));
+        }
+        let indices = ints(value(&shape, "pointIndices", time).map_err(stage_err)?, "pointIndices")
+            .map_err(stage_err)?
+            .filter(|ix| !ix.is_empty());
+        let mut slots = Vec::new();
+        if let Some(ix) = &indices {
+            for &i in ix {
+                match usize::try_from(i).ok().filter(|&i| i < n) {
+                    Some(i) => slots.push(i),
+                    None => return Err(format!("{target}: point index {i} is not one of the {n} points")),
+                }
+            }
+        }
+        let out = out.get_or_insert_with(|| Offsets { points: vec![Vec3::ZERO; n], normals: None });
+        // A shape's offsets are for its point indices, or for every point without them.
+        let read = |name: &str| -> Checked<Option<Vec<Vec3>>> {
+            let Some(v) = vec3s(value(&shape, name, time).map_err(stage_err)?, name).map_err(stage_err)? else {
+                return Ok(None);
+            };
+            let want = if indices.is_some() { slots.len() } else { n };
+            if v.len() != want {
+                return Err(format!("{target}: {} `{name}` for {want} points", v.len()));
+            }
+            if v.iter().any(|d| !d.is_finite()) {
+                return Err(format!("{target}: `{name}` holds an offset that is not finite"));
+            }
+            Ok(Some(v))
+        };
+        let at = |k: usize| if indices.is_some() { slots[k] } else { k };
+        for (a, (offsets, normal_offsets)) in sub_shape_weights(&sub_shapes(&shape, notes).map_err(stage_err)?, w) {
+            let a = a as f32;
+            let v = read(&offsets)?.ok_or_else(|| format!("{target}: no `{offsets}`"))?;
+            v.iter().enumerate().for_each(|(k, d)| out.points[at(k)] += *d * a);
+            if let Some(v) = read(&normal_offsets)? {
+                let normals = out.normals.get_or_insert_with(|| vec![Vec3::ZERO; n]);
+                v.iter().enumerate().for_each(|(k, d)| normals[at(k)] += *d * a);
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The shapes of BlendShape `shape`, by weight: the rest shape at 0, the primary at 1 and
+/// its inbetweens (`inbetweens:NAME` with a `weight`; those without one, or at 0 or 1, are
+/// skipped and said, as `UsdSkelBlendShapeQuery` skips them).
+fn sub_shapes(shape: &Prim, notes: &mut Notes) -> Res<Vec<SubShape>> {
+    let mut out = vec![
+        SubShape { weight: 0.0, attrs: None },
+        SubShape { weight: 1.0, attrs: Some(("offsets".into(), "normalOffsets".into())) },
+    ];
+    for name in shape.property_names()? {
+        let name = name.as_str();
+        if !name.starts_with("inbetweens:") || name.ends_with(":normalOffsets") {
+            continue;
+        }
+        let weight = shape.attribute(name).get_metadata::<sdf::Value>("weight")?;
+        match number(weight, "weight").ok().flatten().filter(|w| w.is_finite()) {
+            Some(w) if (w - 0.0).abs() > 1e-6 && (w - 1.0).abs() > 1e-6 => {
+                out.push(SubShape { weight: w, attrs: Some((name.to_string(), format!("{name}:normalOffsets"))) });
+            }
+            _ => notes.note("inbetween shapes without a weight (or at 0 or 1): ignored".into(), shape),
+        }
+    }
+    out.sort_by(|a, b| a.weight.total_cmp(&b.weight));
+    Ok(out)
+}
+
+/// How much of each shape of `shapes` (sorted by weight) a blend shape of weight `w`
+/// takes: the linear blend of the two around `w`, or of the two nearest outside them all.
+/// Without inbetweens this is the primary shape times `w`. The rest shape adds nothing and
+/// is left out.
+fn sub_shape_weights(shapes: &[SubShape], w: f64) -> Vec<(f64, (String, String))> {
+    let above = shapes.partition_point(|s| s.weight <= w).clamp(1, shapes.len() - 1);
+    let (lo, hi) = (&shapes[above - 1], &shapes[above]);
+    if hi.weight - lo.weight < 1e-6 {
+        // Two inbetweens at one weight: no span to blend across (USD's query adds nothing).
+        return Vec::new();
+    }
+    let t = (w - lo.weight) / (hi.weight - lo.weight);
+    [(lo, 1.0 - t), (hi, t)]
+        .into_iter()
+        .filter_map(|(s, a)| s.attrs.clone().filter(|_| a != 0.0).map(|attrs| (a, attrs)))
+        .collect()
 }
 
 /// The SkelAnimation bound to `skeleton`, else to the nearest ancestor of `prim` that
@@ -356,7 +549,7 @@ fn animate(
 
 /// Each point's blended matrix (one for constant influences) from `prim`'s influences
 /// and the skeleton's `pose`.
-fn influences(prim: &Prim, time: TimeCode, pose: &Pose) -> Checked<Vec<DMat4>> {
+fn influences(prim: &Prim, time: TimeCode, pose: &Pose, points: Option<usize>) -> Checked<Vec<DMat4>> {
     let (skinning, joint_names) = (&pose.skinning, &pose.joints);
     let path = prim.path();
     let stage_err = |e: anyhow::Error| format!("{e:#}");
@@ -389,10 +582,6 @@ fn influences(prim: &Prim, time: TimeCode, pose: &Pose) -> Checked<Vec<DMat4>> {
             weights.len()
         ));
     }
-    let points = match value(prim, "points", time).map_err(stage_err)? {
-        Some(v) => vec3s(Some(v), "points").map_err(stage_err)?.map(|p| p.len()),
-        None => None,
-    };
     let interp = match indices_attr.get_metadata::<sdf::Value>("interpolation").map_err(stage_err)? {
         None if indices.len() == es => "constant".to_string(),
         None => "vertex".to_string(),

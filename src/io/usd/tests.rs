@@ -1247,11 +1247,144 @@ fn bad_skinning_data_is_one_warning_and_the_rest_pose() {
         .replace("{anim_on_root}", "");
     let s = read_with("", &body, &ImportOptions { frame: Some(10), camera: None }).unwrap();
     assert!(s.warnings.iter().any(|w| w.contains("/Rig/Anim: 1 `translations` for 2 joints")), "{:?}", s.warnings);
-    // Blend shapes are said, the skinning still done.
+    // Blend shapes that cannot be applied are said, the skinning still done.
     let s =
         read_skel(&skinned_curve("Hair", &format!("uniform token[] skel:blendShapes = [\"Smile\"]\n{influences}")), 10);
-    assert!(s.warnings.iter().any(|w| w.contains("UsdSkel blend shapes: not applied")), "{:?}", s.warnings);
+    assert!(
+        s.warnings.iter().any(|w| w.contains("blend shapes that cannot be applied: skinned without them")
+            && w.contains("1 `skel:blendShapes` for 0 `skel:blendShapeTargets`")),
+        "{:?}",
+        s.warnings
+    );
     assert_near(&world_points(&s, 0), &[Vec3::new(10.0, 1.0, 0.0), Vec3::new(9.0, 1.0, 0.0)], &s);
+}
+
+/// The SKEL stage whose animation weighs blend shapes `Up`, `Sparse` and `Tween` (and one
+/// no prim uses) with samples at 0, 10 and 20, and the curve `Hair` on joint B with the
+/// targets `shapes` (BlendShape prims under it).
+fn blend_shape_stage(shapes: &str, frame: u32) -> Imported {
+    let anim = r#"half3[] scales = [(1, 1, 1), (1, 1, 1)]
+        uniform token[] blendShapes = ["Unused", "Tween", "Sparse", "Up"]
+        float[] blendShapeWeights.timeSamples = { 0: [0, 0, 0, 0], 10: [1, 0.25, 1, 0.5], 20: [1, 0.75, 0.5, 1] }"#;
+    let hair = skinned_curve(
+        "Hair",
+        &format!(
+            r#"int[] primvars:skel:jointIndices = [1] (interpolation = "constant" elementSize = 1)
+            float[] primvars:skel:jointWeights = [1] (interpolation = "constant" elementSize = 1)
+            uniform token[] skel:blendShapes = ["Up", "Sparse", "Tween"]
+            rel skel:blendShapeTargets = [</Rig/Geo/Hair/Up>, </Rig/Geo/Hair/Sparse>, </Rig/Geo/Hair/Tween>]
+            {shapes}"#
+        ),
+    );
+    let body = SKEL
+        .replace("half3[] scales = [(1, 1, 1), (1, 1, 1)]", anim)
+        .replace("{prims}", &hair)
+        .replace("{anim_on_skel}", "rel skel:animationSource = </Rig/Anim>")
+        .replace("{anim_on_root}", "");
+    read_with("", &body, &ImportOptions { frame: Some(frame), camera: None }).unwrap()
+}
+
+/// `Up` moves both points along +x, `Sparse` (`pointIndices`) the second along +z, `Tween`
+/// the first along +z by 1, with an inbetween of 3 at weight 0.5.
+const BLEND_SHAPES: &str = r#"
+    def BlendShape "Up" { uniform vector3f[] offsets = [(1, 0, 0), (1, 0, 0)] }
+    def BlendShape "Sparse" {
+        uniform vector3f[] offsets = [(0, 0, 2)]
+        uniform int[] pointIndices = [1]
+    }
+    def BlendShape "Tween" {
+        uniform vector3f[] offsets = [(0, 0, 1), (0, 0, 0)]
+        uniform vector3f[] inbetweens:half = [(0, 0, 3), (0, 0, 0)] (weight = 0.5)
+    }"#;
+
+#[test]
+fn blend_shapes_move_rest_points_by_the_animation_weights_before_skinning() {
+    // Joint B turns the rest space 90 degrees about Z at frame 10 and after, about (0, 1, 0),
+    // and the SkelRoot moves it to x = 10: (x, y, z) is drawn at (11 - y, 1 + x, z). Offsets
+    // along x therefore rise along y: they were added before the skinning.
+    let skinned = |p: Vec3| Vec3::new(11.0 - p.y, 1.0 + p.x, p.z);
+    let rest = [Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, 2.0, 0.0)];
+    // (frame, Up, Sparse, Tween's offset of the first point): at 10, Up 0.5 moves half its
+    // offset and Tween at 0.25 is half way from rest to the inbetween (1.5, where the
+    // primary alone would give 0.25); at 20, Tween at 0.75 is half way from the inbetween
+    // to the primary (2); at 15 the weights are blended between the samples (Tween 0.5:
+    // the inbetween itself).
+    for (frame, up, sparse, tween) in [(10, 0.5, 1.0, 1.5), (20, 1.0, 0.5, 2.0), (15, 0.75, 0.75, 3.0)] {
+        let s = blend_shape_stage(BLEND_SHAPES, frame);
+        let want = [skinned(rest[0] + Vec3::new(up, 0.0, tween)), skinned(rest[1] + Vec3::new(up, 0.0, 2.0 * sparse))];
+        assert_near(&world_points(&s, 0), &want, &s);
+        assert!(!s.warnings.iter().any(|w| w.contains("blend shape")), "{:?}", s.warnings);
+    }
+    // At 0 every weight is 0: the skinned rest points.
+    let s = blend_shape_stage(BLEND_SHAPES, 0);
+    assert_near(&world_points(&s, 0), &[Vec3::new(10.0, 1.0, 0.0), Vec3::new(10.0, 2.0, 0.0)], &s);
+    // Bad targets: said, and the prim skinned without its blend shapes.
+    let bad = [
+        (BLEND_SHAPES.replace("pointIndices = [1]", "pointIndices = [2]"), "point index 2 is not one of the 2 points"),
+        (
+            BLEND_SHAPES.replace("offsets = [(0, 0, 2)]", "offsets = [(0, 0, 2), (0, 0, 2)]"),
+            "/Rig/Geo/Hair/Sparse: 2 `offsets` for 1 points",
+        ),
+        (
+            BLEND_SHAPES.replace("def BlendShape \"Up\"", "def Xform \"Up\""),
+            "names /Rig/Geo/Hair/Up, which is not a BlendShape",
+        ),
+        (
+            BLEND_SHAPES.replace("inbetweens:half = [(0, 0, 3), (0, 0, 0)]", "inbetweens:half = [(0, 0, 3)]"),
+            "1 `inbetweens:half` for 2 points",
+        ),
+    ];
+    for (shapes, why) in bad {
+        let s = blend_shape_stage(&shapes, 10);
+        assert!(
+            s.warnings
+                .iter()
+                .any(|w| w.contains("blend shapes that cannot be applied: skinned without them") && w.contains(why)),
+            "{why}: {:?}",
+            s.warnings
+        );
+        assert_near(&world_points(&s, 0), &[Vec3::new(10.0, 1.0, 0.0), Vec3::new(9.0, 1.0, 0.0)], &s);
+    }
+    // An inbetween without a weight is skipped and said: Tween at 0.25 is then a quarter of
+    // the primary.
+    let s = blend_shape_stage(&BLEND_SHAPES.replace(" (weight = 0.5)", ""), 10);
+    assert!(s.warnings.iter().any(|w| w.contains("inbetween shapes without a weight")), "{:?}", s.warnings);
+    assert_near(&world_points(&s, 0)[..1], &[skinned(rest[0] + Vec3::new(0.5, 0.0, 0.25))], &s);
+}
+
+#[test]
+fn blend_shape_normal_offsets_turn_mesh_normals() {
+    // A triangle on joint A (the identity) whose normals (0, 0, 1) the shape's normal
+    // offsets (1, 0, -1) at weight 0.5 turn to (0.5, 0, 0.5), renormalised.
+    let mesh = r#"def Mesh "Tri" (prepend apiSchemas = ["SkelBindingAPI"]) {
+        rel skel:skeleton = </Rig/Skel>
+        int[] faceVertexCounts = [3]
+        int[] faceVertexIndices = [0, 1, 2]
+        point3f[] points = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]
+        normal3f[] normals = [(0, 0, 1), (0, 0, 1), (0, 0, 1)] (interpolation = "vertex")
+        int[] primvars:skel:jointIndices = [0] (interpolation = "constant" elementSize = 1)
+        float[] primvars:skel:jointWeights = [1] (interpolation = "constant" elementSize = 1)
+        uniform token[] skel:blendShapes = ["Up"]
+        rel skel:blendShapeTargets = </Rig/Geo/Tri/Up>
+        def BlendShape "Up" {
+            uniform vector3f[] offsets = [(0, 0, 0), (0, 0, 0), (0, 0, 0)]
+            uniform vector3f[] normalOffsets = [(1, 0, -1), (1, 0, -1), (1, 0, -1)]
+        }
+    }"#;
+    let anim = r#"half3[] scales = [(1, 1, 1), (1, 1, 1)]
+        uniform token[] blendShapes = ["Up"]
+        float[] blendShapeWeights = [0.5]"#;
+    let body = SKEL
+        .replace("half3[] scales = [(1, 1, 1), (1, 1, 1)]", anim)
+        .replace("{prims}", mesh)
+        .replace("{anim_on_skel}", "rel skel:animationSource = </Rig/Anim>")
+        .replace("{anim_on_root}", "");
+    let s = read_with("", &body, &ImportOptions { frame: Some(10), camera: None }).unwrap();
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!("an inline mesh") };
+    let h = std::f32::consts::FRAC_1_SQRT_2;
+    for n in m.normals.as_ref().expect("normals") {
+        assert!((*n - Vec3::new(h, 0.0, h)).length() < 1e-5, "{n:?} ({:?})", s.warnings);
+    }
 }
 
 proptest! {
