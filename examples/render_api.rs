@@ -36,11 +36,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
                     material: Material::Diffuse { color: Color::new(0.35, 0.33, 0.3) }.into(),
                     transform: Affine3A::IDENTITY,
+                    visibility: Default::default(),
                 },
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::plane(10.0)),
                     material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::from_translation(Vec3::new(0.0, -0.7, 0.0)),
+                    visibility: Default::default(),
                 },
             ],
             // Fur grows on meshes[0], as placed in the world.
@@ -53,6 +55,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 lod: None,
                 grows_on: None,
                 width_profile: None,
+                visibility: Default::default(),
             }],
             ..Default::default()
         },

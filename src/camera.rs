@@ -131,6 +131,7 @@ impl Camera {
         let mut ray = Ray::new(self.eye + dir * start, dir);
         ray.tmax = (self.far - self.near) / dir.dot(self.forward);
         ray.cone = RayCone { width: self.pixel_spread * start, spread: self.pixel_spread };
+        ray.camera = true;
         ray
     }
 }

@@ -42,11 +42,13 @@ pub fn description(strands: u32, seed: u64) -> Description {
                     source: MeshSource::Inline(torus),
                     material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::IDENTITY,
+                    visibility: Default::default(),
                 },
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::plane(12.0)),
                     material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::from_translation(Vec3::new(0.0, -0.62, 0.0)),
+                    visibility: Default::default(),
                 },
             ],
             hair: vec![HairEntry {
@@ -56,6 +58,7 @@ pub fn description(strands: u32, seed: u64) -> Description {
                 radius_scale: 1.0,
                 file_colors: true,
                 lod: None,
+                visibility: Default::default(),
             }],
             ..Default::default()
         },

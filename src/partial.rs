@@ -245,8 +245,13 @@ pub fn fingerprint(world: &World) -> u64 {
     let floats = |h: &mut std::collections::hash_map::DefaultHasher, v: &mut dyn Iterator<Item = f32>| {
         v.for_each(|x| h.write_u32(x.to_bits()));
     };
-    for o in &world.accel.objects {
+    for (i, o) in world.accel.objects.iter().enumerate() {
         o.material.hash(&mut h);
+        // Only where set, so the scenes without flags keep their fingerprints.
+        let visibility = world.accel.visibility(i as u32);
+        if visibility != crate::accel::Visibility::default() {
+            format!("{visibility:?}").hash(&mut h);
+        }
         match &o.shape {
             Shape::Mesh(m) => {
                 floats(&mut h, &mut m.positions.iter().flat_map(|p| p.to_array()));

@@ -34,6 +34,7 @@ fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3
                     source: MeshSource::Inline(m),
                     material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform,
+                    visibility: Default::default(),
                 })
                 .collect(),
             hair: hair
@@ -45,6 +46,7 @@ fn describe(hair: Vec<(StrandSet, Affine3A)>, meshes: Vec<(TriangleMesh, Affine3
                     radius_scale: 1.0,
                     file_colors: true,
                     lod: None,
+                    visibility: Default::default(),
                 })
                 .collect(),
             ..Default::default()

@@ -54,11 +54,13 @@ fn scene(light: Light, integrator: Integrator, spp: u32) -> Description {
                     source: MeshSource::Inline(TriangleMesh::torus(0.6, 0.2, 32, 16)),
                     material: Material::Diffuse { color: Color::new(0.6, 0.4, 0.3) }.into(),
                     transform: Affine3A::from_translation(Vec3::Y * 0.2),
+                    visibility: Default::default(),
                 },
                 MeshEntry {
                     source: MeshSource::Inline(TriangleMesh::plane(6.0)),
                     material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::IDENTITY,
+                    visibility: Default::default(),
                 },
             ],
             hair: vec![HairEntry {
@@ -68,6 +70,7 @@ fn scene(light: Light, integrator: Integrator, spp: u32) -> Description {
                 radius_scale: 1.0,
                 file_colors: true,
                 lod: None,
+                visibility: Default::default(),
             }],
             ..Default::default()
         },
@@ -179,6 +182,7 @@ fn a_white_map_lights_a_convex_diffuse_body_to_its_albedo() {
                     source: MeshSource::Inline(TriangleMesh::sphere(0.6, 48)),
                     material: Material::Diffuse { color: Color::splat(0.5) }.into(),
                     transform: Affine3A::IDENTITY,
+                    visibility: Default::default(),
                 }],
                 ..Default::default()
             },
@@ -327,6 +331,7 @@ fn the_tube_ambient_term_takes_an_environment_maps_mean_radiance() {
                     radius_scale: 1.0,
                     file_colors: false,
                     lod: None,
+                    visibility: Default::default(),
                 }],
                 ..Default::default()
             },

@@ -29,7 +29,7 @@ fn mean(film: &Film) -> Vec3 {
 }
 
 fn mesh(mesh: TriangleMesh, material: Material, transform: Affine3A) -> MeshEntry {
-    MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform }
+    MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform, visibility: Default::default() }
 }
 
 fn hair(strands: StrandSet, material: Material) -> HairEntry {
@@ -40,6 +40,7 @@ fn hair(strands: StrandSet, material: Material) -> HairEntry {
         radius_scale: 1.0,
         file_colors: true,
         lod: None,
+        visibility: Default::default(),
     }
 }
 

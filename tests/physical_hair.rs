@@ -34,6 +34,7 @@ fn furnace(strands: StrandSet, params: HairParams, file_colors: bool) -> Descrip
                 radius_scale: 1.0,
                 file_colors,
                 lod: None,
+                visibility: Default::default(),
             }],
             ..Default::default()
         },

@@ -134,6 +134,7 @@ fn black_strands_on_white(
                 radius_scale: 1.0,
                 file_colors: false,
                 lod: None,
+                visibility: Default::default(),
             }],
             ..Default::default()
         },

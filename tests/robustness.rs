@@ -26,6 +26,7 @@ fn world(strands: StrandSet, material: Material, light_dir: Vec3, eye: Vec3) -> 
                 radius_scale: 1.0,
                 file_colors: false,
                 lod: None,
+                visibility: Default::default(),
             }],
             ..Default::default()
         },

@@ -238,7 +238,8 @@ impl Accel {
         opacity(&o.shape, hit.prim, hit.kind) * o.lod_opacity(hit.level)
     }
 
-    /// The nearest hits along `ray` beyond `tmin` (but on `ray.skip`), sorted by distance, into `out`
+    /// The nearest hits along `ray` beyond `tmin` (but on `ray.skip` and, for a camera ray,
+    /// on objects hidden from the camera), sorted by distance, into `out`
     /// (cleared first): at most `k` of them (at least one), ending early at the first
     /// opaque hit or at the first hit behind which less than [`NEGLIGIBLE_TRANSMITTANCE`]
     /// of the light is left (a blend stops there: what lies behind cannot show), or, with
@@ -267,7 +268,8 @@ impl Accel {
         let k = k.max(1);
         out.clear();
         let mut cutoff = ray.tmax;
-        self.walk(ray.origin, ray.dir, ray.cone, tmin, &mut cutoff, |object, o, prims, widen, cutoff| {
+        let skipped = self.skipped_flags(ray.camera, false);
+        self.walk(ray.origin, ray.dir, (ray.cone, skipped), tmin, &mut cutoff, |object, o, prims, widen, cutoff| {
             leaf_hits(
                 &o.shape,
                 prims,
@@ -292,7 +294,8 @@ impl Accel {
     }
 
     /// The fraction of light that passes from `origin` along unit `dir` up to distance
-    /// `tmax`, ignoring `skip`: the product of `1 - opacity` over every hit (thesis section
+    /// `tmax`, ignoring `skip` and objects casting no shadows ([`super::Visibility::shadows`]):
+    /// the product of `1 - opacity` over every hit (thesis section
     /// 2.2.8's transparency, applied to shadow rays so hair casts partial shadows). Meshes
     /// and opaque strands block; a product below [`NEGLIGIBLE_TRANSMITTANCE`] counts as 0.
     ///
@@ -336,7 +339,8 @@ impl Accel {
         let mut t = tmax;
         let mut transmitted = 1.0f32;
         let exact = if self.smooth { SMOOTH_EXACT_SHADOW_TRANSMITTANCE } else { EXACT_SHADOW_TRANSMITTANCE };
-        let blocked = self.walk(origin, dir, cone, 0.0, &mut t, |object, o, prims, widen, t| {
+        let skipped = self.skipped_flags(false, true);
+        let blocked = self.walk(origin, dir, (cone, skipped), 0.0, &mut t, |object, o, prims, widen, t| {
             let skip = skip.filter(|s| s.object == object);
             leaf_hits(&o.shape, prims, (origin, dir), (0.0, *t), (skip, false), widen, |prim, _, kind, level| {
                 let a = seen_opacity(o, prim, kind, level, (origin, dir));

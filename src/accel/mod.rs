@@ -217,11 +217,63 @@ pub struct Hit {
     pub radius_scale: f32,
 }
 
+/// Which rays see an object, and whether camera rays see it as a holdout: the per-object
+/// switches of Arnold's shapes (`visibility` camera and shadow rays, `matte`) and of
+/// Cycles' objects (camera and shadow ray visibility, holdout).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Visibility {
+    /// Camera rays see it; otherwise they pass through it, and only other rays (shadow,
+    /// specular, indirect) meet it.
+    pub camera: bool,
+    /// It blocks shadow rays (casts shadows); otherwise shadow rays pass through it.
+    pub shadows: bool,
+    /// A holdout: where camera rays meet it first the pixel is black and transparent
+    /// (alpha 0), yet it hides what lies behind it; other rays see it as usual.
+    pub matte: bool,
+}
+
+impl Default for Visibility {
+    /// Seen by every ray, not a holdout.
+    fn default() -> Self {
+        Visibility { camera: true, shadows: true, matte: false }
+    }
+}
+
+/// Bits of an object's flags ([`Accel::set_visibility`]): a query for camera rays skips
+/// objects with [`HIDDEN_FROM_CAMERA`], one for shadow rays those with [`CASTS_NO_SHADOWS`].
+const HIDDEN_FROM_CAMERA: u8 = 1;
+const CASTS_NO_SHADOWS: u8 = 2;
+const MATTE: u8 = 4;
+
+impl Visibility {
+    /// The flag bits of an object seen so.
+    fn bits(self) -> u8 {
+        (!self.camera as u8 * HIDDEN_FROM_CAMERA)
+            | (!self.shadows as u8 * CASTS_NO_SHADOWS)
+            | (self.matte as u8 * MATTE)
+    }
+
+    /// The visibility of flag bits `bits`.
+    fn from_bits(bits: u8) -> Visibility {
+        Visibility {
+            camera: bits & HIDDEN_FROM_CAMERA == 0,
+            shadows: bits & CASTS_NO_SHADOWS == 0,
+            matte: bits & MATTE != 0,
+        }
+    }
+}
+
 /// Every object of a scene with its BVH, under a top-level BVH.
 #[derive(Clone, Debug, Default)]
 pub struct Accel {
     /// The objects, in scene order.
     pub objects: Vec<Object>,
+    /// Each object's visibility flags (`HIDDEN_FROM_CAMERA`, ...): one byte per object, read
+    /// in the top-level leaves; empty while every object is seen by every ray.
+    flags: Vec<u8>,
+    /// Every object's flags or-ed: a query whose ray kind no object hides from looks at
+    /// none of them.
+    any_flags: u8,
     top: Bvh,
     /// Some strand set asks for smooth level of detail ([`Accel::smooth_layers`]).
     smooth: bool,
@@ -267,7 +319,42 @@ impl Accel {
         let top =
             Bvh::build(objects.iter().enumerate().map(|(i, o)| BuildItem::new(o.bvh.bounds(), i as u32)).collect());
         let smooth = objects.iter().any(|o| o.lod().is_some_and(|l| l.params().smooth && l.has_transparency()));
-        Accel { objects, top, smooth }
+        Accel { objects, flags: Vec::new(), any_flags: 0, top, smooth }
+    }
+
+    /// Sets which rays see each object, in object order (objects past the end of
+    /// `visibility` are seen by every ray, as every object is until set).
+    pub fn set_visibility(&mut self, visibility: impl IntoIterator<Item = Visibility>) {
+        let mut bits: Vec<u8> = visibility.into_iter().take(self.objects.len()).map(Visibility::bits).collect();
+        bits.resize(self.objects.len(), 0);
+        self.any_flags = bits.iter().fold(0, |a, &f| a | f);
+        // Without flags the walks never read them: keep none.
+        self.flags = if self.any_flags == 0 { Vec::new() } else { bits };
+    }
+
+    /// Which rays see object `object`.
+    pub fn visibility(&self, object: u32) -> Visibility {
+        Visibility::from_bits(self.flags.get(object as usize).copied().unwrap_or(0))
+    }
+
+    /// True when some object is a holdout ([`Visibility::matte`]).
+    pub fn has_matte(&self) -> bool {
+        self.any_flags & MATTE != 0
+    }
+
+    /// The flags whose objects a query skips: for camera rays (`camera`) those hidden from
+    /// the camera, for shadow rays (`shadow`) those casting no shadows; 0 when no object
+    /// has such a flag, so the walk never reads the flags.
+    #[inline(always)]
+    fn skipped_flags(&self, camera: bool, shadow: bool) -> u8 {
+        let kind = (camera as u8 * HIDDEN_FROM_CAMERA) | (shadow as u8 * CASTS_NO_SHADOWS);
+        self.any_flags & kind
+    }
+
+    /// True when a walk skipping objects with flags `skipped` skips object `object`.
+    #[inline(always)]
+    fn skips(&self, skipped: u8, object: u32) -> bool {
+        skipped != 0 && self.flags[object as usize] & skipped != 0
     }
 
     /// Bounds of the whole scene.
@@ -281,12 +368,14 @@ impl Accel {
     }
 
     simd_query! {
-        /// The closest hit along the ray before `ray.tmax`, but on `ray.skip`.
+        /// The closest hit along the ray before `ray.tmax`, but on `ray.skip` (and, for a
+        /// camera ray, on objects hidden from the camera).
         /// Strand sets with level of detail use the level of `ray.cone` at each distance.
         pub fn intersect / intersect_avx2 / intersect_portable(&self, ray: &Ray) -> Option<Hit> {
             let mut tmax = ray.tmax;
             let mut best = None;
-            self.walk(ray.origin, ray.dir, ray.cone, 0.0, &mut tmax, |object, o, prims, widen, tmax| {
+            let skipped = self.skipped_flags(ray.camera, false);
+            self.walk(ray.origin, ray.dir, (ray.cone, skipped), 0.0, &mut tmax, |object, o, prims, widen, tmax| {
                 let skip = ray.skip.filter(|s| s.object == object);
                 if let Some((prim, t, kind, level)) =
                     intersect_leaf(&o.shape, prims, LeafRay::new(ray.origin, ray.dir), *tmax, skip, false, widen)
@@ -301,13 +390,15 @@ impl Accel {
     }
 
     simd_query! {
-        /// True when anything (but the skipped primitives) lies on the segment from `origin`
-        /// along unit `dir` up to distance `tmax`, with strands at full detail.
+        /// True when anything (but the skipped primitives and objects casting no shadows)
+        /// lies on the segment from `origin` along unit `dir` up to distance `tmax`, with
+        /// strands at full detail: a shadow ray's query.
         pub fn occluded / occluded_avx2 / occluded_portable(
             &self, origin: Vec3, dir: Vec3, tmax: f32, skip: Option<Skip>,
         ) -> bool {
             let mut t = tmax;
-            self.walk(origin, dir, RayCone::default(), 0.0, &mut t, |object, o, prims, widen, t| {
+            let skipped = self.skipped_flags(false, true);
+            self.walk(origin, dir, (RayCone::default(), skipped), 0.0, &mut t, |object, o, prims, widen, t| {
                 let skip = skip.filter(|s| s.object == object);
                 intersect_leaf(&o.shape, prims, LeafRay::new(origin, dir), *t, skip, true, widen).is_some()
             })
@@ -316,7 +407,8 @@ impl Accel {
 
     /// Walks the leaves of the objects that the ray from `origin` along unit `dir`
     /// (footprint `cone`) enters between `tmin` and `*tmax`, nearest boxes first, under the top-level
-    /// BVH: `leaf(object, o, prims, widen, tmax)` as in [`Object::traverse`],
+    /// BVH, passing over the objects with any of the flags `skipped` ([`Accel::skipped_flags`]):
+    /// `leaf(object, o, prims, widen, tmax)` as in [`Object::traverse`],
     /// returning true to stop. Returns whether a leaf stopped the walk. Every query
     /// (closest, any, K-nearest hits, transmittance) is this walk with its own leaf.
     #[inline(always)]
@@ -324,7 +416,7 @@ impl Accel {
         &self,
         origin: Vec3,
         dir: Vec3,
-        cone: RayCone,
+        (cone, skipped): (RayCone, u8),
         tmin: f32,
         tmax: &mut f32,
         mut leaf: impl FnMut(u32, &Object, &[u32], Widen, &mut f32) -> bool,
@@ -334,6 +426,9 @@ impl Accel {
         let mut stopped = false;
         self.top.traverse::<false>(&test, tmax, |objects, _, t| {
             for &object in objects {
+                if self.skips(skipped, object) {
+                    continue;
+                }
                 let o = &self.objects[object as usize];
                 if o.traverse(&test, &lod_ray, t, |prims, widen, t| leaf(object, o, prims, widen, t)) {
                     stopped = true;
@@ -359,7 +454,13 @@ impl Accel {
             let rays = &rays[..rays.len().min(hits.len()).min(PACKET)];
             let mut tmax = [0.0; PACKET];
             rays.iter().zip(&mut tmax).for_each(|(r, t)| *t = r.tmax);
-            self.walk_packet(rays, &mut tmax, |i, object, o, prims, widen, ray, tmax| {
+            // The camera rays among them, looked at only when some object hides from them.
+            let hidden = self.skipped_flags(true, false);
+            let camera = match hidden {
+                0 => 0,
+                _ => rays.iter().enumerate().fold(0, |m, (i, r)| m | (r.camera as RayMask) << i),
+            };
+            self.walk_packet(rays, &mut tmax, (hidden, camera), |i, object, o, prims, widen, ray, tmax| {
                 let skip = rays[i].skip.filter(|s| s.object == object);
                 if let Some((prim, t, kind, level)) = intersect_leaf(&o.shape, prims, ray, *tmax, skip, false, widen) {
                     *tmax = t;
@@ -372,7 +473,8 @@ impl Accel {
 
     simd_query! {
         /// Any-hit queries for a packet of up to [`PACKET`] shadow rays: bit i of the result is
-        /// set when something but the ray's `skip` lies on ray i before its `tmax`, strands with level of detail seen at the level of the ray's cone. For
+        /// set when something but the ray's `skip` (and objects casting no shadows) lies on ray i
+        /// before its `tmax`, strands with level of detail seen at the level of the ray's cone. For
         /// opaque scenes this is [`Accel::transmittance_cone`] being 0, for rays that start
         /// close together (a pixel's shadow rays towards one light) at a shared cost.
         pub fn occluded_packet / occluded_packet_avx2 / occluded_packet_portable(
@@ -381,7 +483,7 @@ impl Accel {
             let rays = &rays[..rays.len().min(PACKET)];
             let mut t = [0.0; PACKET];
             rays.iter().zip(&mut t).for_each(|(r, t)| *t = r.tmax);
-            self.walk_packet(rays, &mut t, |i, object, o, prims, widen, ray, t| {
+            self.walk_packet(rays, &mut t, (self.skipped_flags(false, true), RayMask::MAX), |i, object, o, prims, widen, ray, t| {
                 let skip = rays[i].skip.filter(|s| s.object == object);
                 intersect_leaf(&o.shape, prims, ray, *t, skip, true, widen).is_some()
             })
@@ -391,6 +493,8 @@ impl Accel {
     /// [`Accel::walk`] for a packet of up to [`PACKET`] rays with their `tmax`: the top
     /// level and every object are traversed by the packet; a leaf of an object with level of
     /// detail is tested ray by ray, each ray seeing it at its own level.
+    /// The rays in `skipping` pass over the objects with any of the flags `skipped`
+    /// ([`Accel::skipped_flags`]).
     /// `leaf(ray, object, o, prims, widen, leaf_ray, tmax)` tests a leaf for ray `ray`, and
     /// returns true when that ray is done; the result holds the rays a leaf stopped.
     #[inline(always)]
@@ -398,6 +502,7 @@ impl Accel {
         &self,
         rays: &[Ray],
         tmax: &mut [f32; PACKET],
+        (skipped, skipping): (u8, RayMask),
         mut leaf: impl FnMut(usize, u32, &Object, &[u32], Widen, LeafRay, &mut f32) -> bool,
     ) -> RayMask {
         let tests: [RayBoxTest; PACKET] = std::array::from_fn(|i| {
@@ -407,25 +512,31 @@ impl Accel {
         let mut stopped: RayMask = 0;
         self.top.traverse_packet::<false>(tests, RayMask::MAX, tmax, |objects, _, mut live, tmax| {
             for &object in objects {
+                let seeing = if self.skips(skipped, object) { live & !skipping } else { live };
+                if seeing == 0 {
+                    continue;
+                }
                 let o = &self.objects[object as usize];
                 let mut done = 0;
                 match (&o.shape, &o.lod) {
                     // The packet shares the node tests (the boxes bound every level a ray
                     // may see); each ray tests a leaf at its own level.
-                    (_, Some(lod)) => o.bvh.traverse_packet::<true>(tests, live, tmax, |prims, tag, entering, tmax| {
-                        let mut done_here = 0;
-                        for_each_ray(entering, |i| {
-                            let r = &rays[i];
-                            let view = lod.view(&LodRay::new(r.origin, r.dir, r.cone));
-                            let ray = LeafRay::new(r.origin, r.dir);
-                            if leaf(i, object, o, prims, Some(&view.leaf(tag)), ray, &mut tmax[i]) {
-                                done_here |= 1 << i;
-                            }
-                        });
-                        done |= done_here;
-                        done_here
-                    }),
-                    (shape, None) => o.bvh.traverse_packet::<false>(tests, live, tmax, |prims, _, entering, tmax| {
+                    (_, Some(lod)) => {
+                        o.bvh.traverse_packet::<true>(tests, seeing, tmax, |prims, tag, entering, tmax| {
+                            let mut done_here = 0;
+                            for_each_ray(entering, |i| {
+                                let r = &rays[i];
+                                let view = lod.view(&LodRay::new(r.origin, r.dir, r.cone));
+                                let ray = LeafRay::new(r.origin, r.dir);
+                                if leaf(i, object, o, prims, Some(&view.leaf(tag)), ray, &mut tmax[i]) {
+                                    done_here |= 1 << i;
+                                }
+                            });
+                            done |= done_here;
+                            done_here
+                        })
+                    }
+                    (shape, None) => o.bvh.traverse_packet::<false>(tests, seeing, tmax, |prims, _, entering, tmax| {
                         // A strand leaf is loaded once and culled for all its rays.
                         let near = match shape {
                             Shape::Strands(s) => Some(segment::near8_packet(rays, entering, &s.points, prims, 1.0)),
@@ -868,6 +979,52 @@ mod tests {
             }
         }
         assert!(hits > 1000 && blocked > 500, "the test needs rays that hit: {hits}, {blocked}");
+    }
+
+    /// Camera rays pass through objects hidden from the camera and shadow rays through those
+    /// casting no shadows, one by one, in packets and in the multi-hit queries alike; other
+    /// rays see both.
+    #[test]
+    fn queries_skip_the_objects_their_rays_do_not_see() {
+        let mut rng = GenRng::seed_from_u64(5);
+        let mut accel = random_scene(&mut rng);
+        let all = accel.clone();
+        let alone = |i: usize| Accel::build(vec![(all.objects[i].shape.clone(), 0)]);
+        let (mesh, strands) = (alone(0), alone(1));
+        let hidden = Visibility { camera: false, ..Visibility::default() };
+        let shadowless = Visibility { shadows: false, ..Visibility::default() };
+        accel.set_visibility([hidden, shadowless]);
+        assert_eq!((accel.visibility(0), accel.visibility(1)), (hidden, shadowless));
+        let (mut camera_hits, mut blocked) = (0, 0);
+        for _ in 0..300 {
+            let (eye, target) = (random_vec(&mut rng, 12.0), random_vec(&mut rng, 3.0));
+            let rays: Vec<Ray> =
+                (0..PACKET).map(|_| Ray::new(eye, (target + random_vec(&mut rng, 0.5) - eye).normalize())).collect();
+            let cameras: Vec<Ray> = rays.iter().map(|r| Ray { camera: true, ..*r }).collect();
+            let mut packet = vec![None; PACKET];
+            accel.intersect_packet(&cameras, &mut packet);
+            let occluded_packet = accel.occluded_packet(&rays);
+            let mut layers = Vec::new();
+            for (i, (ray, camera)) in rays.iter().zip(&cameras).enumerate() {
+                // Not a camera ray: every object, as without flags.
+                assert_eq!(accel.intersect(ray), all.intersect(ray));
+                // A camera ray: the strands only.
+                let hit = accel.intersect(camera);
+                let expected = strands.intersect(ray).map(|h| Hit { object: 1, ..h });
+                assert_eq!(hit, expected, "ray {i}");
+                assert_eq!(packet[i], hit, "ray {i}");
+                accel.intersect_k(camera, 0.0, 4, &[], None, &mut layers);
+                assert_eq!(layers.first().map(|l| l.hit), hit, "ray {i}");
+                camera_hits += hit.is_some() as u32;
+                // A shadow ray: the mesh only.
+                let occluded = accel.occluded(ray.origin, ray.dir, f32::INFINITY, None);
+                assert_eq!(occluded, mesh.occluded(ray.origin, ray.dir, f32::INFINITY, None), "ray {i}");
+                assert_eq!(occluded, accel.transmittance(ray.origin, ray.dir, f32::INFINITY, None) == 0.0);
+                assert_eq!(occluded, occluded_packet >> i & 1 == 1, "ray {i}");
+                blocked += occluded as u32;
+            }
+        }
+        assert!(camera_hits > 200 && blocked > 200, "the test needs hits: {camera_hits}, {blocked}");
     }
 
     #[test]

@@ -68,6 +68,7 @@ pub fn raw_strands(strands: StrandSet) -> Imported {
         radius_scale: 1.0,
         file_colors: true,
         lod: None,
+        visibility: Default::default(),
     };
     Imported { contents: Contents { hair: vec![hair], ..Contents::default() }, ..Imported::default() }
 }
@@ -75,7 +76,12 @@ pub fn raw_strands(strands: StrandSet) -> Imported {
 /// A scene of one mesh, diffuse grey.
 pub fn raw_mesh(mesh: TriangleMesh) -> Imported {
     let material = Material::Diffuse { color: Vec3::splat(0.5) };
-    let mesh = MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform: Affine3A::IDENTITY };
+    let mesh = MeshEntry {
+        source: MeshSource::Inline(mesh),
+        material: material.into(),
+        transform: Affine3A::IDENTITY,
+        visibility: Default::default(),
+    };
     Imported { contents: Contents { meshes: vec![mesh], ..Contents::default() }, ..Imported::default() }
 }
 

@@ -954,7 +954,12 @@ impl Parser {
             }
             "trianglemesh" => {
                 let mesh = triangle_mesh(p)?;
-                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry {
+                    source: MeshSource::Inline(mesh),
+                    material,
+                    transform,
+                    visibility: Default::default(),
+                });
             }
             "plymesh" => {
                 let file = p.string("filename", "")?;
@@ -963,7 +968,12 @@ impl Parser {
                 let bytes = super::gzip::read_file(&path, crate::input_file::Kind::Geometry)
                     .map_err(|e| (p.line, e.to_string()))?;
                 let mesh = super::ply::parse_ply(&bytes, &path).map_err(|e| (p.line, e.to_string()))?;
-                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry {
+                    source: MeshSource::Inline(mesh),
+                    material,
+                    transform,
+                    visibility: Default::default(),
+                });
             }
             "disk" | "cylinder" | "bilinearmesh" => {
                 let mesh = match kind {
@@ -971,7 +981,12 @@ impl Parser {
                     "cylinder" => surfaces::cylinder(p)?,
                     _ => surfaces::bilinear_mesh(p)?,
                 };
-                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry {
+                    source: MeshSource::Inline(mesh),
+                    material,
+                    transform,
+                    visibility: Default::default(),
+                });
             }
             "sphere" => {
                 let r = p.float("radius", 1.0)?;
@@ -979,7 +994,12 @@ impl Parser {
                     return Err((p.line, format!("sphere radius {r} must be positive")));
                 }
                 let mesh = TriangleMesh::sphere(r as f32, 48);
-                self.out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material, transform });
+                self.out.contents.meshes.push(MeshEntry {
+                    source: MeshSource::Inline(mesh),
+                    material,
+                    transform,
+                    visibility: Default::default(),
+                });
             }
             other => {
                 self.warnings.insert(format!("shape \"{other}\" is not supported: skipped"));
@@ -1025,6 +1045,7 @@ impl Parser {
                 radius_scale: 1.0,
                 file_colors: true,
                 lod: None,
+                visibility: Default::default(),
             });
         }
         if let Some(c2w) = self.camera_to_world {

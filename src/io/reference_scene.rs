@@ -78,6 +78,7 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
             source: MeshSource::File(dir.join(&m.obj)),
             material: Material::Diffuse { color: m.diffuse.into() }.into(),
             transform: Affine3A::IDENTITY,
+            visibility: Default::default(),
         })
         .collect();
     let hair = s
@@ -92,6 +93,7 @@ pub fn read_reference_scene(dir: &Path) -> Result<Description, LoadError> {
             radius_scale: 1.0,
             file_colors: false,
             lod: None,
+            visibility: Default::default(),
         })
         .collect();
     Ok(Description {

@@ -424,7 +424,12 @@ fn surface_material(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Mater
 }
 
 fn push_mesh(out: &mut Imported, mesh: crate::geometry::TriangleMesh, material: Material, transform: Affine3A) {
-    out.contents.meshes.push(MeshEntry { source: MeshSource::Inline(mesh), material: material.into(), transform });
+    out.contents.meshes.push(MeshEntry {
+        source: MeshSource::Inline(mesh),
+        material: material.into(),
+        transform,
+        visibility: Default::default(),
+    });
 }
 
 #[cfg(test)]

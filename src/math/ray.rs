@@ -68,12 +68,15 @@ pub struct Ray {
     /// The primitives it leaves from, which no query along it hits (`None` for camera
     /// rays and rays leaving surfaces, which start off the surface instead).
     pub skip: Option<Skip>,
+    /// A camera ray (the camera makes them; every other ray is not): it passes through
+    /// objects hidden from the camera, which every other ray sees.
+    pub camera: bool,
 }
 
 impl Ray {
-    /// A ray from `origin` along unit `dir`, unbounded, with a zero cone.
+    /// A ray from `origin` along unit `dir`, unbounded, with a zero cone, not a camera ray.
     pub fn new(origin: Vec3, dir: Vec3) -> Ray {
-        Ray { origin, dir, tmax: f32::INFINITY, cone: RayCone::default(), skip: None }
+        Ray { origin, dir, tmax: f32::INFINITY, cone: RayCone::default(), skip: None, camera: false }
     }
 
     /// Point at distance `t`.

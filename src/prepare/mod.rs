@@ -14,7 +14,7 @@ pub use estimate::{check_memory, estimate_memory, parse_memory_size, MemoryEstim
 pub use maps::{read_map_images, MAX_MAP_SIDE};
 
 use crate::accel::lod::LodParams;
-use crate::accel::{Accel, Shape};
+use crate::accel::{Accel, Shape, Visibility};
 use crate::camera::Camera;
 use crate::error::{LoadError, PrepareError};
 use crate::geometry::StrandSet;
@@ -46,6 +46,8 @@ pub struct LoadedGeometry {
     pub materials: Vec<Material>,
     /// Level of detail per shape (meshes and strand sets without it: `None`).
     pub lods: Vec<Option<LodParams>>,
+    /// Which rays see each shape.
+    pub visibility: Vec<Visibility>,
     /// What was skipped: strands or triangles whose numbers are not finite once
     /// transformed (enormous coordinates scaled past the float range, NaN from a generator).
     pub warnings: Vec<String>,
@@ -64,6 +66,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
     let mut shapes = Vec::new();
     let mut warnings = Vec::new();
     let mut lods = Vec::new();
+    let mut visibility = Vec::new();
     let mut textures = Textures::default();
     for (i, m) in desc.contents.meshes.iter().enumerate() {
         let mut mesh = match &m.source {
@@ -72,6 +75,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         };
         mesh.transform(&m.transform);
         lods.push(None);
+        visibility.push(m.visibility);
         let dropped = mesh.remove_unusable_triangles();
         warnings.extend(skipped(("mesh", i), dropped, "triangles with corners"));
         shapes.push((Shape::Mesh(mesh), materials.len() as u32));
@@ -115,6 +119,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
             }
         }
         lods.push(h.lod);
+        visibility.push(h.visibility);
         let dropped = strands.remove_unusable_strands();
         warnings.extend(skipped(("hair", i), dropped, "strands with coordinates or radii negative,"));
         shapes.push((Shape::Strands(strands), materials.len() as u32));
@@ -141,6 +146,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         };
         let strands = hair_system::expand(&h.system, &guides, h.colors, h.seed).map_err(what)?;
         lods.push(h.lod);
+        visibility.push(h.visibility);
         shapes.push((Shape::Strands(strands), materials.len() as u32));
         materials.push(material(&h.material, &mut textures).map_err(|e| entry_error(("hair_system", i), e))?);
     }
@@ -166,6 +172,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
         };
         let grown = crate::fur::grow(mesh, &f.description, options).map_err(|e| what(e.to_string()))?;
         lods.push(f.lod);
+        visibility.push(f.visibility);
         shapes.push((Shape::Strands(grown.strands), materials.len() as u32));
         materials.push(Material::Fur(grown.shading));
     }
@@ -179,7 +186,7 @@ fn load_geometry_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> 
             )));
         }
     }
-    Ok(LoadedGeometry { shapes, materials, lods, warnings })
+    Ok(LoadedGeometry { shapes, materials, lods, visibility, warnings })
 }
 
 /// The material of `source`, its textures decoded (each file once, in `textures`).
@@ -267,17 +274,18 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let (w, h) = (desc.settings.width, desc.settings.height);
     let camera = Camera::new(c.eye, c.target, c.up, c.vfov_for(w, h), w, h)?.clipped(c.clip[0], c.clip[1])?;
     let start = Instant::now();
-    let LoadedGeometry { shapes, materials, lods, mut warnings } = load_geometry_taking(desc, taken)?;
+    let LoadedGeometry { shapes, materials, lods, visibility, mut warnings } = load_geometry_taking(desc, taken)?;
     let lights = lights(desc, &mut warnings)?;
     let load = start.elapsed();
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     // The global switch drops every strand set's level of detail.
     let lod = |p: Option<LodParams>| p.filter(|_| desc.settings.lod);
     let lod_camera = crate::accel::lod::LodCamera { eye: c.eye, pixel_spread: camera.pixel_spread() };
-    let accel = Accel::build_with_lod_for(
+    let mut accel = Accel::build_with_lod_for(
         shapes.into_iter().zip(lods).map(|((s, m), l)| (in_spatial_order(s, lod(l)), m, lod(l))).collect(),
         Some(lod_camera),
     );
+    accel.set_visibility(visibility);
     let build = start.elapsed();
     let build_cpu = crate::stats::process_cpu_time().saturating_sub(cpu);
     let background = lights.iter().map(Light::background).sum();

@@ -158,6 +158,9 @@ pub(super) fn trace(
             let Some(hit) = hit else {
                 return (emitted(super::environment::sky(world, ray.dir, depth == 0, |_| 1.0)), None);
             };
+            if tracer.holdout(ray, &hit) {
+                return (Color::ZERO, None);
+            }
             let (color, first) = shade(tracer, ray, &hit, depth, sampler, indirect, shadows);
             return (color, Some(first));
         }
@@ -184,10 +187,13 @@ pub(super) fn trace(
         if blend || last || tail.draw(&layer.hit) < a {
             // Blended by its opacity, or where the tail stops with all the light left.
             let weight = if blend { carried * a } else { carried };
-            let shared = Shadows::Shared(&mut shadows, weight);
-            let (c, f) = shade(tracer, ray, &layer.hit, depth, sampler, indirect, shared);
-            first.get_or_insert(f);
-            color += weight * c;
+            // A holdout layer adds black, and no coverage.
+            if !tracer.holdout(ray, &layer.hit) {
+                let shared = Shadows::Shared(&mut shadows, weight);
+                let (c, f) = shade(tracer, ray, &layer.hit, depth, sampler, indirect, shared);
+                first.get_or_insert(f);
+                color += weight * c;
+            }
             if !blend {
                 break color;
             }

@@ -134,7 +134,8 @@ pub(super) fn trace_camera(
             radiance += beta * sky(world, ray.dir, vertex, scatter_pdf);
             break;
         };
-        if vertex > world.settings.max_depth {
+        // A holdout: black, and no coverage.
+        if vertex > world.settings.max_depth || tracer.holdout(&ray, &hit) {
             break;
         }
         let at = Interaction::new(world, &ray, &hit);

@@ -93,6 +93,14 @@ impl<'w> Tracer<'w> {
             .min_by(|a, b| a.0.total_cmp(&b.0))
     }
 
+    /// True when `hit`, the first hit of `ray`, is a holdout: a camera ray meeting a matte
+    /// object ([`crate::accel::Visibility::matte`]), which leaves its sample black and
+    /// uncovered (alpha 0) as Arnold's `matte` and Cycles' holdout do. Other rays see matte
+    /// objects as any other.
+    pub(super) fn holdout(&self, ray: &Ray, hit: &crate::accel::Hit) -> bool {
+        ray.camera && self.world.accel.has_matte() && self.world.accel.visibility(hit.object).matte
+    }
+
     /// The fraction of light `shadow` lets through (estimated through semi-transparent
     /// hair when it has a seed).
     pub(super) fn transmittance(&mut self, shadow: &ShadowRay) -> f32 {

@@ -42,6 +42,14 @@ impl Contents {
         self.fur.extend(other.fur.into_iter().map(|f| FurEntry { mesh: f.mesh + offset, ..f }));
     }
 
+    /// Every entry's visibility: meshes, strand sets, hair systems and fur.
+    pub fn visibilities_mut(&mut self) -> impl Iterator<Item = &mut super::Visibility> {
+        (self.meshes.iter_mut().map(|e| &mut e.visibility))
+            .chain(self.hair.iter_mut().map(|e| &mut e.visibility))
+            .chain(self.hair_systems.iter_mut().map(|e| &mut e.visibility))
+            .chain(self.fur.iter_mut().map(|e| &mut e.visibility))
+    }
+
     /// Applies `m` on top of every entry's and light's own transform (a TOML `[[import]]`'s
     /// `transform`). Follicle guides and fur follow the meshes they grow on.
     pub fn transform(&mut self, m: &Affine3A) {

@@ -9,6 +9,7 @@ pub use contents::Contents;
 pub use images::{EnvironmentFile, LightSource, MaterialSource, Projection, RoughnessSource, TexturedFiles};
 
 use crate::accel::lod::LodParams;
+pub use crate::accel::Visibility;
 use crate::error::PrepareError;
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::hair_system::{FollicleParams, Guides, HairColors, HairSystem};
@@ -133,6 +134,8 @@ pub struct MeshEntry {
     pub material: MaterialSource,
     /// Object-to-world transform.
     pub transform: Affine3A,
+    /// Which rays see it, and whether it is a holdout.
+    pub visibility: Visibility,
 }
 
 /// A strand set in the scene.
@@ -150,6 +153,8 @@ pub struct HairEntry {
     pub file_colors: bool,
     /// Level of detail (stochastic pruning), when wanted.
     pub lod: Option<LodParams>,
+    /// Which rays see it, and whether it is a holdout.
+    pub visibility: Visibility,
 }
 
 /// Where a hair system's guide curves come from.
@@ -186,6 +191,8 @@ pub struct HairSystemEntry {
     pub seed: u32,
     /// Level of detail (stochastic pruning), when wanted.
     pub lod: Option<LodParams>,
+    /// Which rays see it, and whether it is a holdout.
+    pub visibility: Visibility,
 }
 
 /// Fur grown on one of the scene's meshes (Maya Fur, [`crate::fur`]).
@@ -211,6 +218,8 @@ pub struct FurEntry {
     /// readers set it for a width profile Maya Fur has no attribute for (XGen's taper
     /// and width ramp).
     pub width_profile: Option<Vec<f32>>,
+    /// Which rays see it, and whether it is a holdout.
+    pub visibility: Visibility,
 }
 
 /// Everything a scene says, before any file is read. The default is an empty scene seen

@@ -258,6 +258,7 @@ pub fn fur_entries(fur: &[MayaFur]) -> Result<(Vec<FurEntry>, Vec<String>), (u32
                 lod: None,
                 grows_on: None,
                 width_profile: None,
+                visibility: Default::default(),
             });
         }
     }

@@ -610,6 +610,7 @@ impl<'g> Reader<'g> {
             source: MeshSource::Inline(mesh),
             material: material.into(),
             transform,
+            visibility: Default::default(),
         });
         Ok(())
     }
@@ -813,6 +814,7 @@ impl<'g> Reader<'g> {
             transform: Affine3A::IDENTITY,
             seed: 0,
             lod: None,
+            visibility: Default::default(),
         });
         Ok(())
     }
@@ -1036,6 +1038,7 @@ impl<'g> Reader<'g> {
                 radius_scale: 1.0,
                 file_colors: true,
                 lod: None,
+                visibility: Default::default(),
             });
         }
     }

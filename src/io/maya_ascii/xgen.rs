@@ -421,6 +421,7 @@ impl Reader<'_> {
                     lod: None,
                     grows_on,
                     width_profile: width_profile.clone(),
+                    visibility: Default::default(),
                 });
             }
             self.out.warnings.push(format!(

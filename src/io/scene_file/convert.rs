@@ -13,7 +13,7 @@ use crate::light::{Light, MapPlacement};
 use crate::math::Color;
 use crate::scene::{
     EnvironmentFile, FurEntry, GuideSource, HairSource, HairSystemEntry, LightSource, MaterialSource, Projection,
-    RoughnessSource, TexturedFiles,
+    RoughnessSource, TexturedFiles, Visibility,
 };
 use crate::shading::hair_bsdf::{Absorption, HairParams, PhysicalHair};
 use crate::shading::{tube::Tube, Material};
@@ -161,7 +161,8 @@ pub(super) fn hair_system(h: &HairSystemToml, base: &Path, meshes: usize) -> Res
         None => Affine3A::IDENTITY,
     };
     let lod = h.lod.as_ref().map(LodToml::params).transpose()?;
-    Ok(HairSystemEntry { guides, system: s, material, colors, transform, seed: h.seed, lod })
+    let visibility = visibility_keys(Visibility::default(), (h.camera_visible, h.casts_shadows, h.matte));
+    Ok(HairSystemEntry { guides, system: s, material, colors, transform, seed: h.seed, lod, visibility })
 }
 
 pub(super) fn follicle_mesh(f: &FolliclesToml, meshes: usize) -> Result<usize, String> {
@@ -243,7 +244,21 @@ pub(super) fn fur(f: &FurToml, meshes: usize, base: &Path) -> Result<FurEntry, S
         lod: f.lod.as_ref().map(LodToml::params).transpose()?,
         grows_on: None,
         width_profile: None,
+        visibility: visibility_keys(Visibility::default(), (f.camera_visible, f.casts_shadows, f.matte)),
     })
+}
+
+/// `base` with the switches an entry's `camera_visible`, `casts_shadows` and `matte` keys
+/// give (each key not given keeps `base`'s).
+pub(super) fn visibility_keys(
+    base: Visibility,
+    (camera, shadows, matte): (Option<bool>, Option<bool>, Option<bool>),
+) -> Visibility {
+    Visibility {
+        camera: camera.unwrap_or(base.camera),
+        shadows: shadows.unwrap_or(base.shadows),
+        matte: matte.unwrap_or(base.matte),
+    }
 }
 
 pub(super) fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {

@@ -12,11 +12,11 @@ mod animation;
 mod convert;
 mod schema;
 
-use crate::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource};
+use crate::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource, Visibility};
 use crate::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
 pub use animation::{at_frame, has_pattern};
 use animation::{camera_at, frame_warning};
-use convert::{fur, hair_system, light, material, procedural, transform};
+use convert::{fur, hair_system, light, material, procedural, transform, visibility_keys};
 use schema::{IrradianceCacheToml, LodToml, SceneToml};
 use std::path::{Path, PathBuf};
 
@@ -161,6 +161,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             source,
             material: material(&m.material, base).map_err(what)?,
             transform: transform(&m.transform).map_err(what)?,
+            visibility: visibility_keys(Visibility::default(), (m.camera_visible, m.casts_shadows, m.matte)),
         });
     }
     for (i, h) in scene.hair.iter().enumerate() {
@@ -172,6 +173,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
             radius_scale: h.radius_scale,
             file_colors: h.file_colors,
             lod: h.lod.as_ref().map(LodToml::params).transpose().map_err(what)?,
+            visibility: visibility_keys(Visibility::default(), (h.camera_visible, h.casts_shadows, h.matte)),
         });
     }
     for (i, h) in scene.hair_system.iter().enumerate() {
@@ -203,6 +205,9 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
         warnings.extend(imported.warnings.iter().map(|w| format!("{}: {w}", file.display())));
         if !imp.lights {
             imported.contents.lights.clear();
+        }
+        for v in imported.contents.visibilities_mut() {
+            *v = visibility_keys(*v, (imp.camera_visible, imp.casts_shadows, imp.matte));
         }
         contents.append(imported.contents);
     }

@@ -78,6 +78,10 @@ pub(super) struct ImportToml {
     pub(super) width: Option<f32>,
     /// Every strand's radius multiplied by this.
     pub(super) radius_scale: Option<f32>,
+    /// Visibility set on every imported object (each key given overrides the file's).
+    pub(super) camera_visible: Option<bool>,
+    pub(super) casts_shadows: Option<bool>,
+    pub(super) matte: Option<bool>,
 }
 
 #[derive(Deserialize)]
@@ -477,6 +481,9 @@ pub(super) struct MeshToml {
     pub(super) material: MaterialToml,
     #[serde(default)]
     pub(super) transform: TransformToml,
+    pub(super) camera_visible: Option<bool>,
+    pub(super) casts_shadows: Option<bool>,
+    pub(super) matte: Option<bool>,
 }
 
 #[derive(Deserialize)]
@@ -491,6 +498,9 @@ pub(super) struct HairToml {
     #[serde(default = "default_true")]
     pub(super) file_colors: bool,
     pub(super) lod: Option<LodToml>,
+    pub(super) camera_visible: Option<bool>,
+    pub(super) casts_shadows: Option<bool>,
+    pub(super) matte: Option<bool>,
 }
 
 /// `lod = { decimation = 1.5, levels = 8, compensation = 0.8, contrast = false }`, every
@@ -562,6 +572,9 @@ pub(super) struct HairSystemToml {
     pub(super) hue_rand: Option<f32>,
     pub(super) sat_rand: Option<f32>,
     pub(super) val_rand: Option<f32>,
+    pub(super) camera_visible: Option<bool>,
+    pub(super) casts_shadows: Option<bool>,
+    pub(super) matte: Option<bool>,
 }
 
 /// `follicles = { mesh = 1, placement = "grid", u = 10, v = 10, ... }`.
@@ -620,6 +633,9 @@ pub(super) struct FurToml {
     pub(super) guides: Option<PathBuf>,
     pub(super) attractors: Option<AttractorsToml>,
     pub(super) lod: Option<LodToml>,
+    pub(super) camera_visible: Option<bool>,
+    pub(super) casts_shadows: Option<bool>,
+    pub(super) matte: Option<bool>,
     #[serde(flatten)]
     pub(super) attributes: toml::Table,
 }

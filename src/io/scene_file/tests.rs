@@ -428,3 +428,50 @@ fn reads_the_pixel_filter() {
         assert!(e.contains("dir/test.toml") && e.contains(names), "{e}");
     }
 }
+
+#[test]
+fn entries_and_imports_take_visibility_keys() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let text = format!(
+        r#"{MINIMAL}
+[[mesh]]
+shape = {{ type = "sphere", radius = 1.0 }}
+material = {{ type = "diffuse", color = [0.5, 0.5, 0.5] }}
+camera_visible = false
+[[mesh]]
+shape = {{ type = "plane", size = 1.0 }}
+material = {{ type = "diffuse", color = [0.5, 0.5, 0.5] }}
+[[hair]]
+file = "h.hair"
+material = {{ type = "tube" }}
+casts_shadows = false
+matte = true
+[[fur]]
+mesh = 2
+matte = true
+[[hair_system]]
+follicles = {{ mesh = 2 }}
+camera_visible = false
+[[import]]
+file = "tri.obj"
+casts_shadows = false
+"#
+    );
+    let d = scene(&text, &dir.path().join("s.toml")).unwrap();
+    let v = |camera, shadows, matte| Visibility { camera, shadows, matte };
+    let c = &d.contents;
+    assert_eq!(
+        c.meshes.iter().map(|m| m.visibility).collect::<Vec<_>>(),
+        [v(false, true, false), v(true, true, false), v(true, false, false)]
+    );
+    assert_eq!(c.hair[0].visibility, v(true, false, true));
+    assert_eq!(c.fur[0].visibility, v(true, true, true));
+    // A fur key is not a fur attribute.
+    assert_eq!(c.fur[0].description, FurDescription::default());
+    assert_eq!(c.hair_systems[0].visibility, v(false, true, false));
+    let e = parse("[[mesh]]\nshape = { type = \"plane\" }\nmaterial = { type = \"diffuse\" }\nmatte = 1\n")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("matte") && e.contains("bool"), "{e}");
+}

@@ -197,6 +197,7 @@ fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> HairEnt
         radius_scale: 1.0,
         file_colors: true,
         lod: None,
+        visibility: Default::default(),
     }
 }
 
