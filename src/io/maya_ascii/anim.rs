@@ -155,6 +155,8 @@ fn applied(kind: &str, attr: &str) -> bool {
         "transform" => TRANSFORM_ATTRS.contains(&attr),
         "camera" => CAMERA_ATTRS.contains(&attr),
         k if LIGHTS.contains(&k) => LIGHT_ATTRS.contains(&attr),
+        // A mesh's point tweaks by component (`pt[3].px`), which Maya keys one curve each.
+        "mesh" if super::tweak_component(attr).is_some() => true,
         k if SHAPES.contains(&k) => matches!(attr, "v" | "visibility"),
         "lambert" | "blinn" | "phong" | "phongE" => LAMBERT_ATTRS.contains(&attr),
         "surfaceShader" => SURFACE_SHADER_ATTRS.contains(&attr),
@@ -506,7 +508,7 @@ pub fn apply(g: &mut Graph, time: f64) -> (Vec<String>, usize) {
         let attr = c.dst_attr.as_str();
         if !applied(&dst.kind, attr) {
             // By node type (a default node the file only selects, by its name), indices
-            // dropped: `mesh.pt[].px`.
+            // dropped: `nurbsCurve.cp[].xv`.
             let kind = if dst.kind.is_empty() { dst.name.as_str() } else { dst.kind.as_str() };
             let mut plug = String::with_capacity(attr.len());
             let mut inside = false;

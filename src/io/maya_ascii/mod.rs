@@ -566,11 +566,31 @@ impl<'g> Reader<'g> {
                     true => Some(src),
                     false => self.rest_shape(n, stores),
                 };
+                // The shape's own point tweaks go on top of what its history builds; only a
+                // primitive whose vertices are Maya's says where each one goes.
+                let tweaks = point_tweaks(g, n)?;
                 let built = match from {
-                    Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?.map(|(m, f)| (m, Faces::Of(f))),
-                    Some(f) => self.procedural(f)?.map(|(m, count)| (m, Faces::Count(count))),
+                    Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?.map(|(m, f)| (m, Faces::Of(f), None)),
+                    Some(f) => self.procedural(f)?.map(|p| (p.mesh, Faces::Count(p.faces), p.maya_ids)),
                     None => None,
                 };
+                let built = built.map(|(mut m, faces, ids)| {
+                    match ids.filter(|_| from == Some(src)) {
+                        Some(ids) => {
+                            for (p, id) in m.positions.iter_mut().zip(ids) {
+                                *p += tweaks.get(&(id as usize)).copied().unwrap_or_default().as_vec3();
+                            }
+                        }
+                        None if !tweaks.is_empty() => self.out.warnings.push(format!(
+                            "mesh {}: the point tweaks of {} vertices are not applied to what its `{}` history builds",
+                            node.name,
+                            tweaks.len(),
+                            self.kind(src)
+                        )),
+                        None => {}
+                    }
+                    (m, faces)
+                });
                 match built {
                     Some(m) => m,
                     None => {
@@ -615,9 +635,9 @@ impl<'g> Reader<'g> {
         Ok(())
     }
 
-    /// A mesh built by a primitive node, from that node's attributes (Maya's defaults when
-    /// unset), and how many faces Maya gives it; `None` for other history.
-    fn procedural(&self, src: usize) -> Res<Option<(TriangleMesh, u32)>> {
+    /// The mesh a primitive node builds, from that node's attributes (Maya's defaults when
+    /// unset); `None` for other history.
+    fn procedural(&self, src: usize) -> Res<Option<Primitive>> {
         let g = self.g;
         let check = |v: f64, what: &str| -> Res<f32> {
             match v.is_finite() && v > 0.0 && v < 1e12 {
@@ -632,14 +652,14 @@ impl<'g> Reader<'g> {
             "polySphere" => {
                 let (sa, sh) =
                     (divisions(&["sa", "subdivisionsAxis"], 20.0)?, divisions(&["sh", "subdivisionsHeight"], 20.0)?);
-                let mut m = poly_sphere(check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?, sa, sh);
+                let (mut m, ids) = poly_sphere(check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?, sa, sh);
                 let axis = vec3(g, src, &["ax", "axis"], &[["axx", "axisX"], ["axy", "axisY"], ["axz", "axisZ"]], 0.0)?;
                 if let Some(axis) = axis.as_vec3().try_normalize().filter(|_| attr(g, src, &["ax", "axis"]).is_some()) {
                     m.transform(&Affine3A::from_quat(glam::Quat::from_rotation_arc(Vec3::Y, axis)));
                 }
                 // Quads between the rings and a triangle (three Ptex faces) per column at
                 // each pole.
-                Some((m, sa * (sh - 2) + 6 * sa))
+                Some(Primitive { mesh: m, faces: sa * (sh - 2) + 6 * sa, maya_ids: Some(ids) })
             }
             "polyTorus" => {
                 let (sa, sh) =
@@ -650,7 +670,7 @@ impl<'g> Reader<'g> {
                     sa,
                     sh,
                 );
-                Some((m, sa * sh))
+                Some(Primitive { mesh: m, faces: sa * sh, maya_ids: None })
             }
             "polyPlane" => {
                 let w = check(scalar(g, src, &["w", "width"], 1.0)?, "width")?;
@@ -659,7 +679,8 @@ impl<'g> Reader<'g> {
                 m.transform(&Affine3A::from_scale(Vec3::new(w, 1.0, h)));
                 // Drawn as one quad; Maya divides it into a grid of faces (10 × 10 unless set).
                 let grid = |names: &[&str]| -> Res<u32> { Ok(scalar(g, src, names, 10.0)?.clamp(1.0, 1000.0) as u32) };
-                Some((m, grid(&["sw", "subdivisionsWidth"])? * grid(&["sh", "subdivisionsHeight"])?))
+                let faces = grid(&["sw", "subdivisionsWidth"])? * grid(&["sh", "subdivisionsHeight"])?;
+                Some(Primitive { mesh: m, faces, maya_ids: None })
             }
             _ => None,
         })
@@ -1475,14 +1496,18 @@ fn scalar(g: &Graph, n: usize, names: &[&str], default: f64) -> Res<f64> {
 /// `−90° + 180° i / sh`, vertex `j` at azimuth `360° (j + 1) / sa` turning from +X towards
 /// −Z), UV `(j / sa, i / sh)` with the seam column repeated at u = 1, and a triangle fan
 /// at each pole whose apex sits at the middle of its column, `v` 0 below and 1 above.
-fn poly_sphere(radius: f32, sa: u32, sh: u32) -> TriangleMesh {
+/// With it, the Maya vertex each of its vertices is (what point tweaks are indexed by):
+/// Maya numbers the rings' vertices first, ring by ring from the bottom, then the −Y and
+/// the +Y pole.
+fn poly_sphere(radius: f32, sa: u32, sh: u32) -> (TriangleMesh, Vec<u32>) {
     use std::f32::consts::{FRAC_PI_2, PI, TAU};
     let mut m = TriangleMesh::default();
-    let (mut normals, mut uvs) = (Vec::new(), Vec::new());
-    let mut push = |n: Vec3, uv: [f32; 2], m: &mut TriangleMesh| {
+    let (mut normals, mut uvs, mut ids) = (Vec::new(), Vec::new(), Vec::new());
+    let mut push = |n: Vec3, uv: [f32; 2], id: u32, m: &mut TriangleMesh| {
         m.positions.push(n * radius);
         normals.push(n);
         uvs.push(uv);
+        ids.push(id);
         m.positions.len() as u32 - 1
     };
     // ring[i][j], i in 1..sh, j in 0..=sa (j = sa: the seam again at u = 1).
@@ -1492,7 +1517,8 @@ fn poly_sphere(radius: f32, sa: u32, sh: u32) -> TriangleMesh {
         for j in 0..=sa {
             let a = TAU * ((j % sa) + 1) as f32 / sa as f32;
             let n = Vec3::new(lat.cos() * a.cos(), lat.sin(), -lat.cos() * a.sin());
-            r.push(push(n, [j as f32 / sa as f32, i as f32 / sh as f32], &mut m));
+            let id = (i as u32 - 1) * sa + j % sa;
+            r.push(push(n, [j as f32 / sa as f32, i as f32 / sh as f32], id, &mut m));
         }
     }
     let tri = |t: [u32; 3], m: &mut TriangleMesh| {
@@ -1503,9 +1529,9 @@ fn poly_sphere(radius: f32, sa: u32, sh: u32) -> TriangleMesh {
     };
     for j in 0..sa as usize {
         let u = (j as f32 + 0.5) / sa as f32;
-        let bottom = push(Vec3::NEG_Y, [u, 0.0], &mut m);
+        let bottom = push(Vec3::NEG_Y, [u, 0.0], (sh - 1) * sa, &mut m);
         tri([bottom, ring[1][j], ring[1][j + 1]], &mut m);
-        let top = push(Vec3::Y, [u, 1.0], &mut m);
+        let top = push(Vec3::Y, [u, 1.0], (sh - 1) * sa + 1, &mut m);
         let last = &ring[sh as usize - 1];
         tri([top, last[j + 1], last[j]], &mut m);
         for i in 1..sh as usize - 1 {
@@ -1516,7 +1542,7 @@ fn poly_sphere(radius: f32, sa: u32, sh: u32) -> TriangleMesh {
     }
     m.normals = Some(normals);
     m.uvs = Some(uvs);
-    m
+    (m, ids)
 }
 
 /// A three-component attribute set whole (`.t`) or by component (`.tx`), in file order.
@@ -1587,6 +1613,52 @@ fn element_range(name: &str, base: &str) -> Option<(usize, Option<usize>)> {
             Some((a, Some(a)))
         }
     }
+}
+
+/// The vertex and axis (0 x, 1 y, 2 z) of one component of a mesh's point tweak,
+/// `pt[3].px` (`pnts[3].pntx` in long names).
+fn tweak_component(name: &str) -> Option<(usize, usize)> {
+    let (base, rest) = name.split_once('[')?;
+    let (index, leaf) = rest.split_once("].")?;
+    let axis = match (base, leaf) {
+        ("pt" | "pnts", "px" | "pntx") => 0,
+        ("pt" | "pnts", "py" | "pnty") => 1,
+        ("pt" | "pnts", "pz" | "pntz") => 2,
+        _ => return None,
+    };
+    Some((index.parse().ok()?, axis))
+}
+
+/// A mesh's point tweaks by vertex: the offsets Maya adds to its vertices (or to those its
+/// construction history builds), set whole (`.pt[0:5]`, three numbers a vertex) or by
+/// component (`.pt[3].px`, also what an animation curve drives), in file order.
+fn point_tweaks(g: &Graph, n: usize) -> Res<BTreeMap<usize, DVec3>> {
+    let mut out: BTreeMap<usize, DVec3> = BTreeMap::new();
+    for a in &g.nodes[n].attrs {
+        if let Some((i, axis)) = tweak_component(&a.name) {
+            match &a.value {
+                Value::Numbers(v) if v.len() == 1 => out.entry(i).or_default()[axis] = v[0],
+                _ => return Err((a.line, format!("{}: `{}` must be one number", g.nodes[n].name, a.name))),
+            }
+        }
+        let Some((start, end)) = element_range(&a.name, "pt").or_else(|| element_range(&a.name, "pnts")) else {
+            continue;
+        };
+        let v = match &a.value {
+            Value::Numbers(v)
+                if v.len() % 3 == 0 && end.is_none_or(|e| e >= start && v.len() == 3 * (e - start + 1)) =>
+            {
+                v
+            }
+            _ => {
+                return Err((a.line, format!("{}: `{}` must be three numbers a vertex", g.nodes[n].name, a.name)));
+            }
+        };
+        for (k, d) in v.chunks(3).enumerate() {
+            out.insert(start + k, DVec3::new(d[0], d[1], d[2]));
+        }
+    }
+    Ok(out)
 }
 
 /// Elements of `k` numbers of an array attribute (written in chunks like `vt[0:99]`),
@@ -1672,7 +1744,7 @@ fn tangent_u(mesh: &TriangleMesh, t: u32) -> Option<Vec3> {
 fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>> {
     let node = &g.nodes[n];
     let vt = dense(g, n, "vertex", elements(g, n, &["vt", "vrts"], 3)?)?;
-    let tweaks = elements(g, n, &["pt", "pnts"], 3)?;
+    let tweaks = point_tweaks(g, n)?;
     let edges = dense(g, n, "edge", elements(g, n, &["ed", "edge"], 3)?)?;
     let uvs = dense(g, n, "uv", elements(g, n, &["uvst[0].uvsp", "uvSet[0].uvSetPoints"], 2)?)?;
     let mut chunks: Vec<(usize, u32, &Vec<Face>)> = Vec::new();
@@ -1691,7 +1763,7 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>
     let mut positions: Vec<Vec3> = vt.iter().map(|v| DVec3::new(v[0], v[1], v[2]).as_vec3()).collect();
     for (i, d) in tweaks {
         if let Some(p) = positions.get_mut(i) {
-            *p += DVec3::new(d[0], d[1], d[2]).as_vec3();
+            *p += d.as_vec3();
         }
     }
     let has_uvs = !uvs.is_empty();
@@ -1758,6 +1830,17 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>
         mesh.normals = Some(original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect());
     }
     Ok(Some((mesh, face_of)))
+}
+
+/// A mesh a primitive node (`polySphere`, ...) builds.
+struct Primitive {
+    /// Its triangles.
+    mesh: TriangleMesh,
+    /// How many (Ptex) faces Maya gives it.
+    faces: u32,
+    /// The Maya vertex number of each of its vertices (what point tweaks are indexed by),
+    /// when tress builds Maya's vertices.
+    maya_ids: Option<Vec<u32>>,
 }
 
 /// How a drawn mesh's triangles relate to the faces an XGen patch lists. XGen numbers

@@ -420,7 +420,7 @@ fn cameras_clip_at_their_near_and_far_planes_in_the_files_unit() {
 #[test]
 fn poly_spheres_have_mayas_uv_layout_so_every_follicle_finds_its_place() {
     use crate::hair_system::follicles::follicles_at_uvs;
-    let m = poly_sphere(2.0, 20, 20);
+    let (m, _) = poly_sphere(2.0, 20, 20);
     assert!(m.positions.iter().all(|p| (p.length() - 2.0).abs() < 1e-5));
     // Between the pole fans' triangles the layout has gaps, as Maya's has: a follicle
     // there (the MtoA hair tests put one at (0.09375, 0.03125)) takes the nearest UV, on
@@ -1467,4 +1467,68 @@ fn face_chunks_after_the_first_take_its_polyfaces_type() {
     assert!(e.starts_with("dir/scene.ma: line 3:") && e.contains("polyFaces"), "{e}");
     let e = read(&mesh("").replace("f 4 1 6", "f 9 1 6")).unwrap_err().to_string();
     assert!(e.starts_with("dir/scene.ma: line 7:") && e.contains("polyFaces"), "{e}");
+}
+
+#[test]
+fn point_tweaks_move_stored_and_primitive_vertices() {
+    let positions = |s: &Imported| {
+        let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+        m.positions.clone()
+    };
+    // The 2 × 1 plane (vertices -2 0 1, 0 0 1, 2 0 1, -2 0 -1, 0 0 -1, 2 0 -1): vertices 1
+    // and 2 tweaked whole, vertex 4 by one component and vertex 5 by one then another
+    // (the later one wins), vertex 1's x component last of all.
+    let plane = "createNode mesh -n m;\n\tsetAttr -s 6 \".vt[0:5]\" -2 0 1 0 0 1 2 0 1 -2 0 -1 0 0 -1 2 0 -1;\n\
+                 \tsetAttr -s 7 \".ed[0:6]\" 0 1 0 1 2 0 3 4 0 4 5 0 0 3 0 1 4 0 2 5 0;\n\
+                 \tsetAttr -s 2 \".fc[0:1]\" -type \"polyFaces\" f 4 0 5 -3 -5 f 4 1 6 -4 -6 ;\n\
+                 \tsetAttr -s 2 \".pt[1:2]\" -type \"float3\" 0 1 0 0 0 3;\n\tsetAttr \".pt[4].py\" 0.5;\n\
+                 \tsetAttr \".pnts[5].pntz\" 7;\n\tsetAttr \".pt[5].pz\" -2;\n\tsetAttr \".pt[1].px\" 0.25;\n";
+    let p = positions(&read(plane).unwrap());
+    let want =
+        [[-2.0, 0.0, 1.0], [0.25, 1.0, 1.0], [2.0, 0.0, 4.0], [-2.0, 0.0, -1.0], [0.0, 0.5, -1.0], [2.0, 0.0, -3.0]];
+    for w in want {
+        assert!(p.iter().any(|q| close(*q, Vec3::from(w))), "{w:?} not in {p:?}");
+    }
+    assert_eq!(p.len(), 6);
+    // A polySphere of 4 columns and 3 rows (radius 1), Maya's numbering: the rings from the
+    // bottom, each from azimuth 90° (from +X towards -Z), then the -Y and the +Y pole.
+    // Vertex 0 is the first of the bottom ring, at latitude -30°, (0, -0.5, -0.866); vertex 5
+    // the second of the top ring, at azimuth 180°, (-0.866, 0.5, 0); vertex 8 the bottom
+    // pole, 9 the top one. Tweaked, all move, vertex 0 on both sides of the UV seam and each
+    // pole in all 4 of its fan's copies.
+    let sphere =
+        "createNode transform -n p;\ncreateNode mesh -n ps -p p;\n\tsetAttr \".pt[0]\" -type \"float3\" 1 0 0;\n\
+                  \tsetAttr \".pt[9].py\" 1;\n\tsetAttr \".pnts[8].pnty\" -1;\n\tsetAttr \".pt[5].pz\" 2;\n\
+                  createNode polySphere -n sph;\n\tsetAttr \".sa\" 4;\n\tsetAttr \".sh\" 3;\n\
+                  connectAttr \"sph.out\" \"ps.i\";\n";
+    let p = positions(&read(sphere).unwrap());
+    let ring = 0.75f32.sqrt();
+    let moved = Vec3::new(1.0, -0.5, -ring);
+    assert_eq!(p.iter().filter(|q| close(**q, moved)).count(), 2, "{p:?}");
+    assert!(!p.iter().any(|q| close(*q, moved - Vec3::X)), "{p:?}");
+    assert_eq!(p.iter().filter(|q| close(**q, 2.0 * Vec3::Y)).count(), 4, "{p:?}");
+    assert_eq!(p.iter().filter(|q| close(**q, -2.0 * Vec3::Y)).count(), 4, "{p:?}");
+    assert_eq!(p.iter().filter(|q| close(**q, Vec3::new(-ring, 0.5, 2.0))).count(), 1, "{p:?}");
+    assert!(p.iter().all(|q| q.length() < 1.0 + 1e-6
+        || [moved, 2.0 * Vec3::Y, -2.0 * Vec3::Y, Vec3::new(-ring, 0.5, 2.0)].iter().any(|m| close(*q, *m))));
+    // Animated (Maya keys each component on its own curve), the tweak is the curve's value
+    // at the frame: vertex 4, the first of the top ring (0, 0.5, -0.866), 0 up at frame 1,
+    // 2 at frame 11, 1 at frame 6.
+    let keyed = format!(
+        "{sphere}createNode animCurveTL -n ps_pnts_4__pnty;\n\tsetAttr \".tan\" 2;\n\
+         \tsetAttr -s 2 \".ktv[0:1]\"  1 0 11 2;\nconnectAttr \"ps_pnts_4__pnty.o\" \"ps.pt[4].py\";\n"
+    );
+    for (frame, up) in [(1, 0.0), (6, 1.0), (11, 2.0)] {
+        let s = parse_maya_with(&keyed, Path::new("dir/anim.ma"), None, Some(frame)).unwrap();
+        assert!(s.warnings.iter().all(|w| !w.contains("mesh.pt")), "{:?}", s.warnings);
+        let p = positions(&s);
+        assert_eq!(p.iter().filter(|q| close(**q, Vec3::new(0.0, 0.5 + up, -ring))).count(), 2, "{frame}: {p:?}");
+    }
+    // On a primitive whose vertices tress does not number as Maya (a plane drawn as one
+    // quad), the tweaks are said, not applied.
+    let s = read(&sphere.replace("polySphere", "polyPlane")).unwrap();
+    assert!(s.warnings.iter().any(|w| w.contains("ps: the point tweaks of 4 vertices")), "{:?}", s.warnings);
+    // A tweak that is not one number per component is an error with its line.
+    let e = read(&plane.replace("\".pt[4].py\" 0.5", "\".pt[4].py\" 0.5 1")).unwrap_err().to_string();
+    assert!(e.starts_with("dir/scene.ma: line 6:"), "{e}");
 }
