@@ -9,6 +9,7 @@
 //! - `Mesh` and the gprims `Sphere`, `Cube`, `Cylinder`, `Cone`, `Capsule` to meshes,
 //!   coloured by a bound `UsdPreviewSurface`'s `diffuseColor` or `displayColor`
 //!   ([`shapes`]);
+//! - `PointInstancer` prims to a copy of their prototype per instance ([`instancer`]);
 //! - `Camera` to the camera ([`camera`]), `--camera PATH` or the first one;
 //! - UsdLux lights ([`lights`]);
 //! - UsdSkel: meshes and curves bound to a skeleton are skinned at the time code
@@ -32,6 +33,7 @@ pub mod camera;
 pub mod crate_file;
 pub mod curves;
 mod export;
+pub mod instancer;
 pub mod layer;
 pub mod lights;
 pub mod shapes;
@@ -43,13 +45,13 @@ pub use export::{usda_text, write_usd};
 use super::imported::Imported;
 use super::ImportOptions;
 use crate::error::LoadError;
-use crate::scene::{MaterialSource, MeshEntry, MeshSource};
+use crate::scene::{Contents, HairEntry, HairSource, MaterialSource, MeshEntry, MeshSource};
 use crate::shading::Material;
 use glam::{Affine3A, DMat4, Vec3};
 use openusd::schemas::geom::{Imageable, Visibility, Xformable};
 use openusd::sdf;
 use openusd::usd::{Prim, PrimPredicate, SchemaBase, SchemaKind, Stage, TimeCode};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
 use values::{token, Res};
 
@@ -235,9 +237,16 @@ fn check_op_order(x: &AnyPrim) -> Res<()> {
 /// The prim's local-to-world matrix at `time`: its ancestors' transform ops, outermost
 /// first, up to one that resets the stack.
 fn world_matrix(stage: &Stage, path: &sdf::Path, time: TimeCode) -> Res<DMat4> {
+    matrix_below(stage, path, None, time)
+}
+
+/// The prim's matrix into the space of its ancestor `above` (the world with `None`): the
+/// transform ops of the prims between them, outermost first, up to one that resets the
+/// stack.
+fn matrix_below(stage: &Stage, path: &sdf::Path, above: Option<&sdf::Path>, time: TimeCode) -> Res<DMat4> {
     let mut chain = vec![path.clone()];
     while let Some(p) = chain.last().and_then(|p| p.parent()) {
-        if p.as_str() == "/" || p.as_str().is_empty() {
+        if p.as_str() == "/" || p.as_str().is_empty() || Some(&p) == above {
             break;
         }
         chain.push(p);
@@ -252,6 +261,15 @@ fn world_matrix(stage: &Stage, path: &sdf::Path, time: TimeCode) -> Res<DMat4> {
     Ok(m)
 }
 
+/// A finite matrix as the transform of a scene entry.
+fn affine(m: DMat4, path: &sdf::Path) -> Res<Affine3A> {
+    let transform = Affine3A::from_mat4(m.as_mat4());
+    if !transform.is_finite() {
+        anyhow::bail!("{path}: its transform is not finite");
+    }
+    Ok(transform)
+}
+
 /// The composed stage at the options' time code into `out`.
 fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes: &mut Notes) -> Res<()> {
     let time = TimeCode::new(options.frame.map_or_else(|| stage.start_time_code(), f64::from));
@@ -262,33 +280,49 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
     stage.traverse(PrimPredicate::DEFAULT_PROXIES, |p| paths.push(p.clone()))?;
     let mut cameras = Vec::new();
     let mut poses = skel::Poses::default();
-    for path in paths {
+    // A PointInstancer's own subtree (where its prototypes usually live) is drawn through
+    // its instances only, as in USD's renderers.
+    let mut instancer_below: Option<String> = None;
+    let order: HashMap<&str, usize> = paths.iter().enumerate().map(|(i, p)| (p.as_str(), i)).collect();
+    for path in &paths {
+        if instancer_below.as_ref().is_some_and(|below| path.as_str().starts_with(below.as_str())) {
+            continue;
+        }
         let prim = stage.prim(path.clone());
         let kind = prim.type_name()?.map(|t| t.as_str().to_string()).unwrap_or_default();
         if kind == "RenderSettings" && out.resolution.is_none() {
             out.resolution = render_resolution(&prim, time)?;
         }
-        let readable = matches!(kind.as_str(), "BasisCurves" | "NurbsCurves" | "Mesh" | "Camera")
-            || shapes::GPRIMS.contains(&kind.as_str())
-            || lights::LIGHT_TYPES.contains(&kind.as_str());
-        if !readable {
+        let drawable = is_drawable(&kind);
+        if !drawable
+            && !matches!(kind.as_str(), "Camera" | "PointInstancer")
+            && !lights::LIGHT_TYPES.contains(&kind.as_str())
+        {
             if !STRUCTURE.contains(&kind.as_str()) {
                 notes.note(format!("`{kind}` prims: not read"), &prim);
             }
             continue;
         }
+        if kind == "PointInstancer" {
+            instancer_below = Some(format!("{path}/"));
+        }
         if kind != "Camera" && AnyPrim(prim.clone()).compute_visibility()? == Visibility::Invisible {
             continue;
         }
-        let skin = match kind.as_str() {
-            "Camera" => None,
-            k if lights::LIGHT_TYPES.contains(&k) => None,
-            _ => skel::skinning(&prim, time, &mut poses, notes)?,
+        if kind == "PointInstancer" {
+            let world = up_fix * world_matrix(stage, path, time)?;
+            let stage_prims = StagePrims { stage, paths: &paths, order: &order, time };
+            stage_prims.instance(&prim, world, 0, &mut out.contents, notes)?;
+            continue;
+        }
+        let skin = match drawable {
+            true => skel::skinning(&prim, time, &mut poses, notes)?,
+            false => None,
         };
         // Skinned points are in the Skeleton's space: its transform places them, the prim's
         // own no longer applies (UsdSkel, "Schemas In-Depth").
         let mut world =
-            up_fix * skin.as_ref().map_or_else(|| world_matrix(stage, &path, time), |s| Ok(s.skel_to_world))?;
+            up_fix * skin.as_ref().map_or_else(|| world_matrix(stage, path, time), |s| Ok(s.skel_to_world))?;
         if let (Some(s), true) = (&skin, shapes::GPRIMS.contains(&kind.as_str())) {
             // Gprims have no points: a rigid binding moves them whole; influences per point
             // cannot apply.
@@ -296,68 +330,19 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                 Some(m) => world *= m,
                 None => {
                     notes.note("UsdSkel per-point influences on gprims: drawn in the rest pose".into(), &prim);
-                    world = up_fix * world_matrix(stage, &path, time)?;
+                    world = up_fix * world_matrix(stage, path, time)?;
                 }
             }
         }
         let skin = skin.filter(|_| !shapes::GPRIMS.contains(&kind.as_str()));
-        let transform = Affine3A::from_mat4(world.as_mat4());
-        if !transform.is_finite() {
-            anyhow::bail!("{path}: its transform is not finite");
-        }
-        let what = |e: anyhow::Error| e.context(format!("{path}"));
+        let transform = affine(world, path)?;
         match kind.as_str() {
-            "BasisCurves" | "NurbsCurves" => {
-                let read = if kind == "BasisCurves" { curves::read_basis_curves } else { curves::read_nurbs_curves };
-                let read = match read(&prim, time, transform, skin.as_ref(), notes) {
-                    Ok(read) => read,
-                    Err(e) => {
-                        skip(notes, &prim, e);
-                        continue;
-                    }
-                };
-                if let Some(mut entry) = read {
-                    // Arnold's hair shader, when bound, is what Arnold draws the curves with.
-                    if let Some(material) = shapes::bound_standard_hair(&prim, time, notes)? {
-                        entry.material = material.into();
-                    } else if !has_display_color(&prim, time) {
-                        if let (Some(c), MaterialSource::Inline(Material::Tube(t))) =
-                            (shapes::surface_color(&prim, time, notes)?, &mut entry.material)
-                        {
-                            (t.ambient, t.diffuse) = (c, c);
-                        }
-                    }
-                    out.contents.hair.push(entry);
-                }
-            }
             "Camera" => cameras.push((prim, transform)),
-            "Mesh" => {
-                let mesh = match shapes::read_mesh(&prim, time, skin.as_ref()) {
-                    Ok(mesh) => mesh,
-                    Err(e) => {
-                        skip(notes, &prim, e);
-                        continue;
-                    }
-                };
-                if token(values::value(&prim, "subdivisionScheme", time)?, "catmullClark") != "none" {
-                    notes.note("subdivision surfaces: drawn as their control cage".into(), &prim);
-                }
-                push_mesh(out, mesh, surface_material(&prim, time, notes).map_err(what)?, transform);
-            }
-            k if shapes::GPRIMS.contains(&k) => {
-                let mesh = match shapes::read_gprim(&prim, k, time) {
-                    Ok(mesh) => mesh,
-                    Err(e) => {
-                        skip(notes, &prim, e);
-                        continue;
-                    }
-                };
-                push_mesh(out, mesh, surface_material(&prim, time, notes).map_err(what)?, transform);
-            }
-            light => out
-                .contents
-                .lights
-                .extend(lights::read_light(&prim, light, &transform, time, z_up, notes).map_err(what)?),
+            light if lights::LIGHT_TYPES.contains(&light) => out.contents.lights.extend(
+                lights::read_light(&prim, light, &transform, time, z_up, notes)
+                    .map_err(|e| e.context(format!("{path}")))?,
+            ),
+            _ => read_drawable(&prim, &kind, transform, skin.as_ref(), time, &mut out.contents, notes)?,
         }
     }
     let chosen = match &options.camera {
@@ -387,6 +372,182 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
         out.resolution = Some(size);
     }
     Ok(())
+}
+
+/// Whether prims of type `kind` draw geometry tress reads: curves, meshes and gprims.
+fn is_drawable(kind: &str) -> bool {
+    matches!(kind, "BasisCurves" | "NurbsCurves" | "Mesh") || shapes::GPRIMS.contains(&kind)
+}
+
+/// A curves, mesh or gprim prim (of type `kind`) into `contents`, placed by `transform`;
+/// with `skin`, its points skinned first. Inconsistent data skips the prim ([`skip`]).
+fn read_drawable(
+    prim: &Prim,
+    kind: &str,
+    transform: Affine3A,
+    skin: Option<&skel::Skinning>,
+    time: TimeCode,
+    contents: &mut Contents,
+    notes: &mut Notes,
+) -> Res<()> {
+    let what = |e: anyhow::Error| e.context(format!("{}", prim.path()));
+    match kind {
+        "BasisCurves" | "NurbsCurves" => {
+            let read = if kind == "BasisCurves" { curves::read_basis_curves } else { curves::read_nurbs_curves };
+            let mut entry = match read(prim, time, transform, skin, notes) {
+                Ok(Some(entry)) => entry,
+                Ok(None) => return Ok(()),
+                Err(e) => {
+                    skip(notes, prim, e);
+                    return Ok(());
+                }
+            };
+            // Arnold's hair shader, when bound, is what Arnold draws the curves with.
+            if let Some(material) = shapes::bound_standard_hair(prim, time, notes)? {
+                entry.material = material.into();
+            } else if !has_display_color(prim, time) {
+                if let (Some(c), MaterialSource::Inline(Material::Tube(t))) =
+                    (shapes::surface_color(prim, time, notes)?, &mut entry.material)
+                {
+                    (t.ambient, t.diffuse) = (c, c);
+                }
+            }
+            contents.hair.push(entry);
+        }
+        "Mesh" => {
+            let mesh = match shapes::read_mesh(prim, time, skin) {
+                Ok(mesh) => mesh,
+                Err(e) => {
+                    skip(notes, prim, e);
+                    return Ok(());
+                }
+            };
+            if token(values::value(prim, "subdivisionScheme", time)?, "catmullClark") != "none" {
+                notes.note("subdivision surfaces: drawn as their control cage".into(), prim);
+            }
+            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform);
+        }
+        gprim => {
+            let mesh = match shapes::read_gprim(prim, gprim, time) {
+                Ok(mesh) => mesh,
+                Err(e) => {
+                    skip(notes, prim, e);
+                    return Ok(());
+                }
+            };
+            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform);
+        }
+    }
+    Ok(())
+}
+
+/// PointInstancers nest at most this deep (a prototype holding an instancer whose
+/// prototype holds one, ...); deeper ones, and prototypes that hold their own instancer,
+/// are reported and not drawn.
+const MAX_INSTANCER_DEPTH: usize = 8;
+
+/// The traversed prims of a stage at one time code, for drawing PointInstancer
+/// prototypes: the traversal is depth-first, so a prototype's subtree is the run of paths
+/// after its root that lie under it.
+struct StagePrims<'a> {
+    stage: &'a Stage,
+    paths: &'a [sdf::Path],
+    order: &'a HashMap<&'a str, usize>,
+    time: TimeCode,
+}
+
+impl StagePrims<'_> {
+    /// The instances of the PointInstancer `prim`, whose space is `world`, into
+    /// `contents`: each prototype read once, then copied per instance.
+    fn instance(&self, prim: &Prim, world: DMat4, depth: usize, contents: &mut Contents, notes: &mut Notes) -> Res<()> {
+        let read = match instancer::read(prim, self.time) {
+            Ok(read) => read,
+            Err(e) => {
+                skip(notes, prim, e);
+                return Ok(());
+            }
+        };
+        let mut prototypes = Vec::with_capacity(read.prototypes.len());
+        for root in &read.prototypes {
+            prototypes.push(self.prototype(prim, root, depth, notes)?);
+        }
+        let bytes: u64 = read.instances.iter().map(|i| contents_bytes(&prototypes[i.prototype])).sum();
+        if let Some(free) = crate::memory::available().filter(|&free| bytes > free / 2) {
+            anyhow::bail!(
+                "{}: its {} instances are {} of copied geometry, more than half the {} of memory free \
+                 (tress copies every instance)",
+                prim.path(),
+                read.instances.len(),
+                crate::stats::human_bytes(bytes),
+                crate::stats::human_bytes(free)
+            );
+        }
+        for instance in &read.instances {
+            let m = affine(world * instance.matrix, prim.path())?;
+            let prototype = &prototypes[instance.prototype];
+            contents.hair.extend(prototype.hair.iter().map(|e| HairEntry { transform: m * e.transform, ..e.clone() }));
+            contents
+                .meshes
+                .extend(prototype.meshes.iter().map(|e| MeshEntry { transform: m * e.transform, ..e.clone() }));
+        }
+        Ok(())
+    }
+
+    /// The drawables of the prototype rooted at `root` (of the instancer `instancer`), in
+    /// the space of the root's parent.
+    fn prototype(&self, instancer: &Prim, root: &sdf::Path, depth: usize, notes: &mut Notes) -> Res<Contents> {
+        let mut contents = Contents::default();
+        let Some(&start) = self.order.get(root.as_str()) else {
+            let why = format!("{root} is not a defined, active prim");
+            notes.note_why("PointInstancer prototypes that are not drawable prims: not drawn".into(), instancer, &why);
+            return Ok(contents);
+        };
+        let parent = root.parent();
+        let under = format!("{root}/");
+        let mut skip_below: Option<String> = None;
+        for path in self.paths[start..].iter().take_while(|p| *p == root || p.as_str().starts_with(&under)) {
+            if skip_below.as_ref().is_some_and(|below| path.as_str().starts_with(below.as_str())) {
+                continue;
+            }
+            let prim = self.stage.prim(path.clone());
+            let kind = prim.type_name()?.map(|t| t.as_str().to_string()).unwrap_or_default();
+            if kind == "PointInstancer" {
+                skip_below = Some(format!("{path}/"));
+            }
+            if AnyPrim(prim.clone()).compute_visibility()? == Visibility::Invisible {
+                continue;
+            }
+            let m = matrix_below(self.stage, path, parent.as_ref(), self.time)?;
+            if kind == "PointInstancer" {
+                if depth + 1 >= MAX_INSTANCER_DEPTH || instancer.path().as_str().starts_with(&under) {
+                    notes.note(
+                        "PointInstancers nested too deep, or inside their own prototype: not drawn".into(),
+                        &prim,
+                    );
+                } else {
+                    self.instance(&prim, m, depth + 1, &mut contents, notes)?;
+                }
+            } else if is_drawable(&kind) {
+                read_drawable(&prim, &kind, affine(m, path)?, None, self.time, &mut contents, notes)?;
+            } else if !STRUCTURE.contains(&kind.as_str()) {
+                notes.note(format!("`{kind}` prims inside PointInstancer prototypes: not read"), &prim);
+            }
+        }
+        Ok(contents)
+    }
+}
+
+/// Bytes of the strand sets and meshes held inline in `contents`.
+fn contents_bytes(contents: &Contents) -> u64 {
+    let hair = contents.hair.iter().map(|e| match &e.source {
+        HairSource::Inline(set) => set.memory_bytes(),
+        HairSource::File(_) => 0,
+    });
+    let meshes = contents.meshes.iter().map(|e| match &e.source {
+        MeshSource::Inline(mesh) => mesh.memory_bytes(),
+        MeshSource::File(_) => 0,
+    });
+    hair.chain(meshes).map(|b| b as u64).sum()
 }
 
 /// Counts a curves, mesh or gprim prim whose data is inconsistent (counts that do not add
@@ -423,8 +584,8 @@ fn surface_material(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Mater
     Ok(Material::Diffuse { color: color.unwrap_or(Vec3::splat(0.5)) })
 }
 
-fn push_mesh(out: &mut Imported, mesh: crate::geometry::TriangleMesh, material: Material, transform: Affine3A) {
-    out.contents.meshes.push(MeshEntry {
+fn push_mesh(contents: &mut Contents, mesh: crate::geometry::TriangleMesh, material: Material, transform: Affine3A) {
+    contents.meshes.push(MeshEntry {
         source: MeshSource::Inline(mesh),
         material: material.into(),
         transform,

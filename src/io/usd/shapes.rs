@@ -253,9 +253,13 @@ fn bound_arnold<S: ArnoldShader>(prim: &Prim, id: &str, time: TimeCode, notes: &
                 None => {}
             }
         }
-        let (material, left_out) = hair.material(&shader.path().to_string(), &connected);
+        let path = shader.path().to_string();
+        let (material, left_out) = hair.material(&path, &connected);
         if let Some(left_out) = left_out {
-            notes.note(left_out, prim);
+            // Counted by what is left out, the first shader named: copies of one material
+            // (per instance, per asset) give one warning, not one each.
+            let what = left_out.strip_prefix(&format!("{path}: ")).unwrap_or(&left_out);
+            notes.note(what.to_string(), &shader);
         }
         return Ok(Some(material));
     }

@@ -232,22 +232,6 @@ fn matrices(v: Option<sdf::Value>, what: &str) -> Checked<Option<Vec<DMat4>>> {
     }
 }
 
-/// A `quatf[]`, `quatd[]` or `quath[]` attribute's value, USD's `(w, x, y, z)` order.
-fn quats(v: Option<sdf::Value>) -> Checked<Option<Vec<DQuat>>> {
-    let q = |w: f64, x: f64, y: f64, z: f64| DQuat::from_xyzw(x, y, z, w);
-    match v {
-        None => Ok(None),
-        Some(sdf::Value::QuatfVec(a)) => {
-            Ok(Some(a.iter().map(|r| q(r.w.into(), r.x.into(), r.y.into(), r.z.into())).collect()))
-        }
-        Some(sdf::Value::QuatdVec(a)) => Ok(Some(a.iter().map(|r| q(r.w, r.x, r.y, r.z)).collect())),
-        Some(sdf::Value::QuathVec(a)) => {
-            Ok(Some(a.iter().map(|r| q(r.w.to_f64(), r.x.to_f64(), r.y.to_f64(), r.z.to_f64())).collect()))
-        }
-        Some(other) => Err(format!("`rotations` is not an array of quaternions: {}", short(&other))),
-    }
-}
-
 /// A result whose error says why a binding cannot be evaluated (the prim is then drawn in
 /// its rest pose), where [`Res`] errors are the stage's.
 type Checked<T> = Result<T, String>;
@@ -516,7 +500,7 @@ fn animate(
         _ => Ok(()),
     };
     let translations = vec3s(get("translations")?, "translations").map_err(|e| e.to_string())?;
-    let rotations = quats(get("rotations")?)?;
+    let rotations = super::values::quats(get("rotations")?, "rotations").map_err(|e| e.to_string())?;
     let scales = vec3s(get("scales")?, "scales").map_err(|e| e.to_string())?;
     sized("translations", translations.as_ref().map(Vec::len))?;
     sized("rotations", rotations.as_ref().map(Vec::len))?;

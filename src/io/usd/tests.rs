@@ -55,7 +55,7 @@ def Xform "World"
 }
 "#;
 
-fn read_text(text: &str) -> Result<Imported, LoadError> {
+pub(super) fn read_text(text: &str) -> Result<Imported, LoadError> {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("scene.usda");
     std::fs::write(&path, text).unwrap();
@@ -195,21 +195,29 @@ fn braces_in_property_names_and_paths_are_errors_not_a_hang() {
     assert_eq!(s.contents.hair[0].transform.transform_point3(Vec3::ZERO), Vec3::ZERO);
 }
 
+/// `text` with each edit `(at, op, c)` applied: byte `at` replaced by `c` (op 0), removed
+/// (op 1) or preceded by `c` (op 2).
+pub(super) fn mutated(text: &str, edits: &[(usize, u8, u8)]) -> String {
+    let mut bytes = text.as_bytes().to_vec();
+    for &(at, op, c) in edits {
+        let at = at.min(bytes.len().saturating_sub(1));
+        match op {
+            0 => bytes[at] = c,
+            1 => {
+                bytes.remove(at);
+            }
+            _ => bytes.insert(at, c),
+        }
+    }
+    String::from_utf8_lossy(&bytes).into_owned()
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
 
     #[test]
     fn mutated_scenes_never_panic(edits in prop::collection::vec((0usize..SCENE.len(), 0u8..3, prop::sample::select(&b"0123456789-.e\"[](){} =\nab"[..])), 1..6)) {
-        let mut bytes = SCENE.as_bytes().to_vec();
-        for (at, op, c) in edits {
-            let at = at.min(bytes.len().saturating_sub(1));
-            match op {
-                0 => bytes[at] = c,
-                1 => { bytes.remove(at); }
-                _ => bytes.insert(at, c),
-            }
-        }
-        let _ = read_text(&String::from_utf8_lossy(&bytes));
+        let _ = read_text(&mutated(SCENE, &edits));
     }
 
     #[test]
@@ -226,7 +234,7 @@ fn read_with(meta: &str, body: &str, options: &ImportOptions) -> Result<Imported
     read_usd(&path, options)
 }
 
-fn read_body(body: &str) -> Imported {
+pub(super) fn read_body(body: &str) -> Imported {
     read_with("", body, &ImportOptions::default()).unwrap()
 }
 

@@ -1,7 +1,7 @@
 //! Attribute values of a composed stage read as tress's types, at the frame's time code:
 //! arrays of vectors, numbers and integers, tokens, and primvar interpolations.
 
-use glam::Vec3;
+use glam::{DQuat, Vec3};
 use openusd::usd::{Attribute, Prim, TimeCode};
 use openusd::{gf, sdf};
 
@@ -93,6 +93,22 @@ pub fn ints(v: Option<sdf::Value>, what: &str) -> Res<Option<Vec<i64>>> {
         Some(sdf::Value::Int64Vec(v)) => Some(v),
         Some(sdf::Value::UintVec(v)) => Some(v.iter().map(|&x| x as i64).collect()),
         Some(other) => anyhow::bail!("`{what}` is not an array of integers: {}", short(&other)),
+    })
+}
+
+/// A `quatf[]`, `quatd[]` or `quath[]` attribute's value; USD writes `(w, x, y, z)`.
+pub fn quats(v: Option<sdf::Value>, what: &str) -> Res<Option<Vec<DQuat>>> {
+    let q = |w: f64, x: f64, y: f64, z: f64| DQuat::from_xyzw(x, y, z, w);
+    Ok(match v {
+        None => None,
+        Some(sdf::Value::QuatfVec(a)) => {
+            Some(a.iter().map(|r| q(r.w.into(), r.x.into(), r.y.into(), r.z.into())).collect())
+        }
+        Some(sdf::Value::QuatdVec(a)) => Some(a.iter().map(|r| q(r.w, r.x, r.y, r.z)).collect()),
+        Some(sdf::Value::QuathVec(a)) => {
+            Some(a.iter().map(|r| q(r.w.to_f64(), r.x.to_f64(), r.y.to_f64(), r.z.to_f64())).collect())
+        }
+        Some(other) => anyhow::bail!("`{what}` is not an array of quaternions: {}", short(&other)),
     })
 }
 
