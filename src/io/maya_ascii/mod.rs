@@ -82,7 +82,7 @@ use crate::hair_system::{
 };
 use crate::light::Light;
 use crate::scene::{
-    CameraDesc, Film, FilmFit, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource,
+    CameraDesc, Film, FilmFit, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, Visibility,
 };
 use crate::shading::Material;
 use glam::{Affine3A, DAffine3, DMat3, DVec3, Vec3, Vec4};
@@ -630,7 +630,7 @@ impl<'g> Reader<'g> {
             source: MeshSource::Inline(mesh),
             material: material.into(),
             transform,
-            visibility: Default::default(),
+            visibility: shape_visibility(g, n)?,
         });
         Ok(())
     }
@@ -835,7 +835,7 @@ impl<'g> Reader<'g> {
             transform: Affine3A::IDENTITY,
             seed: 0,
             lod: None,
-            visibility: Default::default(),
+            visibility: shape_visibility(self.g, n)?,
         });
         Ok(())
     }
@@ -957,8 +957,8 @@ impl<'g> Reader<'g> {
         let mut profiles: Vec<Option<usize>> = Vec::new();
         let mut ramps: Vec<Ramp<f32>> = Vec::new();
         let mut ramp_of: HashMap<usize, usize> = HashMap::new();
-        // Each strand's material, as an index into `materials`.
-        let (mut groups, mut materials): (Vec<usize>, Vec<Material>) = (Vec::new(), Vec::new());
+        // Each strand's material and visibility, as an index into `materials`.
+        let (mut groups, mut materials): (Vec<usize>, Vec<(Material, Visibility)>) = (Vec::new(), Vec::new());
         let mut closed = 0;
         for n in self.of_kind("nurbsCurve").collect::<Vec<_>>() {
             if used[n] || self.hidden(n)? {
@@ -985,7 +985,8 @@ impl<'g> Reader<'g> {
             set.push_strand(p.into_iter().map(|q| (q, 0.0)));
             widths.push(width);
             profiles.push(profile);
-            let material = self.curve_material(n, &set_shaders)?;
+            // A collector's curves are seen as the collector is (MtoA renders it as one shape).
+            let material = (self.curve_material(n, &set_shaders)?, shape_visibility(self.g, collector.unwrap_or(n))?);
             groups.push(materials.iter().position(|m| *m == material).unwrap_or_else(|| {
                 materials.push(material);
                 materials.len() - 1
@@ -1032,25 +1033,25 @@ impl<'g> Reader<'g> {
         if closed > 0 {
             self.out.warnings.push(format!("skipped {closed} closed or periodic curve(s) (rig controls, not hair)"));
         }
-        // One entry per material, its strands in file order.
-        for (k, material) in materials.into_iter().enumerate() {
+        // One entry per material and visibility, its strands in file order.
+        for (k, (material, visibility)) in materials.into_iter().enumerate() {
             let mut part = StrandSet::new();
             for i in (0..groups.len()).filter(|&i| groups[i] == k) {
                 let (a, b) = (set.offsets[i] as usize, set.offsets[i + 1] as usize);
                 part.push_strand(set.points[a..b].iter().map(|p| (Vec3::new(p[0], p[1], p[2]), p[3])));
             }
-            self.push_hair(part, material);
+            self.push_hair(part, material, visibility);
         }
         Ok(())
     }
 
     /// Adds strands drawn with a hair system's default look, if there are any.
     fn push_curves(&mut self, set: StrandSet) {
-        self.push_hair(set, Material::Tube(HairSystem::default().tube()));
+        self.push_hair(set, Material::Tube(HairSystem::default().tube()), Visibility::default());
     }
 
-    /// Adds strands drawn with `material`, if there are any.
-    fn push_hair(&mut self, set: StrandSet, material: Material) {
+    /// Adds strands drawn with `material` and seen as `visibility` says, if there are any.
+    fn push_hair(&mut self, set: StrandSet, material: Material, visibility: Visibility) {
         if set.strand_count() > 0 {
             self.out.contents.hair.push(HairEntry {
                 source: HairSource::Inline(set),
@@ -1059,7 +1060,7 @@ impl<'g> Reader<'g> {
                 radius_scale: 1.0,
                 file_colors: true,
                 lod: None,
-                visibility: Default::default(),
+                visibility,
             });
         }
     }
@@ -1478,6 +1479,17 @@ impl<'g> Reader<'g> {
 /// The last `setAttr` of node `n` named one of `names` exactly.
 fn attr<'a>(g: &'a Graph, n: usize, names: &[&str]) -> Option<&'a parse::Attr> {
     g.nodes[n].attrs.iter().rev().find(|a| names.contains(&a.name.as_str()))
+}
+
+/// Which rays see shape `n`: Maya's render stats `primaryVisibility` (short name `vis`)
+/// and `castsShadows` (`csh`), and MtoA's `aiMatte` (a holdout), as MtoA hands them to
+/// Arnold's `visibility` and `matte`.
+fn shape_visibility(g: &Graph, n: usize) -> Res<Visibility> {
+    Ok(Visibility {
+        camera: scalar(g, n, &["vis", "primaryVisibility"], 1.0)? != 0.0,
+        shadows: scalar(g, n, &["csh", "castsShadows"], 1.0)? != 0.0,
+        matte: scalar(g, n, &["aiMatte", "ai_matte"], 0.0)? != 0.0,
+    })
 }
 
 /// A number attribute, `default` when unset.

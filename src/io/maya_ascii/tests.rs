@@ -1532,3 +1532,45 @@ fn point_tweaks_move_stored_and_primitive_vertices() {
     let e = read(&plane.replace("\".pt[4].py\" 0.5", "\".pt[4].py\" 0.5 1")).unwrap_err().to_string();
     assert!(e.starts_with("dir/scene.ma: line 6:"), "{e}");
 }
+
+#[test]
+fn render_stats_and_arnold_matte_set_each_shapes_visibility() {
+    let sphere = |name: &str, attrs: &str| {
+        format!(
+            "createNode transform -n {name};\ncreateNode mesh -n {name}s -p {name};\n{attrs}\
+             createNode polySphere -n {name}p;\nconnectAttr \"{name}p.out\" \"{name}s.i\";\n"
+        )
+    };
+    let curve = |name: &str, parent: &str| {
+        format!(
+            "createNode transform -n {name} {parent};\ncreateNode nurbsCurve -n {name}s -p {name};\n\
+             setAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 1 0;\nsetAttr \".rcurve\" yes;\n"
+        )
+    };
+    let text = [
+        sphere("plain", ""),
+        sphere("unseen", "setAttr \".vis\" no;\n"),
+        sphere("shadowless", "setAttr \".castsShadows\" no;\n"),
+        sphere("holdout", "setAttr \".aiMatte\" yes;\nsetAttr \".csh\" no;\n"),
+        "createNode transform -n col;\ncreateNode aiCurveCollector -n cols -p col;\nsetAttr \".aiMatte\" yes;\n".into(),
+        curve("collected", "-p col"),
+        curve("free", ""),
+    ]
+    .concat();
+    let s = read(&text).unwrap();
+    let v = |camera, shadows, matte| Visibility { camera, shadows, matte };
+    let meshes: Vec<Visibility> = s.contents.meshes.iter().map(|m| m.visibility).collect();
+    assert_eq!(meshes, [v(true, true, false), v(false, true, false), v(true, false, false), v(true, false, true)]);
+    // The collector's curves are matte, the free one is not: one strand set each.
+    let mut hair: Vec<(usize, Visibility)> = s
+        .contents
+        .hair
+        .iter()
+        .map(|h| match &h.source {
+            HairSource::Inline(set) => (set.strand_count(), h.visibility),
+            HairSource::File(_) => panic!("inline"),
+        })
+        .collect();
+    hair.sort_by_key(|h| h.1.matte);
+    assert_eq!(hair, [(1, v(true, true, false)), (1, v(true, true, true))]);
+}
