@@ -187,6 +187,71 @@ impl TriangleMesh {
         mesh
     }
 
+    /// A unit icosphere around the origin: the regular icosahedron (12 vertices, 20
+    /// triangles) with each triangle split into four `subdivisions` times, the new
+    /// vertices pushed out onto the sphere; vertex normals are the positions. Triangles
+    /// wind counter-clockwise seen from outside.
+    pub fn icosphere(subdivisions: u32) -> TriangleMesh {
+        // The icosahedron's vertices are the cyclic permutations of (±1, ±φ, 0).
+        let t = (1.0 + 5f32.sqrt()) / 2.0;
+        let mut positions: Vec<Vec3> = [
+            (-1.0, t, 0.0),
+            (1.0, t, 0.0),
+            (-1.0, -t, 0.0),
+            (1.0, -t, 0.0),
+            (0.0, -1.0, t),
+            (0.0, 1.0, t),
+            (0.0, -1.0, -t),
+            (0.0, 1.0, -t),
+            (t, 0.0, -1.0),
+            (t, 0.0, 1.0),
+            (-t, 0.0, -1.0),
+            (-t, 0.0, 1.0),
+        ]
+        .into_iter()
+        .map(|(x, y, z)| Vec3::new(x, y, z).normalize())
+        .collect();
+        let mut indices: Vec<[u32; 3]> = vec![
+            [0, 11, 5],
+            [0, 5, 1],
+            [0, 1, 7],
+            [0, 7, 10],
+            [0, 10, 11],
+            [1, 5, 9],
+            [5, 11, 4],
+            [11, 10, 2],
+            [10, 7, 6],
+            [7, 1, 8],
+            [3, 9, 4],
+            [3, 4, 2],
+            [3, 2, 6],
+            [3, 6, 8],
+            [3, 8, 9],
+            [4, 9, 5],
+            [2, 4, 11],
+            [6, 2, 10],
+            [8, 6, 7],
+            [9, 8, 1],
+        ];
+        for _ in 0..subdivisions {
+            let mut middles = std::collections::HashMap::new();
+            let mut middle = |a: u32, b: u32, positions: &mut Vec<Vec3>| {
+                *middles.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                    positions.push((positions[a as usize] + positions[b as usize]).normalize());
+                    positions.len() as u32 - 1
+                })
+            };
+            let mut finer = Vec::with_capacity(indices.len() * 4);
+            for [a, b, c] in indices {
+                let (ab, bc, ca) =
+                    (middle(a, b, &mut positions), middle(b, c, &mut positions), middle(c, a, &mut positions));
+                finer.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+            }
+            indices = finer;
+        }
+        TriangleMesh { normals: Some(positions.clone()), positions, uvs: None, indices }
+    }
+
     /// A pillow: a square cushion of side `size` in the xz-plane, centred on the origin,
     /// whose top and bottom faces bulge to `thickness / 2` above and below it from a seam
     /// around the edge, as `(1 - x^2)^0.3 (1 - z^2)^0.3` over the square `[-1, 1]^2`.
@@ -264,6 +329,28 @@ impl TriangleMesh {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn icospheres_are_closed_face_outwards_and_lie_on_the_unit_sphere() {
+        for (subdivisions, vertices, triangles) in [(0, 12, 20), (1, 42, 80), (2, 162, 320)] {
+            let m = TriangleMesh::icosphere(subdivisions);
+            m.validate().unwrap();
+            assert_eq!((m.positions.len(), m.indices.len()), (vertices, triangles));
+            assert!(m.positions.iter().all(|p| (p.length() - 1.0).abs() < 1e-6));
+            // Every edge is shared by two triangles, walked in opposite directions.
+            let mut edges = std::collections::HashMap::new();
+            for t in &m.indices {
+                for k in 0..3 {
+                    *edges.entry((t[k], t[(k + 1) % 3])).or_insert(0) += 1;
+                }
+            }
+            assert!(edges.iter().all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)));
+            for i in 0..m.indices.len() as u32 {
+                let [a, b, c] = m.corners(i);
+                assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "triangle {i} faces inwards");
+            }
+        }
+    }
 
     #[test]
     fn procedural_meshes_are_valid_and_have_the_right_area() {

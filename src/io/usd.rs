@@ -10,6 +10,7 @@
 //!   coloured by a bound `UsdPreviewSurface`'s `diffuseColor` or `displayColor`
 //!   ([`shapes`]);
 //! - `PointInstancer` prims to a copy of their prototype per instance ([`instancer`]);
+//! - `Points` to meshes of small spheres, `widths` their diameters ([`points`]);
 //! - `Camera` to the camera ([`camera`]), `--camera PATH` or the first one;
 //! - UsdLux lights ([`lights`]);
 //! - UsdSkel: meshes and curves bound to a skeleton are skinned at the time code
@@ -36,6 +37,7 @@ mod export;
 pub mod instancer;
 pub mod layer;
 pub mod lights;
+pub mod points;
 pub mod shapes;
 pub mod skel;
 pub mod values;
@@ -376,10 +378,10 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
 
 /// Whether prims of type `kind` draw geometry tress reads: curves, meshes and gprims.
 fn is_drawable(kind: &str) -> bool {
-    matches!(kind, "BasisCurves" | "NurbsCurves" | "Mesh") || shapes::GPRIMS.contains(&kind)
+    matches!(kind, "BasisCurves" | "NurbsCurves" | "Mesh" | "Points") || shapes::GPRIMS.contains(&kind)
 }
 
-/// A curves, mesh or gprim prim (of type `kind`) into `contents`, placed by `transform`;
+/// A curves, mesh, points or gprim prim (of type `kind`) into `contents`, placed by `transform`;
 /// with `skin`, its points skinned first. Inconsistent data skips the prim ([`skip`]).
 fn read_drawable(
     prim: &Prim,
@@ -425,6 +427,19 @@ fn read_drawable(
             if token(values::value(prim, "subdivisionScheme", time)?, "catmullClark") != "none" {
                 notes.note("subdivision surfaces: drawn as their control cage".into(), prim);
             }
+            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform);
+        }
+        "Points" => {
+            let mesh = match points::read_points(prim, time, skin, notes) {
+                Ok(Some(mesh)) => mesh,
+                Ok(None) => return Ok(()),
+                // A prim too large to draw is the file's error, not a skipped prim.
+                Err(e) if e.is::<points::OverBudget>() => return Err(what(e)),
+                Err(e) => {
+                    skip(notes, prim, e);
+                    return Ok(());
+                }
+            };
             push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform);
         }
         gprim => {

@@ -667,8 +667,8 @@ fn what_is_not_read_is_reported_once_per_kind_with_a_count() {
 (
     subLayers = [@missing_layer.usda@]
 )
-def Points "P1" {}
-def Points "P2" {}
+def Volume "P1" {}
+def Volume "P2" {}
 def SkelRoot "Rig" {
     def Skeleton "Bones" {}
     def Mesh "Skin" (prepend apiSchemas = ["SkelBindingAPI"]) {
@@ -683,7 +683,7 @@ def Xform "Ref" (references = @gone.usda@) {}
     std::fs::write(&path, text).unwrap();
     let s = read_usd(&path, &ImportOptions::default()).unwrap();
     let has = |needle: &str| s.warnings.iter().filter(|w| w.contains(needle)).count();
-    assert_eq!(has("`Points` prims: not read (2; first: /P1)"), 1, "{:?}", s.warnings);
+    assert_eq!(has("`Volume` prims: not read (2; first: /P1)"), 1, "{:?}", s.warnings);
     // Skeletons are read by the prims bound to them; this binding lacks its influences.
     assert_eq!(has("`SkelRoot` prims") + has("`Skeleton` prims"), 0, "{:?}", s.warnings);
     assert_eq!(
@@ -1448,4 +1448,61 @@ def Mesh "Plain" {
     let glass = Material::Glass { ior: 1.33, color: Vec3::ONE };
     assert_eq!(s.contents.meshes[0].material, glass.into());
     assert_eq!(s.contents.meshes[1].material, Material::Diffuse { color: Vec3::splat(0.5) }.into());
+}
+
+#[test]
+fn points_become_spheres_of_their_widths() {
+    let body = r#"
+def Points "Dots" {
+    point3f[] points.timeSamples = { 0: [(0, 0, 0), (10, 0, 0)], 10: [(0, 10, 0), (10, 10, 0)] }
+    float[] widths = [2, 4] (interpolation = "vertex")
+    int64[] ids.timeSamples = { 0: [1, 2], 10: [1, 2] }
+    color3f[] primvars:displayColor = [(1, 0, 0)]
+}
+def Points "Reborn" {
+    point3f[] points.timeSamples = { 0: [(0, 0, 5)], 10: [(0, 10, 5)] }
+    int64[] ids.timeSamples = { 0: [7], 10: [8] }
+}
+"#;
+    let s = read_with("", body, &ImportOptions { frame: Some(5), camera: None }).unwrap();
+    assert_eq!(s.contents.meshes.len(), 2, "{:?}", s.warnings);
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!("an inline mesh") };
+    // Two balls of 42 vertices, 80 triangles each, around the points blended half way
+    // (their ids stay), radii half the widths.
+    assert_eq!((m.positions.len(), m.indices.len()), (84, 160));
+    for (ball, (centre, r)) in [(Vec3::new(0.0, 5.0, 0.0), 1.0), (Vec3::new(10.0, 5.0, 0.0), 2.0)].iter().enumerate() {
+        for p in &m.positions[ball * 42..(ball + 1) * 42] {
+            assert!(((*p - *centre).length() - r).abs() < 1e-4, "{p:?}");
+        }
+    }
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(1.0, 0.0, 0.0) }.into());
+    // A point whose id changes between the samples is another point: held at the earlier
+    // sample, not blended; without widths it is one unit wide, said once with the count.
+    let MeshSource::Inline(m) = &s.contents.meshes[1].source else { panic!("an inline mesh") };
+    assert!(m.positions.iter().all(|p| ((*p - Vec3::new(0.0, 0.0, 5.0)).length() - 0.5).abs() < 1e-4));
+    assert!(
+        s.warnings
+            .iter()
+            .any(|w| w.contains("Points without `widths`: drawn 1 unit wide (USD's fallback) (1; first: /Reborn)")),
+        "{:?}",
+        s.warnings
+    );
+    assert!(!s.warnings.iter().any(|w| w.contains("not read")), "{:?}", s.warnings);
+    // Widths that do not fit: skipped, said.
+    let s = read_body(
+        r#"def Points "Bad" { point3f[] points = [(0, 0, 0), (1, 0, 0), (2, 0, 0)]
+        float[] widths = [1, 1] }"#,
+    );
+    assert!(s.contents.meshes.is_empty());
+    assert!(s.warnings.iter().any(|w| w.contains("/Bad: 2 `widths` for 3 points")), "{:?}", s.warnings);
+}
+
+#[test]
+fn a_points_prim_over_the_triangle_budget_is_an_error_naming_the_file() {
+    let n = points::MAX_TRIANGLES / 20 + 1;
+    let pts = vec!["(0, 0, 0)"; n].join(", ");
+    let body = format!("def Points \"Cloud\" {{ point3f[] points = [{pts}]\n float[] widths = [0.1] }}");
+    let Err(e) = read_with("", &body, &ImportOptions::default()) else { panic!("over the budget") };
+    let e = e.to_string();
+    assert!(e.contains("scene.usda") && e.contains("/Cloud") && e.contains("exceed the 5000000 triangles"), "{e}");
 }
