@@ -1693,6 +1693,11 @@ fn elements(g: &Graph, n: usize, bases: &[&str], k: usize) -> Res<BTreeMap<usize
                 format!("{}: `{}` has {} values for {count} elements of {k}", g.nodes[n].name, a.name, v.len()),
             ));
         }
+        // Geometry is stored in single precision: a value past its range (`1e39`) would
+        // become infinite there.
+        if let Some(x) = v.iter().find(|x| !(**x as f32).is_finite()) {
+            return Err((a.line, format!("{}: `{}` holds {x}, beyond single precision", g.nodes[n].name, a.name)));
+        }
         for (i, chunk) in v.chunks(k).enumerate() {
             out.insert(start + i, chunk.to_vec());
         }

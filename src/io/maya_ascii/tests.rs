@@ -1470,6 +1470,16 @@ fn face_chunks_after_the_first_take_its_polyfaces_type() {
 }
 
 #[test]
+fn geometry_beyond_single_precision_is_an_error_naming_the_attribute() {
+    // Finite in double precision, infinite once stored as f32: UVs and vertices alike.
+    for (from, to) in [("0 0 0.5 0 1 0", "0 0 1e39 0 1 0"), ("-2 0 1 0 0 1", "-2 0 1 0 -1e39 1")] {
+        assert!(SCENE.contains(from));
+        let e = read(&SCENE.replacen(from, to, 1)).unwrap_err().to_string();
+        assert!(e.contains("planeShape1") && e.contains("beyond single precision"), "{e}");
+    }
+}
+
+#[test]
 fn point_tweaks_move_stored_and_primitive_vertices() {
     let positions = |s: &Imported| {
         let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
