@@ -3,7 +3,9 @@
 //! error or usable data: no panic, no hang, no unbounded allocation.
 //!
 //! The formats and their checks are in `tests/hostile/formats/`, shared with the cargo-fuzz
-//! targets in `fuzz/` for longer campaigns. Set `PROPTEST_CASES` for a longer run here.
+//! targets in `fuzz/` for longer campaigns. Set `PROPTEST_CASES` for a longer run here
+//! (1000 cases per random test by default) and `HOSTILE_FORMAT` to one format's name (`ma`,
+//! `usda`, ...: see [`formats::ALL`]) to give all of them to that format.
 
 #[path = "hostile/formats/mod.rs"]
 mod formats;
@@ -104,13 +106,34 @@ fn check(format: &Format, bytes: &[u8]) {
     (format.check)(bytes);
 }
 
+/// Cases per random test: `PROPTEST_CASES` when set (as proptest reads it), else 1000, about
+/// 100 per format and test, a few seconds in CI. `ProptestConfig::with_cases` alone would
+/// override the variable.
+fn config() -> ProptestConfig {
+    let cases = std::env::var("PROPTEST_CASES")
+        .ok()
+        .map(|v| v.parse().unwrap_or_else(|_| panic!("PROPTEST_CASES={v} is not a number of cases")));
+    ProptestConfig::with_cases(cases.unwrap_or(1000))
+}
+
+/// The formats the random tests draw from: the one `HOSTILE_FORMAT` names, else all.
+fn selected() -> Vec<&'static Format> {
+    match std::env::var("HOSTILE_FORMAT") {
+        Ok(name) => {
+            let format = ALL.iter().find(|f| f.name == name);
+            let names: Vec<_> = ALL.iter().map(|f| f.name).collect();
+            vec![format.unwrap_or_else(|| panic!("HOSTILE_FORMAT={name} is none of {names:?}"))]
+        }
+        Err(_) => ALL.iter().collect(),
+    }
+}
+
 proptest! {
-    // About 200 cases per format and test: a few seconds in CI.
-    #![proptest_config(ProptestConfig::with_cases(1000))]
+    #![proptest_config(config())]
 
     #[test]
     fn random_bytes_are_rejected_or_usable(
-        format in proptest::sample::select(ALL.iter().collect::<Vec<_>>()),
+        format in proptest::sample::select(selected()),
         bytes in proptest::collection::vec(any::<u8>(), 0..600),
         prefix in any::<Index>(),
     ) {
@@ -126,7 +149,7 @@ proptest! {
 
     #[test]
     fn mutated_real_files_are_rejected_or_usable(
-        format in proptest::sample::select(ALL.iter().collect::<Vec<_>>()),
+        format in proptest::sample::select(selected()),
         seed in any::<Index>(),
         mutations in proptest::collection::vec(mutation(), 1..6),
     ) {
