@@ -248,14 +248,16 @@ pub fn legacy_type_names(text: &str) -> String {
 }
 
 /// Array types the crate cannot parse and the type it reads their values as: tress reads
-/// no unsigned array, so widening one keeps the layer readable and loses nothing it uses.
-const ARRAY_STAND_INS: [(&str, &str); 2] = [("uint[]", "int64[]"), ("uint64[]", "int64[]")];
+/// no unsigned array, so widening one keeps the layer readable and loses nothing it uses;
+/// `matrix[]`, as Arnold's USD writer names an array of 4 × 4 double matrices, is
+/// `matrix4d[]`.
+const ARRAY_STAND_INS: [(&str, &str); 3] = [("uint[]", "int64[]"), ("uint64[]", "int64[]"), ("matrix[]", "matrix4d[]")];
 
 /// Rewrites three forms of the USDA grammar (Pixar's `Sdf` text format) the crate's parser
 /// rejects, outside strings and paths, so the rest of the layer reads:
 /// - `//` line comments (the format's lexer skips `#`, `//` and `/* */` comments; the
 ///   crate only `#` and `/* */`) become `# ` comments;
-/// - `uint[]` and `uint64[]` attributes become `int64[]`;
+/// - `uint[]` and `uint64[]` attributes become `int64[]`, `matrix[]` ones `matrix4d[]`;
 /// - the `@path@` samples of an `asset` attribute's `.timeSamples` (an IES profile or a
 ///   volume file per frame; the crate reads no asset there) become the strings `"path"`.
 ///

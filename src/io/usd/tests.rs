@@ -303,9 +303,13 @@ def BasisCurves "C" { // the strands
         "{fixed}"
     );
     // The crate alone refuses each form; the rewrite is what reads it.
-    for one in
-        ["def \"A\" { // note\n}", "def \"A\" { uint[] a = [1] }", "def \"A\" { asset a.timeSamples = { 1: @x.ies@ } }"]
-    {
+    for one in [
+        "def \"A\" { // note\n}",
+        "def \"A\" { uint[] a = [1] }",
+        "def \"A\" { matrix[] a = [] }",
+        "def \"A\" { matrix[] a = [((1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0), (0, 0, 0, 1))] }",
+        "def \"A\" { asset a.timeSamples = { 1: @x.ies@ } }",
+    ] {
         let text = format!("#usda 1.0\n{one}\n");
         assert!(openusd::usda::parser::Parser::new(&text).parse().is_err(), "{one}");
         assert!(openusd::usda::parser::Parser::new(&layer::grammar_gaps(&text)).parse().is_ok(), "{one}");
