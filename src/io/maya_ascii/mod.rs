@@ -1324,7 +1324,19 @@ impl<'g> Reader<'g> {
         }
         let stretch = m.transform_vector3(DVec3::NEG_Z).length();
         let clip = [(near * stretch) as f32, (far * stretch) as f32];
-        self.out.camera = Some(CameraDesc { eye, target: eye + forward * coi, up, vfov, film: Some(film), clip });
+        // The camera is kept in single precision: a centre of interest or near plane finite
+        // in double precision (1e39) can be infinite there; a far plane past it is none.
+        let target = eye + forward * coi;
+        if !target.is_finite() {
+            return Err((node.line, format!("camera {}: its target {coi} away is beyond single precision", node.name)));
+        }
+        if !clip[0].is_finite() {
+            return Err((
+                node.line,
+                format!("camera {}: clip planes {near} and {far} are beyond single precision", node.name),
+            ));
+        }
+        self.out.camera = Some(CameraDesc { eye, target, up, vfov, film: Some(film), clip });
         Ok(())
     }
 

@@ -1584,3 +1584,30 @@ fn render_stats_and_arnold_matte_set_each_shapes_visibility() {
     hair.sort_by_key(|h| h.1.matte);
     assert_eq!(hair, [(1, v(true, true, false)), (1, v(true, true, true))]);
 }
+
+#[test]
+fn a_camera_target_or_near_plane_beyond_single_precision_is_an_error_naming_the_camera() {
+    let cam = |t: &str, attrs: &str| {
+        read(&format!(
+            "createNode transform -n cam;\n\tsetAttr \".t\" -type \"double3\" 0 0 {t} ;\n\
+             createNode camera -n camShape -p cam;\n{attrs}"
+        ))
+    };
+    assert!(cam("0", "\tsetAttr \".coi\" 1e30;\n\tsetAttr \".fcp\" 1e30;\n").is_ok());
+    // A far plane past single precision is no far plane.
+    let far = cam("0", "\tsetAttr \".fcp\" 1e39;\n").unwrap().camera.unwrap().clip[1];
+    assert_eq!(far, f32::INFINITY);
+    // Each finite in double precision; the target 1e39 away, or past the eye at -3e38 along
+    // the view (-z), and the near plane are infinite in single precision.
+    for (t, attrs) in [
+        ("0", "\tsetAttr \".coi\" 1e39;\n"),
+        ("-3e38", "\tsetAttr \".coi\" 3e38;\n"),
+        ("0", "\tsetAttr \".ncp\" 1e39;\n\tsetAttr \".fcp\" 2e39;\n"),
+    ] {
+        let e = cam(t, attrs).unwrap_err().to_string();
+        assert!(
+            e.starts_with("dir/scene.ma: line 3:") && e.contains("camShape") && e.contains("single precision"),
+            "{e}"
+        );
+    }
+}
