@@ -906,16 +906,33 @@ impl<'g> Reader<'g> {
     fn arnold_curve_width(&self, n: usize) -> Res<(Option<f32>, Option<usize>)> {
         let g = self.g;
         let names = ["cwdth", "ai_curve_width", "aiCurveWidth"];
-        let cm = |w: f64| Some((w / g.centimeters_per_unit) as f32);
+        // The width node `of` sets (else MtoA's default), in the file's unit: not negative and
+        // finite in single precision, where the strands keep it.
+        let width = |of: usize| -> Res<Option<f32>> {
+            let w = scalar(g, of, &names, ARNOLD_CURVE_WIDTH)?;
+            let in_unit = (w / g.centimeters_per_unit) as f32;
+            match in_unit.is_finite() && in_unit >= 0.0 {
+                true => Ok(Some(in_unit)),
+                false => Err(match attr(g, of, &names) {
+                    Some(a) => (
+                        a.line,
+                        format!("{}: `{}` {w} is negative or beyond single precision", g.nodes[of].name, a.name),
+                    ),
+                    None => {
+                        (g.nodes[of].line, format!("{}: its curve width is beyond single precision", g.nodes[of].name))
+                    }
+                }),
+            }
+        };
         let collector = self.collector_of(n);
         if attr(g, n, &names).is_some() {
-            return Ok((cm(scalar(g, n, &names, ARNOLD_CURVE_WIDTH)?), collector));
+            return Ok((width(n)?, collector));
         }
         if let Some(c) = collector {
-            return Ok((cm(scalar(g, c, &names, ARNOLD_CURVE_WIDTH)?), collector));
+            return Ok((width(c)?, collector));
         }
         let render_curve = scalar(g, n, &["rcurve", "ai_render_curve", "aiRenderCurve"], 0.0)? != 0.0;
-        Ok((if render_curve { cm(ARNOLD_CURVE_WIDTH) } else { None }, None))
+        Ok((if render_curve { width(n)? } else { None }, None))
     }
 
     /// The width profile of an `aiCurveCollector` (`widthProfile`, `.wdthP`): a ramp of
@@ -2097,6 +2114,10 @@ fn build_ramp<T: crate::hair_system::ramp::RampValue>(
         line = l;
         let bad = |m: String| (l, format!("{}: `{name}` key {i}: {m}", g.nodes[n].name));
         let val = val.ok_or_else(|| bad("no value".into()))?;
+        // Ramps are kept in single precision, where 1e39 is infinite.
+        if let Some(x) = val.iter().chain(&pos).find(|x| !(**x as f32).is_finite()) {
+            return Err(bad(format!("{x} is beyond single precision")));
+        }
         let interp = match interp.unwrap_or(1.0) as i64 {
             0 => Interp::None,
             1 => Interp::Linear,

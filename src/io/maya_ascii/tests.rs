@@ -1611,3 +1611,28 @@ fn a_camera_target_or_near_plane_beyond_single_precision_is_an_error_naming_the_
         );
     }
 }
+
+#[test]
+fn a_curve_width_negative_or_beyond_single_precision_is_an_error_naming_the_attribute() {
+    let curve = |head: &str, attrs: &str| {
+        read(&format!(
+            "{head}createNode transform -n c;\ncreateNode nurbsCurve -n cs -p c;\n{attrs}\
+             setAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 30 0;\n"
+        ))
+    };
+    assert!(curve("", "setAttr \".cwdth\" 1e30;\n").is_ok());
+    // 1e38 cm is 1e39 mm: beyond single precision in the file's unit.
+    for (head, w, line) in [("", "-1", 3), ("", "1e39", 3), ("currentUnit -l millimeter;\n", "1e38", 4)] {
+        let e = curve(head, &format!("setAttr \".cwdth\" {w};\n")).unwrap_err().to_string();
+        assert!(e.contains(&format!("line {line}:")) && e.contains("cs") && e.contains("cwdth"), "{e}");
+    }
+    // A collector's width profile of 1e39.
+    let e = read(
+        "createNode transform -n col;\ncreateNode aiCurveCollector -n cols -p col;\n\
+         setAttr -s 2 \".wdthP[0:1]\" 0 1 1 1 1e39 1;\ncreateNode transform -n c -p col;\n\
+         createNode nurbsCurve -n cs -p c;\nsetAttr \".cc\" -type \"nurbsCurve\" 1 1 0 no 3 2 0 1 2 0 0 0 0 30 0;\n",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("line 3:") && e.contains("cols") && e.contains("widthProfile"), "{e}");
+}
