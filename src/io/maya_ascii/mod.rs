@@ -702,7 +702,7 @@ impl<'g> Reader<'g> {
         let default = Vec3::splat(0.5 * 0.8);
         let Some(shader) = self.mesh_shader(n) else { return Ok(default) };
         let color = |names: &[&str], comps: &[[&str; 2]; 3], d: f64| vec3(g, shader, names, comps, d);
-        Ok(match self.kind(shader) {
+        let c = match self.kind(shader) {
             "lambert" | "blinn" | "phong" | "phongE" => {
                 let c = color(&["c", "color"], &[["cr", "colorR"], ["cg", "colorG"], ["cb", "colorB"]], 0.5)?;
                 (c * scalar(g, shader, &["dc", "diffuse"], 0.8)?).as_vec3()
@@ -712,8 +712,13 @@ impl<'g> Reader<'g> {
                     .as_vec3()
             }
             _ => default,
+        };
+        match c.is_finite() {
+            true => Ok(c.max(Vec3::ZERO)),
+            false => {
+                Err((g.nodes[shader].line, format!("{}: its colour is beyond single precision", g.nodes[shader].name)))
+            }
         }
-        .max(Vec3::ZERO))
     }
 
     // ----- follicles and hair systems -----
@@ -1497,6 +1502,19 @@ impl<'g> Reader<'g> {
                     Light::Quad { corner: corner + edge_v, edge_u, edge_v: -edge_v, radiance }
                 }
             };
+            // The factors after the check above (π for Maya's renderer, the decay's unit, an
+            // area light's area) can take a finite power past single precision.
+            let emission = match &light {
+                Light::Distant { irradiance: c, .. }
+                | Light::Point { intensity: c, .. }
+                | Light::Spot { intensity: c, .. }
+                | Light::Quad { radiance: c, .. }
+                | Light::Environment { radiance: c, .. } => *c,
+                _ => Vec3::ZERO,
+            };
+            if !emission.is_finite() {
+                return Err((node.line, format!("light {}: its emission is beyond single precision", node.name)));
+            }
             self.out.contents.lights.push(light.into());
         }
         Ok(())

@@ -1636,3 +1636,20 @@ fn a_curve_width_negative_or_beyond_single_precision_is_an_error_naming_the_attr
     .to_string();
     assert!(e.contains("line 3:") && e.contains("cols") && e.contains("widthProfile"), "{e}");
 }
+
+#[test]
+fn light_and_colour_beyond_single_precision_are_errors_naming_the_node() {
+    // 2e38 fits single precision; π × 2e38, the irradiance Maya's renderer gives, does not.
+    let e = read("createNode directionalLight -n d;\n\tsetAttr \".in\" 2e38;\n").unwrap_err().to_string();
+    assert!(e.contains("line 1:") && e.contains("light d") && e.contains("single precision"), "{e}");
+    // A Lambert's colour 1e20 × diffuse 1e20.
+    let e = read(
+        "createNode transform -n s;\ncreateNode mesh -n ss -p s;\ncreateNode polySphere -n ps;\n\
+         createNode lambert -n red;\nsetAttr \".c\" -type \"float3\" 1e20 0 0;\nsetAttr \".dc\" 1e20;\n\
+         createNode shadingEngine -n redSG;\n\
+         connectAttr \"ps.out\" \"ss.i\";\nconnectAttr \"red.oc\" \"redSG.ss\";\nconnectAttr \"ss.iog\" \"redSG.dsm\" -na;\n",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("line 4:") && e.contains("red") && e.contains("single precision"), "{e}");
+}
