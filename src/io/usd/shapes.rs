@@ -56,6 +56,9 @@ pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>) -> Res<Tr
         Some(sdf::Value::Vec2dVec(v)) => Some(v.iter().map(|p| [p.x as f32, p.y as f32]).collect()),
         Some(other) => anyhow::bail!("`primvars:st` is not an array of 2-vectors: {}", short(&other)),
     };
+    // Finite in the file (1e39 as a double) is not always finite in single precision.
+    anyhow::ensure!(st.iter().flatten().flatten().all(|x| x.is_finite()), "`primvars:st` must be finite");
+    anyhow::ensure!(normals.iter().flatten().all(|n| n.is_finite()), "`normals` must be finite");
     // An empty index array indexes nothing: the values are read in order.
     let st_indices =
         ints(value(prim, "primvars:st:indices", time)?, "primvars:st:indices")?.filter(|ix| !ix.is_empty());

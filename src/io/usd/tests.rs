@@ -1510,3 +1510,23 @@ fn a_points_prim_over_the_triangle_budget_is_an_error_naming_the_file() {
     let e = e.to_string();
     assert!(e.contains("scene.usda") && e.contains("/Cloud") && e.contains("exceed the 5000000 triangles"), "{e}");
 }
+
+#[test]
+fn mesh_uvs_and_normals_beyond_single_precision_skip_the_mesh_naming_them() {
+    // 1e39 is infinite as a `texCoord2f` or `normal3f`; as a double it is finite but
+    // infinite once stored in single precision.
+    let uv = "texCoord2f[] primvars:st = [(0, 0), (1, 0), (1, 1), (0, 1)]";
+    let normals =
+        "normal3f[] normals = [(0, 1, 0), (0, 1, 0), (0, 1, 0), (0, 1e39, 0)] (interpolation = \"vertex\")\n        ";
+    assert!(SCENE.contains(uv));
+    for (from, to, names) in [
+        (uv, uv.replace("(1, 1)", "(1e39, 1)"), "primvars:st"),
+        (uv, uv.replace("texCoord2f", "texCoord2d").replace("(1, 1)", "(1e39, 1)"), "primvars:st"),
+        (uv, format!("{normals}{uv}"), "normals"),
+    ] {
+        let s = read_text(&SCENE.replacen(from, &to, 1)).unwrap();
+        assert!(s.contents.meshes.is_empty(), "{to}");
+        let w = s.warnings.iter().find(|w| w.contains("inconsistent: skipped")).expect("a warning");
+        assert!(w.contains("/World/Ground") && w.contains(names), "{w}");
+    }
+}
