@@ -1325,6 +1325,20 @@ fn triangle_mesh(p: &Params) -> Res<TriangleMesh> {
         Some(v) => return Err((p.line, format!("{} uv numbers for {n} points", v.len()))),
         None => None,
     };
+    // Finite in double precision (1e39) is not always finite in single precision, where
+    // the mesh keeps its normals and UVs.
+    let finite = |name: &str, ok: bool| match ok {
+        true => Ok(()),
+        false => Err((
+            p.get(name).map_or(p.line, |q| q.line),
+            format!("trianglemesh: \"{name}\" is beyond single precision"),
+        )),
+    };
+    finite("N", normals.iter().flatten().all(|n: &Vec3| n.is_finite()))?;
+    finite(
+        if p.floats("uv").is_some() { "uv" } else { "st" },
+        uvs.iter().flatten().flatten().all(|x: &f32| x.is_finite()),
+    )?;
     let mesh = TriangleMesh { positions: positions.iter().map(|q| q.as_vec3()).collect(), normals, uvs, indices: tris };
     mesh.validate().map_err(|e| (p.line, format!("trianglemesh: {e}")))?;
     Ok(mesh)

@@ -454,3 +454,20 @@ fn the_field_of_view_spans_the_shorter_side_of_any_image_size() {
         assert!(e.contains("line 1") && (e.contains("screenwindow") || e.contains("frameaspectratio")), "{e}");
     }
 }
+
+#[test]
+fn trianglemesh_normals_and_uvs_beyond_single_precision_are_errors_naming_them() {
+    let mesh = |extra: &str| {
+        read(&format!("WorldBegin\nShape \"trianglemesh\" \"point3 P\" [ 0 0 0  1 0 0  0 1 0 ]\n  {extra}\n"))
+    };
+    assert!(mesh("\"normal N\" [ 0 0 1  0 0 1  0 0 1 ] \"point2 uv\" [ 0 0  1 0  0 1 ]").is_ok());
+    // Finite as doubles, infinite in single precision.
+    for (extra, name) in [
+        ("\"normal N\" [ 0 0 1  0 0 1e39  0 0 1 ]", "\"N\""),
+        ("\"point2 uv\" [ 0 0  1e39 0  0 1 ]", "\"uv\""),
+        ("\"point2 st\" [ 0 0  1 0  0 -1e39 ]", "\"st\""),
+    ] {
+        let e = mesh(extra).unwrap_err().to_string();
+        assert!(e.starts_with("dir/scene.pbrt: line 3:") && e.contains(name) && e.contains("single precision"), "{e}");
+    }
+}
