@@ -233,6 +233,42 @@ fn progress_goes_to_logs_as_lines_with_percent_rate_and_time_left() {
 }
 
 #[test]
+fn export_to_usda_keeps_visibility_and_to_hair_says_it_cannot() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/two_strands.hair");
+    std::fs::copy(data, d.join("two.hair")).unwrap();
+    let diffuse = "material = { type = \"diffuse\", color = [1, 1, 1] }";
+    let scene = format!(
+        "{HEAD}[[mesh]]\nshape = {{ type = \"sphere\", radius = 0.5 }}\n{diffuse}\ncamera_visible = false\nmatte = true\n\
+         [[mesh]]\nshape = {{ type = \"plane\", size = 2.0 }}\n{diffuse}\n\
+         [[hair]]\nfile = \"two.hair\"\nmaterial = {{ type = \"tube\", diffuse = [1, 1, 1] }}\ncasts_shadows = false\n"
+    );
+    std::fs::write(d.join("vis.toml"), scene).unwrap();
+    let (ok, stderr) = tress(&["export", "vis.toml", "-o", "vis.usda"], d);
+    assert!(ok, "{stderr}");
+    let back = tress::io::usd::read_usd(&d.join("vis.usda"), &Default::default()).unwrap();
+    let seen = |camera, shadows, matte| tress::scene::Visibility { camera, shadows, matte };
+    let meshes: Vec<_> = back.contents.meshes.iter().map(|m| m.visibility).collect();
+    assert_eq!(meshes, [seen(false, true, true), seen(true, true, false)]);
+    assert_eq!(back.contents.hair.iter().map(|h| h.visibility).collect::<Vec<_>>(), [seen(true, false, false)]);
+    // Exporting the exported file again writes the same prims with the same switches.
+    let (ok, stderr) = tress(&["export", "vis.usda", "-o", "again.usda"], d);
+    assert!(ok, "{stderr}");
+    let switches = |name: &str| {
+        let text = std::fs::read_to_string(d.join(name)).unwrap();
+        let kept = text.lines().filter(|l| l.trim_start().starts_with("def ") || l.contains("primvars:arnold:"));
+        kept.map(str::trim).collect::<Vec<_>>().join("\n")
+    };
+    assert_eq!(switches("again.usda"), switches("vis.usda"));
+    assert_eq!(switches("vis.usda").matches("primvars:arnold:").count(), 3);
+    // A .hair file has no place for it: said, and the strands written all the same.
+    let (ok, stderr) = tress(&["export", "vis.toml", "-o", "vis.hair"], d);
+    assert!(ok && stderr.contains("warning: 1 strand sets are hidden from the camera"), "{stderr}");
+    assert_eq!(tress::io::cem_hair::read_hair(&d.join("vis.hair")).unwrap().strand_count(), 2);
+}
+
+#[test]
 fn fur_export_needs_fur_and_the_memory_limit_counts_grown_fur() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();

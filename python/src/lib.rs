@@ -349,7 +349,7 @@ fn export_shapes(py: Python<'_>, scene: &PyDescription, path: PathBuf) -> PyResu
     py.detach(|| -> anyhow::Result<()> {
         let geometry = tress::prepare::load_geometry(&scene.desc)?;
         if is("usda") {
-            tress::io::usd::write_usd(&path, &geometry.shapes, &geometry.materials)?;
+            tress::io::usd::write_usd(&path, &geometry.shapes, &geometry.materials, &geometry.visibility)?;
         } else {
             let mut all = tress::geometry::StrandSet::new();
             for (shape, _) in &geometry.shapes {

@@ -41,6 +41,7 @@ pub mod points;
 pub mod shapes;
 pub mod skel;
 pub mod values;
+pub mod visibility;
 
 pub use export::{usda_text, write_usd};
 
@@ -393,6 +394,9 @@ fn read_drawable(
     notes: &mut Notes,
 ) -> Res<()> {
     let what = |e: anyhow::Error| e.context(format!("{}", prim.path()));
+    let Some(visibility) = visibility::read(prim, time, notes).map_err(what)? else {
+        return Ok(());
+    };
     match kind {
         "BasisCurves" | "NurbsCurves" => {
             let read = if kind == "BasisCurves" { curves::read_basis_curves } else { curves::read_nurbs_curves };
@@ -414,7 +418,7 @@ fn read_drawable(
                     (t.ambient, t.diffuse) = (c, c);
                 }
             }
-            contents.hair.push(entry);
+            contents.hair.push(HairEntry { visibility, ..entry });
         }
         "Mesh" => {
             let mesh = match shapes::read_mesh(prim, time, skin) {
@@ -427,7 +431,7 @@ fn read_drawable(
             if token(values::value(prim, "subdivisionScheme", time)?, "catmullClark") != "none" {
                 notes.note("subdivision surfaces: drawn as their control cage".into(), prim);
             }
-            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform);
+            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform, visibility);
         }
         "Points" => {
             let mesh = match points::read_points(prim, time, skin, notes) {
@@ -440,7 +444,7 @@ fn read_drawable(
                     return Ok(());
                 }
             };
-            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform);
+            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform, visibility);
         }
         gprim => {
             let mesh = match shapes::read_gprim(prim, gprim, time) {
@@ -450,7 +454,7 @@ fn read_drawable(
                     return Ok(());
                 }
             };
-            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform);
+            push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform, visibility);
         }
     }
     Ok(())
@@ -599,12 +603,18 @@ fn surface_material(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Mater
     Ok(Material::Diffuse { color: color.unwrap_or(Vec3::splat(0.5)) })
 }
 
-fn push_mesh(contents: &mut Contents, mesh: crate::geometry::TriangleMesh, material: Material, transform: Affine3A) {
+fn push_mesh(
+    contents: &mut Contents,
+    mesh: crate::geometry::TriangleMesh,
+    material: Material,
+    transform: Affine3A,
+    visibility: crate::scene::Visibility,
+) {
     contents.meshes.push(MeshEntry {
         source: MeshSource::Inline(mesh),
         material: material.into(),
         transform,
-        visibility: Default::default(),
+        visibility,
     });
 }
 

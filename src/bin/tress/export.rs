@@ -80,7 +80,12 @@ fn export(
     let desc = load(scene, o, frame, false)?;
     let geometry = tress::prepare::load_geometry(&desc)?;
     let materials = &geometry.materials;
-    let shapes: Vec<_> = geometry.shapes.into_iter().filter(|(_, m)| keep(&materials[*m as usize])).collect();
+    let (shapes, visibility): (Vec<_>, Vec<_>) = geometry
+        .shapes
+        .into_iter()
+        .zip(geometry.visibility)
+        .filter(|((_, m), _)| keep(&materials[*m as usize]))
+        .unzip();
     let name = scene.map_or("the demo scene".into(), |s| s.display().to_string());
     let strands = shapes.iter().any(|(s, _)| matches!(s, Shape::Strands(s) if s.strand_count() > 0));
     if !strands && (what == "fur" || is("hair")) {
@@ -90,15 +95,23 @@ fn export(
         if shapes.is_empty() {
             bail!("{name} has nothing to export: {} not written", output.display());
         }
-        tress::io::usd::write_usd(output, &shapes, materials)?;
+        tress::io::usd::write_usd(output, &shapes, materials, &visibility)?;
         eprintln!("wrote {} ({} shapes)", output.display(), shapes.len());
         return Ok(());
     }
     let mut all = tress::geometry::StrandSet::new();
-    for (shape, _) in &shapes {
+    let mut flagged = 0;
+    for ((shape, _), seen) in shapes.iter().zip(&visibility) {
         if let Shape::Strands(s) = shape {
             all.append(s);
+            flagged += usize::from(*seen != tress::scene::Visibility::default());
         }
+    }
+    if flagged > 0 {
+        eprintln!(
+            "warning: {flagged} strand sets are hidden from the camera, cast no shadows or are matte: a .hair file \
+             cannot hold that, they are written as plain strands (a .usda file keeps it)"
+        );
     }
     tress::io::cem_hair::write_hair(output, &all)?;
     eprintln!("wrote {} ({} strands, {} segments)", output.display(), all.strand_count(), all.segment_count());

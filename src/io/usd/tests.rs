@@ -126,7 +126,7 @@ fn export_then_import_keeps_points_widths_and_colours() {
     ];
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("out.usda");
-    write_usd(&path, &shapes, &materials).unwrap();
+    write_usd(&path, &shapes, &materials, &[]).unwrap();
     let s = read_usd(&path, &ImportOptions::default()).unwrap();
     let back = strands(&s, 0);
     assert_eq!(back.offsets, set.offsets);
@@ -139,6 +139,37 @@ fn export_then_import_keeps_points_widths_and_colours() {
         assert_eq!(a.map(|i| m.positions[i as usize]), b.map(|i| mesh.positions[i as usize]));
     }
     assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.2, 0.3, 0.4) }.into());
+}
+
+#[test]
+fn export_then_import_keeps_visibility() {
+    use crate::scene::Visibility;
+    let mut set = StrandSet::new();
+    set.push_strand([(Vec3::ZERO, 0.01), (Vec3::Y, 0.01)]);
+    let mesh = TriangleMesh::sphere(1.0, 2);
+    let seen = |camera, shadows, matte| Visibility { camera, shadows, matte };
+    let cases = [seen(false, true, false), seen(true, false, true), seen(true, true, false), seen(false, false, true)];
+    let shapes: Vec<_> = cases
+        .iter()
+        .enumerate()
+        .map(|(i, _)| match i % 2 {
+            0 => (Shape::Strands(set.clone()), 0),
+            _ => (Shape::Mesh(mesh.clone()), 1),
+        })
+        .collect();
+    let materials = vec![
+        Material::Tube(crate::hair_system::HairSystem::default().tube()),
+        Material::Diffuse { color: Vec3::splat(0.5) },
+    ];
+    let text = usda_text(&shapes, &materials, &cases).unwrap();
+    // Only what differs from the default is written: the third shape has no Arnold primvars.
+    assert_eq!(text.matches("primvars:arnold:").count(), 6, "{text}");
+    let s = read_text(&text).unwrap();
+    let hair: Vec<_> = s.contents.hair.iter().map(|h| h.visibility).collect();
+    let meshes: Vec<_> = s.contents.meshes.iter().map(|m| m.visibility).collect();
+    assert_eq!((hair, meshes), (vec![cases[0], cases[2]], vec![cases[1], cases[3]]));
+    // Without visibility every shape is written seen by every ray.
+    assert!(!usda_text(&shapes, &materials, &[]).unwrap().contains("arnold"));
 }
 
 #[test]
