@@ -7,8 +7,10 @@
 //! - **mesh**: vertices (`.vt`, plus tweaks `.pt`), edges (`.ed`), faces (`.fc`, as edge
 //!   loops) and UV set 0 (`.uvst[0].uvsp`, per face corner), triangulated as fans and
 //!   placed by its DAG transforms (translate, rotate with its order, scale, pivots, rotate
-//!   axis). A mesh built by a `polySphere`, `polyPlane` or `polyTorus` node is rebuilt
-//!   from that node's attributes. Colour: the `lambert`/`blinn`/`phong` of its shading
+//!   axis). A mesh built by a `polySphere`, `polyPlane`, `polyTorus` or `polyCube` node is
+//!   rebuilt from that node's attributes (spheres and cubes with Maya's vertex numbers, so
+//!   point tweaks land where Maya puts them), through the `transformGeometry` nodes on the
+//!   way (their matrix applied). Colour: the `lambert`/`blinn`/`phong` of its shading
 //!   group (`color × diffuse`), else Maya's default grey. Hidden and intermediate shapes
 //!   are skipped; a deformed shape (a mesh or curve with no geometry of its own) is drawn
 //!   in its rest pose, from the shape its deformers start from (the intermediate `…Orig`).
@@ -91,7 +93,7 @@ use std::f32::consts::PI;
 use std::path::Path;
 
 /// The primitive nodes a mesh's geometry is rebuilt from (`Reader::procedural`).
-const PROCEDURAL_MESHES: &[&str] = &["polySphere", "polyPlane", "polyTorus"];
+const PROCEDURAL_MESHES: &[&str] = &["polySphere", "polyPlane", "polyTorus", "polyCube"];
 /// The attributes a deformed shape's geometry flows in through, from the shape it starts
 /// from to the deformed one: a shape's `inMesh` and `create`, a deformer's
 /// `input[i].inputGeometry`, `groupParts.inputGeometry`.
@@ -155,7 +157,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 59] = [
+const KNOWN: [&str; 61] = [
     "transform",
     "animCurveTL",
     "animCurveTA",
@@ -188,6 +190,8 @@ const KNOWN: [&str; 59] = [
     "polySphere",
     "polyPlane",
     "polyTorus",
+    "polyCube",
+    "transformGeometry",
     "makeNurbCircle",
     "xgmSplineDescription",
     "xgmSplineBase",
@@ -518,32 +522,64 @@ impl<'g> Reader<'g> {
     /// The shape a deformed shape (one with no geometry of its own, built by a chain of
     /// `skinCluster`, `tweak`, `groupParts`, ... nodes) is drawn as: the first node up its
     /// geometry inputs for which `stores` holds (Maya's intermediate `…Orig` shape: the rest
-    /// pose), counted and its chain's node types noted for one warning. `None` when the
-    /// chain reaches none.
-    fn rest_shape(&mut self, n: usize, stores: impl Fn(&Self, usize) -> bool) -> Option<usize> {
-        let mut seen = std::collections::HashSet::from([n]);
+    /// pose), with the nodes between it and `n`, upstream first. The chain's node types
+    /// other than `evaluated` (what the caller applies) and `groupParts` are noted for one
+    /// warning. `None` when the chain reaches none.
+    fn rest_shape(
+        &mut self,
+        n: usize,
+        stores: impl Fn(&Self, usize) -> bool,
+        evaluated: &[&str],
+    ) -> Option<(usize, Vec<usize>)> {
+        // Each node met, with the node downstream of it it was reached from.
+        let mut via = HashMap::from([(n, n)]);
         let mut queue = std::collections::VecDeque::from([n]);
-        let mut passed = std::collections::BTreeSet::new();
         while let Some(c) = queue.pop_front() {
-            if c != n {
-                if stores(self, c) {
-                    // `groupParts` passes the geometry on as it is: not a deformation.
-                    passed.remove("groupParts");
-                    if !passed.is_empty() {
-                        self.rest_posed.0.insert(n);
-                        self.rest_posed.1.extend(passed);
-                    }
-                    return Some(c);
+            if c != n && stores(self, c) {
+                let mut chain = Vec::new();
+                let mut at = via[&c];
+                while at != n {
+                    chain.push(at);
+                    at = via[&at];
                 }
-                passed.insert(self.kind(c).to_string());
+                // `groupParts` passes the geometry on as it is: not a deformation.
+                let passed: std::collections::BTreeSet<String> = chain
+                    .iter()
+                    .map(|&m| self.kind(m))
+                    .filter(|k| *k != "groupParts" && !evaluated.contains(k))
+                    .map(str::to_string)
+                    .collect();
+                if !passed.is_empty() {
+                    self.rest_posed.0.insert(n);
+                    self.rest_posed.1.extend(passed);
+                }
+                return Some((c, chain));
             }
             for conn in self.g.inputs_of(c) {
-                if GEOMETRY_INPUTS.contains(&plug_leaf(&conn.dst_attr)) && seen.insert(conn.src) {
+                if GEOMETRY_INPUTS.contains(&plug_leaf(&conn.dst_attr)) && !via.contains_key(&conn.src) {
+                    via.insert(conn.src, c);
                     queue.push_back(conn.src);
                 }
             }
         }
         None
+    }
+
+    /// Where the geometry flowing into `n` starts: up its first geometry input (`i`,
+    /// `inputGeometry`, ...) until a node with none; `n` itself when it has none.
+    fn history_root(&self, n: usize) -> usize {
+        let mut seen = std::collections::HashSet::from([n]);
+        let mut at = n;
+        while let Some(up) = self
+            .g
+            .inputs_of(at)
+            .find(|c| GEOMETRY_INPUTS.contains(&plug_leaf(&c.dst_attr)))
+            .map(|c| c.src)
+            .filter(|&up| seen.insert(up))
+        {
+            at = up;
+        }
+        at
     }
 
     // ----- meshes -----
@@ -561,43 +597,55 @@ impl<'g> Reader<'g> {
         };
         let (mesh, faces) = match history.first() {
             Some(&src) if !stores(self, n) => {
-                // Built by a primitive node, or deformed from a shape upstream.
-                let from = match PROCEDURAL_MESHES.contains(&self.kind(src)) {
-                    true => Some(src),
-                    false => self.rest_shape(n, stores),
+                // Built by a primitive node, or deformed from a shape upstream through a
+                // chain of nodes: `transformGeometry` ones are applied, deformers are not
+                // (the rest pose is drawn).
+                let (from, chain) = match PROCEDURAL_MESHES.contains(&self.kind(src)) {
+                    true => (Some(src), Vec::new()),
+                    false => self
+                        .rest_shape(n, stores, &["transformGeometry"])
+                        .map_or((None, Vec::new()), |(f, c)| (Some(f), c)),
                 };
                 // The shape's own point tweaks go on top of what its history builds; only a
-                // primitive whose vertices are Maya's says where each one goes.
+                // primitive whose vertices are Maya's says where each one goes, and only when
+                // nothing between them changes the vertices' numbers.
                 let tweaks = point_tweaks(g, n)?;
+                let numbered = chain.iter().all(|&m| matches!(self.kind(m), "groupParts" | "transformGeometry"));
                 let built = match from {
                     Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?.map(|(m, f)| (m, Faces::Of(f), None)),
-                    Some(f) => self.procedural(f)?.map(|p| (p.mesh, Faces::Count(p.faces), p.maya_ids)),
+                    Some(f) => self.procedural(f)?.map(|p| (p.mesh, p.faces, p.maya_ids)),
                     None => None,
                 };
-                let built = built.map(|(mut m, faces, ids)| {
-                    match ids.filter(|_| from == Some(src)) {
-                        Some(ids) => {
-                            for (p, id) in m.positions.iter_mut().zip(ids) {
-                                *p += tweaks.get(&(id as usize)).copied().unwrap_or_default().as_vec3();
-                            }
+                let built = match built {
+                    Some((mut m, faces, ids)) => {
+                        for &t in chain.iter().filter(|&&t| self.kind(t) == "transformGeometry") {
+                            m.transform(&transform_geometry(g, t)?);
                         }
-                        None if !tweaks.is_empty() => self.out.warnings.push(format!(
-                            "mesh {}: the point tweaks of {} vertices are not applied to what its `{}` history builds",
-                            node.name,
-                            tweaks.len(),
-                            self.kind(src)
-                        )),
-                        None => {}
+                        match ids.filter(|_| numbered) {
+                            Some(ids) => {
+                                for (p, id) in m.positions.iter_mut().zip(ids) {
+                                    *p += tweaks.get(&(id as usize)).copied().unwrap_or_default().as_vec3();
+                                }
+                            }
+                            None if !tweaks.is_empty() => self.out.warnings.push(format!(
+                                "mesh {}: the point tweaks of {} vertices are not applied to what its `{}` history builds",
+                                node.name,
+                                tweaks.len(),
+                                self.kind(src)
+                            )),
+                            None => {}
+                        }
+                        Some((m, faces))
                     }
-                    (m, faces)
-                });
+                    None => None,
+                };
                 match built {
                     Some(m) => m,
                     None => {
                         self.out.warnings.push(format!(
                             "mesh {} is built by a `{}` node, which tress cannot evaluate: skipped",
                             node.name,
-                            self.kind(src)
+                            self.kind(self.history_root(src))
                         ));
                         return Ok(());
                     }
@@ -653,13 +701,29 @@ impl<'g> Reader<'g> {
                 let (sa, sh) =
                     (divisions(&["sa", "subdivisionsAxis"], 20.0)?, divisions(&["sh", "subdivisionsHeight"], 20.0)?);
                 let (mut m, ids) = poly_sphere(check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?, sa, sh);
-                let axis = vec3(g, src, &["ax", "axis"], &[["axx", "axisX"], ["axy", "axisY"], ["axz", "axisZ"]], 0.0)?;
-                if let Some(axis) = axis.as_vec3().try_normalize().filter(|_| attr(g, src, &["ax", "axis"]).is_some()) {
-                    m.transform(&Affine3A::from_quat(glam::Quat::from_rotation_arc(Vec3::Y, axis)));
-                }
+                m.transform(&primitive_axis(g, src)?);
                 // Quads between the rings and a triangle (three Ptex faces) per column at
                 // each pole.
-                Some(Primitive { mesh: m, faces: sa * (sh - 2) + 6 * sa, maya_ids: Some(ids) })
+                Some(Primitive { mesh: m, faces: Faces::Count(sa * (sh - 2) + 6 * sa), maya_ids: Some(ids) })
+            }
+            "polyCube" => {
+                let size = Vec3::new(
+                    check(scalar(g, src, &["w", "width"], 1.0)?, "width")?,
+                    check(scalar(g, src, &["h", "height"], 1.0)?, "height")?,
+                    check(scalar(g, src, &["d", "depth"], 1.0)?, "depth")?,
+                );
+                let grid = |names: &[&str]| -> Res<u32> { Ok(scalar(g, src, names, 1.0)?.clamp(1.0, 1000.0) as u32) };
+                let divisions = [
+                    grid(&["sw", "subdivisionsWidth"])?,
+                    grid(&["sh", "subdivisionsHeight"])?,
+                    grid(&["sd", "subdivisionsDepth"])?,
+                ];
+                // `createUVs` 0 makes none; the other modes lay out the same cross on a box
+                // (every stored box of the MtoA files has it, whatever its proportions).
+                let with_uvs = scalar(g, src, &["cuv", "createUVs"], 3.0)? != 0.0;
+                let (mut m, faces, ids) = poly_cube(size, divisions, with_uvs);
+                m.transform(&primitive_axis(g, src)?);
+                Some(Primitive { mesh: m, faces: Faces::Of(faces), maya_ids: Some(ids) })
             }
             "polyTorus" => {
                 let (sa, sh) =
@@ -670,7 +734,7 @@ impl<'g> Reader<'g> {
                     sa,
                     sh,
                 );
-                Some(Primitive { mesh: m, faces: sa * sh, maya_ids: None })
+                Some(Primitive { mesh: m, faces: Faces::Count(sa * sh), maya_ids: None })
             }
             "polyPlane" => {
                 let w = check(scalar(g, src, &["w", "width"], 1.0)?, "width")?;
@@ -680,7 +744,7 @@ impl<'g> Reader<'g> {
                 // Drawn as one quad; Maya divides it into a grid of faces (10 × 10 unless set).
                 let grid = |names: &[&str]| -> Res<u32> { Ok(scalar(g, src, names, 10.0)?.clamp(1.0, 1000.0) as u32) };
                 let faces = grid(&["sw", "subdivisionsWidth"])? * grid(&["sh", "subdivisionsHeight"])?;
-                Some(Primitive { mesh: m, faces, maya_ids: None })
+                Some(Primitive { mesh: m, faces: Faces::Count(faces), maya_ids: None })
             }
             _ => None,
         })
@@ -862,8 +926,8 @@ impl<'g> Reader<'g> {
                 let builds = |r: &Self, m: usize| {
                     r.kind(m) == "nurbsCurve" && block(m).is_some() || r.kind(m) == "makeNurbCircle"
                 };
-                match self.rest_shape(n, builds) {
-                    Some(m) => m,
+                match self.rest_shape(n, builds, &[]) {
+                    Some((m, _)) => m,
                     None => {
                         if let Some(&src) = self.inputs(n, &["cr", "create"]).first() {
                             self.unbuilt_curves.0 += 1;
@@ -1604,6 +1668,161 @@ fn poly_sphere(radius: f32, sa: u32, sh: u32) -> (TriangleMesh, Vec<u32>) {
     (m, ids)
 }
 
+/// The rotation a primitive node's `axis` (`.ax`, Maya's default +Y) gives what it
+/// builds about +Y: the shortest turn from +Y to it; none when unset or of no length.
+fn primitive_axis(g: &Graph, n: usize) -> Res<Affine3A> {
+    let axis = vec3(g, n, &["ax", "axis"], &[["axx", "axisX"], ["axy", "axisY"], ["axz", "axisZ"]], 0.0)?;
+    Ok(match axis.as_vec3().try_normalize().filter(|_| attr(g, n, &["ax", "axis"]).is_some()) {
+        Some(axis) => Affine3A::from_quat(glam::Quat::from_rotation_arc(Vec3::Y, axis)),
+        None => Affine3A::IDENTITY,
+    })
+}
+
+/// Maya's `polyCube` of `size` (width along X, height along Y, depth along Z, centred on
+/// the origin) with `divisions` faces along each, its vertices numbered, its faces ordered
+/// and its UVs laid out as Maya's, read from the meshes Maya stores for its cubes (the
+/// MtoA suite's `test_0152` keeps an unsubdivided one as `pCubeShape1_reference`;
+/// subdivided ones show how the layout grows):
+///
+/// - **vertices**: first a strip of rows around the X axis, `sw + 1` vertices each from −X
+///   to +X: up the front (+Z) from the bottom, back across the top, down the back, forward
+///   under the bottom, `2 sh + 2 sd` rows in all; then the inner vertices of the +X side,
+///   then those of the −X side, each by rows from the bottom and from −Z to +Z in a row.
+/// - **faces**: the strip's quads row by row (front, top, back, bottom), then the +X side's
+///   and the −X side's, each by rows from the bottom and from −Z in a row; all wound to
+///   face outwards.
+/// - **UVs** (when `with_uvs`): the cross of Maya's default layout, each side a quarter
+///   wide: the strip at u 0.375 to 0.625 over v 0 to 1 (a quarter of v per side), the +X
+///   side at u 0.625 to 0.875 and the −X side at u 0.125 to 0.375, both at v 0 to 0.25.
+///
+/// Returns the triangles (flat: Maya's cube edges are hard), their Ptex faces and the Maya
+/// vertex each mesh vertex is (what point tweaks are indexed by).
+fn poly_cube(size: Vec3, divisions: [u32; 3], with_uvs: bool) -> (TriangleMesh, Vec<[u32; 2]>, Vec<u32>) {
+    let [sw, sh, sd] = divisions;
+    let rows = 2 * sh + 2 * sd;
+    let half = size / 2.0;
+    let x = |i: u32| -half.x + size.x * i as f32 / sw as f32;
+    let y = |a: u32| -half.y + size.y * a as f32 / sh as f32;
+    let z = |b: u32| -half.z + size.z * b as f32 / sd as f32;
+    // Where strip row `r` runs (y, z), and its v.
+    let row = |r: u32| -> (f32, f32, f32) {
+        let quarter = |k: u32, t: f32| 0.25 * (k as f32 + t);
+        if r <= sh {
+            (y(r), half.z, quarter(0, r as f32 / sh as f32))
+        } else if r <= sh + sd {
+            (half.y, z(sd - (r - sh)), quarter(1, (r - sh) as f32 / sd as f32))
+        } else if r <= 2 * sh + sd {
+            (y(sh - (r - sh - sd)), -half.z, quarter(2, (r - sh - sd) as f32 / sh as f32))
+        } else {
+            (-half.y, z(r - 2 * sh - sd), quarter(3, (r - 2 * sh - sd) as f32 / sd as f32))
+        }
+    };
+    let mut positions = Vec::new();
+    for r in 0..rows {
+        let (py, pz, _) = row(r);
+        positions.extend((0..=sw).map(|i| Vec3::new(x(i), py, pz)));
+    }
+    let inner = (sh - 1) * (sd - 1);
+    for side_x in [half.x, -half.x] {
+        for a in 1..sh {
+            positions.extend((1..sd).map(|b| Vec3::new(side_x, y(a), z(b))));
+        }
+    }
+    let strip = |r: u32, i: u32| (r % rows) * (sw + 1) + i;
+    // The vertex at height step `a`, depth step `b` of the side at strip column `i` (0: −X,
+    // sw: +X): on the strip at the side's border, else one of the side's inner vertices.
+    let side = |i: u32, a: u32, b: u32| -> u32 {
+        if b == sd {
+            strip(a, i)
+        } else if a == sh {
+            strip(sh + sd - b, i)
+        } else if b == 0 {
+            strip(2 * sh + sd - a, i)
+        } else if a == 0 {
+            strip(2 * sh + sd + b, i)
+        } else {
+            let first = rows * (sw + 1) + if i == 0 { inner } else { 0 };
+            first + (a - 1) * (sd - 1) + (b - 1)
+        }
+    };
+    // UVs: the strip's grid, then each side's, numbered as pushed.
+    let mut uvs = Vec::new();
+    for r in 0..=rows {
+        let v = if r == rows { 1.0 } else { row(r).2 };
+        uvs.extend((0..=sw).map(|i| [0.375 + 0.25 * i as f32 / sw as f32, v]));
+    }
+    let side_uv = |first: usize, a: u32, b: u32| (first + (a * (sd + 1) + b) as usize) as i64;
+    let (plus_x, minus_x) = (uvs.len(), uvs.len() + ((sh + 1) * (sd + 1)) as usize);
+    for u0 in [0.875, 0.125] {
+        for a in 0..=sh {
+            // +X runs from u 0.875 at −Z to 0.625 at +Z, −X from 0.125 at −Z to 0.375.
+            let dir = if u0 > 0.5 { -1.0 } else { 1.0 };
+            uvs.extend((0..=sd).map(|b| [u0 + dir * 0.25 * b as f32 / sd as f32, 0.25 * a as f32 / sh as f32]));
+        }
+    }
+    let mut polygons: Vec<Polygon> = Vec::new();
+    for r in 0..rows {
+        for i in 0..sw {
+            let at = |r: u32, i: u32| (r * (sw + 1) + i) as i64;
+            polygons.push((
+                vec![strip(r, i), strip(r, i + 1), strip(r + 1, i + 1), strip(r + 1, i)],
+                Some(vec![at(r, i), at(r, i + 1), at(r + 1, i + 1), at(r + 1, i)]),
+            ));
+        }
+    }
+    for (i, first) in [(sw, plus_x), (0, minus_x)] {
+        for a in 0..sh {
+            for b in 0..sd {
+                // Counter-clockwise seen from outside: +X from its +Z edge, −X from its −Z.
+                let corners = match i {
+                    0 => [(a, b), (a, b + 1), (a + 1, b + 1), (a + 1, b)],
+                    _ => [(a, b + 1), (a, b), (a + 1, b), (a + 1, b + 1)],
+                };
+                polygons.push((
+                    corners.iter().map(|&(a, b)| side(i, a, b)).collect(),
+                    Some(corners.iter().map(|&(a, b)| side_uv(first, a, b)).collect()),
+                ));
+            }
+        }
+    }
+    if !with_uvs {
+        uvs.clear();
+        for p in &mut polygons {
+            p.1 = None;
+        }
+    }
+    polygon_mesh(&positions, &uvs, &polygons, false)
+}
+
+/// The matrix a `transformGeometry` node applies to the geometry passing through it: its
+/// `transform` (`.txf`), in Maya's layout (a point is the row `[x y z 1]` times the matrix,
+/// so the translation is the last row), inverted when `invertTransform` (`.itf`) is on.
+fn transform_geometry(g: &Graph, n: usize) -> Res<Affine3A> {
+    let node = &g.nodes[n];
+    let Some(a) = attr(g, n, &["txf", "transform"]) else { return Ok(Affine3A::IDENTITY) };
+    let bad = |m: &str| (a.line, format!("transformGeometry {}: `{}` {m}", node.name, a.name));
+    let Value::Numbers(v) = &a.value else { return Err(bad("must be 16 numbers")) };
+    if v.len() != 16 {
+        return Err(bad("must be 16 numbers"));
+    }
+    if [v[3], v[7], v[11]] != [0.0; 3] || v[15] != 1.0 {
+        return Err(bad("is not an affine matrix (its last column must be 0 0 0 1)"));
+    }
+    let row = |k: usize| DVec3::new(v[4 * k], v[4 * k + 1], v[4 * k + 2]);
+    let mut m = DAffine3::from_cols(row(0), row(1), row(2), row(3));
+    if scalar(g, n, &["itf", "invertTransform"], 0.0)? != 0.0 {
+        if m.matrix3.determinant() == 0.0 {
+            return Err(bad("cannot be inverted (invertTransform is on)"));
+        }
+        m = m.inverse();
+    }
+    let m = to_affine(&m);
+    match m.is_finite() {
+        true => Ok(m),
+        false => Err(bad("overflows single precision")),
+    }
+}
+
 /// A three-component attribute set whole (`.t`) or by component (`.tx`), in file order.
 fn vec3(g: &Graph, n: usize, whole: &[&str], parts: &[[&str; 2]; 3], default: f64) -> Res<DVec3> {
     let mut v = DVec3::splat(default);
@@ -1830,12 +2049,8 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>
             *p += d.as_vec3();
         }
     }
-    let has_uvs = !uvs.is_empty();
-    let mut mesh = TriangleMesh::default();
-    let mut uv_out: Vec<[f32; 2]> = Vec::new();
-    let mut original: Vec<u32> = Vec::new();
-    let mut corners: HashMap<(u32, i64), u32> = HashMap::new();
-    let (mut face_of, mut ptex) = (Vec::new(), 0u32);
+    let uvs: Vec<[f32; 2]> = uvs.iter().map(|uv| [uv[0] as f32, uv[1] as f32]).collect();
+    let mut polygons = Vec::new();
     for (_, line, faces) in chunks {
         for f in faces {
             let mut loop_: Vec<u32> = Vec::with_capacity(f.edges.len());
@@ -1850,39 +2065,63 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>
                 }
                 loop_.push(v as u32);
             }
-            let face_uvs = f.uvs.as_ref().filter(|u| has_uvs && u.len() == loop_.len());
-            let mut ids = Vec::with_capacity(loop_.len());
-            for (k, &v) in loop_.iter().enumerate() {
-                let uv = face_uvs.map_or(-1, |u| u[k]);
-                if uv >= 0 && uv as usize >= uvs.len() {
-                    return Err((line, format!("{}: a face uses UV {uv} of {}", node.name, uvs.len())));
-                }
-                let id = *corners.entry((v, uv)).or_insert_with(|| {
-                    mesh.positions.push(positions[v as usize]);
-                    uv_out.push(if uv >= 0 {
-                        [uvs[uv as usize][0] as f32, uvs[uv as usize][1] as f32]
-                    } else {
-                        [0.0; 2]
-                    });
-                    original.push(v);
-                    (mesh.positions.len() - 1) as u32
-                });
-                ids.push(id);
+            let face_uvs = f.uvs.clone().filter(|u| !uvs.is_empty() && u.len() == loop_.len());
+            if let Some(&uv) = face_uvs.iter().flatten().find(|&&uv| uv >= 0 && uv as usize >= uvs.len()) {
+                return Err((line, format!("{}: a face uses UV {uv} of {}", node.name, uvs.len())));
             }
-            let subfaces = if ids.len() == 4 { 1 } else { ids.len() as u32 };
-            for k in 1..ids.len().saturating_sub(1) {
-                mesh.indices.push([ids[0], ids[k], ids[k + 1]]);
-                face_of.push([ptex, subfaces]);
-            }
-            ptex += subfaces;
+            polygons.push((loop_, face_uvs));
         }
-    }
-    if has_uvs {
-        mesh.uvs = Some(uv_out);
     }
     // Edges flagged smooth (third value 1) mean Maya shades with vertex normals.
     let smooth = edges.iter().filter(|e| e[2] != 0.0).count();
-    if smooth * 2 >= edges.len() && !edges.is_empty() {
+    let smooth = smooth * 2 >= edges.len() && !edges.is_empty();
+    let (mesh, face_of, _) = polygon_mesh(&positions, &uvs, &polygons, smooth);
+    Ok(Some((mesh, face_of)))
+}
+
+/// A polygon: its vertices in order and, when it has UVs, the UV of each corner (an index
+/// into the mesh's UVs, −1 for none).
+type Polygon = (Vec<u32>, Option<Vec<i64>>);
+
+/// Triangulates polygons over `positions` as fans, one mesh vertex per distinct (vertex,
+/// UV) corner, keeping their winding; with the Ptex faces of each triangle's polygon
+/// ([`Faces::Of`]) and the vertex of `positions` each mesh vertex is. UV indices must be
+/// in range. `smooth`: vertex normals, the area-weighted sum of the normals of the
+/// triangles around each vertex of `positions`; else none (flat shading).
+fn polygon_mesh(
+    positions: &[Vec3],
+    uvs: &[[f32; 2]],
+    polygons: &[Polygon],
+    smooth: bool,
+) -> (TriangleMesh, Vec<[u32; 2]>, Vec<u32>) {
+    let mut mesh = TriangleMesh::default();
+    let mut uv_out: Vec<[f32; 2]> = Vec::new();
+    let mut original: Vec<u32> = Vec::new();
+    let mut corners: HashMap<(u32, i64), u32> = HashMap::new();
+    let (mut face_of, mut ptex) = (Vec::new(), 0u32);
+    for (loop_, face_uvs) in polygons {
+        let mut ids = Vec::with_capacity(loop_.len());
+        for (k, &v) in loop_.iter().enumerate() {
+            let uv = face_uvs.as_ref().map_or(-1, |u| u[k]);
+            let id = *corners.entry((v, uv)).or_insert_with(|| {
+                mesh.positions.push(positions[v as usize]);
+                uv_out.push(if uv >= 0 { uvs[uv as usize] } else { [0.0; 2] });
+                original.push(v);
+                (mesh.positions.len() - 1) as u32
+            });
+            ids.push(id);
+        }
+        let subfaces = if ids.len() == 4 { 1 } else { ids.len() as u32 };
+        for k in 1..ids.len().saturating_sub(1) {
+            mesh.indices.push([ids[0], ids[k], ids[k + 1]]);
+            face_of.push([ptex, subfaces]);
+        }
+        ptex += subfaces;
+    }
+    if !uvs.is_empty() {
+        mesh.uvs = Some(uv_out);
+    }
+    if smooth {
         let mut sum = vec![Vec3::ZERO; positions.len()];
         for t in &mesh.indices {
             let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
@@ -1893,15 +2132,15 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>
         }
         mesh.normals = Some(original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect());
     }
-    Ok(Some((mesh, face_of)))
+    (mesh, face_of, original)
 }
 
 /// A mesh a primitive node (`polySphere`, ...) builds.
 struct Primitive {
     /// Its triangles.
     mesh: TriangleMesh,
-    /// How many (Ptex) faces Maya gives it.
-    faces: u32,
+    /// Its triangles' Maya faces, or how many (Ptex) faces Maya gives it.
+    faces: Faces,
     /// The Maya vertex number of each of its vertices (what point tweaks are indexed by),
     /// when tress builds Maya's vertices.
     maya_ids: Option<Vec<u32>>,

@@ -112,8 +112,8 @@ createNode nurbsCurve -n "ctrlShape" -p "ctrl";
 		5
 		1 0 0 0 0 1 -1 0 0 0 0 -1 1 0 0
 		;
-createNode polyCube -n "polyCube1";
-createNode polyCube -n "polyCube2";
+createNode polyCylinder -n "polyCylinder1";
+createNode polyCylinder -n "polyCylinder2";
 select -ne :defaultResolution;
 	setAttr ".w" 320;
 	setAttr ".h" 240;
@@ -196,7 +196,7 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     assert_eq!((d.segments, d.light_model), (n.segments, n.light_model));
     assert_eq!(d[ColorAttr::TipColor], n[ColorAttr::TipColor]);
 
-    // Camera, light, resolution; the control circle is not hair; polyCube is reported once.
+    // Camera, light, resolution; the control circle is not hair; polyCylinder is reported once.
     let c = s.camera.as_ref().unwrap();
     assert!(close(c.eye, Vec3::new(0.0, 3.0, 10.0)) && close(c.target, Vec3::new(0.0, 3.0, 0.0)));
     // Horizontal fit: 2 atan(1.41732 × 25.4 / 2 / 50 / (320 / 240)).
@@ -209,7 +209,7 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     assert!(close(direction, Vec3::Y), "{direction}");
     assert!(close(irradiance, Vec3::splat(2.0 * PI)));
     assert!(s.contents.hair.is_empty());
-    assert!(s.warnings.iter().any(|w| w.contains("polyCube (2)")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("polyCylinder (2)")), "{:?}", s.warnings);
     assert!(s.warnings.iter().any(|w| w.contains("1 closed")), "{:?}", s.warnings);
 }
 
@@ -1652,4 +1652,123 @@ fn light_and_colour_beyond_single_precision_are_errors_naming_the_node() {
     .unwrap_err()
     .to_string();
     assert!(e.contains("line 4:") && e.contains("red") && e.contains("single precision"), "{e}");
+}
+
+#[test]
+fn poly_cubes_have_mayas_vertex_numbers_face_order_and_uv_cross() {
+    // A 2 × 4 × 6 box of 2 × 2 × 2 faces (half sizes 1, 2, 3), Maya's numbering: a strip of
+    // rows of 3 vertices around X (up the front, back over the top, down the back, under the
+    // bottom), then the +X side's inner vertex (24) and the −X side's (25). Tweaked: 4, the
+    // front's centre (0, 0, 3), 10, the top's (0, 2, 0), 24 (1, 0, 0) and 25 (−1, 0, 0).
+    let cube = |attrs: &str| {
+        format!(
+            "createNode transform -n c;\ncreateNode mesh -n cs -p c;\n\
+             \tsetAttr \".pt[4]\" -type \"float3\" 0 0 1;\n\tsetAttr \".pt[10].py\" 1;\n\
+             \tsetAttr \".pt[24].px\" 1;\n\tsetAttr \".pnts[25].pntx\" -1;\n\
+             createNode polyCube -n pc;\n{attrs}connectAttr \"pc.out\" \"cs.i\";\n"
+        )
+    };
+    let sized = "\tsetAttr \".w\" 2;\n\tsetAttr \".h\" 4;\n\tsetAttr \".d\" 6;\n\
+                 \tsetAttr \".sw\" 2;\n\tsetAttr \".sh\" 2;\n\tsetAttr \".sd\" 2;\n";
+    let s = read(&cube(sized)).unwrap();
+    assert!(s.warnings.iter().all(|w| !w.contains("polyCube") && !w.contains("tweak")), "{:?}", s.warnings);
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    // 24 quads; 26 Maya vertices, 4 of them moved.
+    assert_eq!(m.indices.len(), 48);
+    let mut distinct: Vec<Vec3> = Vec::new();
+    for &p in &m.positions {
+        if !distinct.iter().any(|&q| close(p, q)) {
+            distinct.push(p);
+        }
+    }
+    assert_eq!(distinct.len(), 26);
+    let moved =
+        [Vec3::new(0.0, 0.0, 4.0), Vec3::new(0.0, 3.0, 0.0), Vec3::new(2.0, 0.0, 0.0), Vec3::new(-2.0, 0.0, 0.0)];
+    for w in moved {
+        assert!(distinct.iter().any(|&q| close(q, w)), "{w} not in {distinct:?}");
+    }
+    let half = Vec3::new(1.0, 2.0, 3.0);
+    for &p in distinct.iter().filter(|&&p| !moved.iter().any(|&w| close(p, w))) {
+        // Every other vertex on the box's surface, on its 3 × 3 × 3 lattice.
+        let on_face = (0..3).any(|k| (p[k].abs() - half[k]).abs() < 1e-6);
+        let on_grid = (0..3).all(|k| [-1.0, 0.0, 1.0].iter().any(|t| (p[k] - t * half[k]).abs() < 1e-6));
+        assert!(on_face && on_grid && p.abs().cmple(half + 1e-6).all(), "{p}");
+    }
+    // Maya's face order: face 0 the front's bottom-left quad (vertices 0, 1, 4, 3), face 16
+    // the first of the +X side (its bottom row, from −Z: vertices 23, 20, 17, 24).
+    let tri = |t: usize| m.indices[t].map(|i| m.positions[i as usize]);
+    let want0 = [Vec3::new(-1.0, -2.0, 3.0), Vec3::new(0.0, -2.0, 3.0), Vec3::new(0.0, 0.0, 4.0)];
+    let want32 = [Vec3::new(1.0, -2.0, 0.0), Vec3::new(1.0, -2.0, -3.0), Vec3::new(1.0, 0.0, -3.0)];
+    assert!((0..3).all(|k| close(tri(0)[k], want0[k]) && close(tri(32)[k], want32[k])), "{:?} {:?}", tri(0), tri(32));
+    // UVs: the cross, each side a quarter: the front's centre at (0.5, 0.125), the +X
+    // side's at (0.75, 0.125), the −X side's at (0.25, 0.125), the top's at (0.5, 0.375).
+    let uvs = m.uvs.as_ref().unwrap();
+    let uv_of =
+        |w: Vec3| m.positions.iter().zip(uvs).filter(|(p, _)| close(**p, w)).map(|(_, uv)| *uv).collect::<Vec<_>>();
+    assert_eq!(uv_of(moved[0]), [[0.5, 0.125]]);
+    assert_eq!(uv_of(moved[1]), [[0.5, 0.375]]);
+    assert_eq!(uv_of(moved[2]), [[0.75, 0.125]]);
+    assert_eq!(uv_of(moved[3]), [[0.25, 0.125]]);
+    // Wound outwards (the untweaked Maya default cube: 8 corners at ±0.5, 12 triangles).
+    let s = read("createNode mesh -n cs;\ncreateNode polyCube -n pc;\nconnectAttr \"pc.out\" \"cs.i\";\n").unwrap();
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    assert_eq!(m.indices.len(), 12);
+    assert!(m.positions.iter().all(|p| (p.abs() - Vec3::splat(0.5)).abs().max_element() < 1e-6));
+    for t in 0..12 {
+        let [a, b, c] = m.corners(t);
+        assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "triangle {t} faces in");
+    }
+    // No UVs with `createUVs` 0; the axis turns the box's height from Y to X.
+    let s =
+        read(&cube(&format!("{sized}\tsetAttr \".cuv\" 0;\n\tsetAttr \".ax\" -type \"double3\" 1 0 0;\n"))).unwrap();
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    assert!(m.uvs.is_none());
+    let extent = m.positions.iter().fold(Vec3::ZERO, |e, p| e.max(p.abs()));
+    // (The tweaks go on after the turn: vertex 4 still sticks out to z = 4.)
+    assert!(close(extent, Vec3::new(2.0, 1.0, 4.0)), "{extent}");
+    // A size that is not positive is an error naming the node.
+    let e = read(&cube("\tsetAttr \".d\" -1;\n")).unwrap_err().to_string();
+    assert!(e.contains("pc") && e.contains("depth"), "{e}");
+}
+
+#[test]
+fn transform_geometry_moves_the_geometry_flowing_through_it() {
+    // polyCube → groupParts → transformGeometry (× 2, then 1 up) → mesh, vertex 0 tweaked
+    // 1 down: the default cube's vertex 0 (−0.5, −0.5, 0.5) lands at (−1, 0, 1), then the
+    // tweak takes it to (−1, −1, 1); the other corners span y 0 to 2.
+    let scene = |extra: &str| {
+        format!(
+            "createNode transform -n c;\ncreateNode mesh -n cs -p c;\n\tsetAttr \".pt[0]\" -type \"float3\" 0 -1 0;\n\
+             createNode polyCube -n pc;\ncreateNode groupParts -n gp;\ncreateNode transformGeometry -n tg;\n\
+             \tsetAttr \".txf\" -type \"matrix\" 2 0 0 0 0 2 0 0 0 0 2 0 0 1 0 1;\n{extra}\
+             connectAttr \"pc.out\" \"gp.ig\";\nconnectAttr \"gp.og\" \"tg.ig\";\nconnectAttr \"tg.og\" \"cs.i\";\n"
+        )
+    };
+    let s = read(&scene("")).unwrap();
+    assert!(
+        s.warnings.iter().all(|w| !w.contains("transformGeometry") && !w.contains("rest pose")),
+        "{:?}",
+        s.warnings
+    );
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    let p = &m.positions;
+    assert!(p.iter().any(|&q| close(q, Vec3::new(-1.0, -1.0, 1.0))), "{p:?}");
+    assert!(!p.iter().any(|&q| close(q, Vec3::new(-1.0, 0.0, 1.0))), "{p:?}");
+    let others = p.iter().filter(|q| !close(**q, Vec3::new(-1.0, -1.0, 1.0)));
+    assert!(others.clone().all(|q| (q.x.abs() - 1.0).abs() < 1e-6 && (q.y - 1.0).abs() <= 1.0 + 1e-6), "{p:?}");
+    assert!(others.clone().any(|q| q.y > 1.99) && others.clone().any(|q| q.y < 0.01));
+    // invertTransform: the inverse (p − (0, 1, 0)) / 2: vertex 1 (0.5, −0.5, 0.5) at (0.25, −0.75, 0.25).
+    let s = read(&scene("\tsetAttr \".itf\" yes;\n")).unwrap();
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    assert!(m.positions.iter().any(|&q| close(q, Vec3::new(0.25, -0.75, 0.25))), "{:?}", m.positions);
+    // Through it from history tress cannot build, the warning names where the history starts.
+    let s = read(&scene("").replace("polyCube", "polyCylinder")).unwrap();
+    assert!(s.contents.meshes.is_empty());
+    assert!(s.warnings.iter().any(|w| w.contains("mesh cs is built by a `polyCylinder` node")), "{:?}", s.warnings);
+    // A matrix of the wrong size, or not affine, is an error naming the node and its line.
+    for bad in ["2 0 0 0 0 2 0 0 0 0 2 0 0 1 0", "2 0 0 0 0 2 0 0 0 0 2 0 0 1 0 2"] {
+        let text = scene("").replace("2 0 0 0 0 2 0 0 0 0 2 0 0 1 0 1", bad);
+        let e = read(&text).unwrap_err().to_string();
+        assert!(e.starts_with("dir/scene.ma: line 7:") && e.contains("transformGeometry tg"), "{e}");
+    }
 }
