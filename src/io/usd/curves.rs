@@ -186,11 +186,18 @@ fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut 
 }
 
 /// The entry of a strand set: a tube material of the constant colour (or the default
-/// hair colour, the set's own colours drawn where it has them).
-fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> HairEntry {
+/// hair colour, the set's own colours drawn where it has them); an error when the set's
+/// points are not finite.
+fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> Res<HairEntry> {
+    // Finite control points can sample past single precision: Catmull-Rom overshoots its
+    // points, skinning and NURBS weights scale them.
+    anyhow::ensure!(
+        set.points.iter().flatten().all(|c| c.is_finite()),
+        "the curves' points are beyond single precision"
+    );
     let d = constant.unwrap_or(crate::hair_system::HairSystem::default().hair_color);
     let material = Material::Tube(Tube { ambient: d, diffuse: d, ..Tube::default() });
-    HairEntry {
+    Ok(HairEntry {
         source: HairSource::Inline(set),
         material: material.into(),
         transform,
@@ -198,7 +205,7 @@ fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> HairEnt
         file_colors: true,
         lod: None,
         visibility: Default::default(),
-    }
+    })
 }
 
 /// Checks a primvar's length against what its interpolation needs.
@@ -309,7 +316,7 @@ pub fn read_basis_curves(
     if !point_colors.is_empty() {
         set.colors = Some(point_colors);
     }
-    Ok(Some(entry(set, constant_color, transform)))
+    Ok(Some(entry(set, constant_color, transform)?))
 }
 
 /// Knots for curves of `counts` points and `orders` (as many): uniform inside, the ends
@@ -448,5 +455,5 @@ pub fn read_nurbs_curves(
     if !point_colors.is_empty() {
         set.colors = Some(point_colors);
     }
-    Ok(Some(entry(set, constant_color, transform)))
+    Ok(Some(entry(set, constant_color, transform)?))
 }

@@ -1561,3 +1561,21 @@ fn mesh_uvs_and_normals_beyond_single_precision_skip_the_mesh_naming_them() {
         assert!(w.contains("/World/Ground") && w.contains(names), "{w}");
     }
 }
+
+#[test]
+fn curves_sampled_beyond_single_precision_are_skipped_naming_the_prim() {
+    // Each control point fits single precision; the Catmull-Rom curve through them
+    // overshoots to 1.25 × 3e38 halfway between the middle two, which does not.
+    let curves = |x: &str| {
+        format!(
+            "#usda 1.0\ndef BasisCurves \"Over\"\n{{\n    uniform token type = \"cubic\"\n    \
+             uniform token basis = \"catmullRom\"\n    int[] curveVertexCounts = [4]\n    \
+             point3f[] points = [(-{x}, 0, 0), ({x}, 0, 0), ({x}, 0, 0), (-{x}, 0, 0)]\n}}\n"
+        )
+    };
+    assert_eq!(read_text(&curves("1e30")).unwrap().contents.hair.len(), 1);
+    let s = read_text(&curves("3e38")).unwrap();
+    assert!(s.contents.hair.is_empty());
+    let w = s.warnings.iter().find(|w| w.contains("inconsistent: skipped")).expect("a warning");
+    assert!(w.contains("/Over") && w.contains("single precision"), "{w}");
+}
