@@ -2076,6 +2076,10 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>
     let smooth = edges.iter().filter(|e| e[2] != 0.0).count();
     let smooth = smooth * 2 >= edges.len() && !edges.is_empty();
     let (mesh, face_of, _) = polygon_mesh(&positions, &uvs, &polygons, smooth);
+    // Faces that are all empty chunks draw nothing: as a mesh storing no faces.
+    if mesh.indices.is_empty() {
+        return Ok(None);
+    }
     Ok(Some((mesh, face_of)))
 }
 

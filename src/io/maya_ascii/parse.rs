@@ -630,6 +630,9 @@ fn faces(words: &[Word]) -> Result<Vec<Face>, (u32, String)> {
         match w.text {
             "f" | "h" => {
                 let n = count(i + 1)?;
+                if w.text == "f" && n < 3 {
+                    return Err((w.line, format!("polyFaces: a face of {n} edges (a face has at least 3)")));
+                }
                 let edges = (0..n).map(|k| int(i + 2 + k)).collect::<Result<Vec<_>, _>>()?;
                 if w.text == "f" {
                     out.push(Face { edges, uvs: None, holes: false });

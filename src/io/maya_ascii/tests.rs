@@ -355,7 +355,7 @@ fn free_curves_take_the_hair_systems_width_or_one_relative_to_the_scene() {
 #[test]
 fn malformed_lines_are_errors_naming_file_and_line() {
     for (text, line) in [
-        ("createNode mesh -n m;\nsetAttr \".vt[0:1]\" 0 0 0 1 0;\nsetAttr \".ed[0]\" 0 1 0;\nsetAttr \".fc[0]\" -type \"polyFaces\" f 1 0;\n", 2),
+        ("createNode mesh -n m;\nsetAttr \".vt[0:1]\" 0 0 0 1 0;\nsetAttr \".ed[0]\" 0 1 0;\nsetAttr \".fc[0]\" -type \"polyFaces\" f 3 0 0 0;\n", 2),
         ("createNode nurbsCurve -n c;\nsetAttr \".cc\" -type \"nurbsCurve\" 3 1 0 no 3 4 0 0 1 1 4 0 0 0 1 0 0;\ncreateNode hairSystem;\n", 2),
         ("createNode transform -n t;\n\n\nsetAttr \".t\" -type \"double3\" 1 2;\ncreateNode pointLight -p t;\n", 4),
         ("createNode transform -n t;\nsetAttr \".s\" -type \"double3\" 1e300 1 1;\ncreateNode pointLight -p t;\n", 3),
@@ -1771,4 +1771,18 @@ fn transform_geometry_moves_the_geometry_flowing_through_it() {
         let e = read(&text).unwrap_err().to_string();
         assert!(e.starts_with("dir/scene.ma: line 7:") && e.contains("transformGeometry tg"), "{e}");
     }
+}
+
+#[test]
+fn a_face_of_fewer_than_three_edges_is_an_error_and_empty_faces_no_mesh() {
+    // Found by the hostile proptest: `f 4 0 2 -4 -2` with three bytes deleted is `f 2 -4 -2`.
+    assert!(SCENE.contains("f 4 0 5 -3 -5"));
+    let e = read(&SCENE.replacen("f 4 0 5 -3 -5", "f 2 0 5", 1)).unwrap_err().to_string();
+    assert!(e.starts_with("dir/scene.ma: line 13:") && e.contains("face of 2 edges"), "{e}");
+    let s = read(
+        "createNode mesh -n m;\nsetAttr \".vt[0:2]\" 0 0 0 1 0 0 0 1 0;\n\
+         setAttr \".ed[0:2]\" 0 1 0 1 2 0 2 0 0;\nsetAttr \".fc[0]\" -type \"polyFaces\" ;\n",
+    )
+    .unwrap();
+    assert!(s.contents.meshes.is_empty());
 }
