@@ -1315,6 +1315,9 @@ fn triangle_mesh(p: &Params) -> Res<TriangleMesh> {
         }
         tris.push(t);
     }
+    if tris.is_empty() {
+        return Err((p.line, "trianglemesh has no triangles (\"integer indices\" is empty)".into()));
+    }
     let normals = match p.point3s("N")? {
         Some(v) if v.len() == n => Some(v.iter().map(|q| q.as_vec3()).collect()),
         Some(v) => return Err((p.line, format!("{} normals for {n} points", v.len()))),

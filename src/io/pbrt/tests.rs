@@ -471,3 +471,14 @@ fn trianglemesh_normals_and_uvs_beyond_single_precision_are_errors_naming_them()
         assert!(e.starts_with("dir/scene.pbrt: line 3:") && e.contains(name) && e.contains("single precision"), "{e}");
     }
 }
+
+#[test]
+fn a_trianglemesh_with_empty_indices_is_an_error() {
+    // Found by the hostile proptest: small.pbrt's indices with their 13 bytes deleted.
+    let e = read(
+        "WorldBegin\nShape \"trianglemesh\" \"integer indices\" [ ]\n  \"point3 P\" [ 0 0 0  1 0 0  0 1 0  1 1 0 ]\n",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.starts_with("dir/scene.pbrt: line 2:") && e.contains("no triangles"), "{e}");
+}
