@@ -24,6 +24,11 @@
 //! What the mapping cannot hold (coat, sheen, subsurface, thin film, emission, opacity,
 //! thin walls, diffuse roughness, a partial metal or transmission, connected shading
 //! networks) is named in one warning per shader.
+//!
+//! Arnold's two simple surface shaders are read the same way: `lambert` ([`Lambert`],
+//! Lambert of `Kd × Kd_color`) and `flat` ([`Flat`], an unlit colour). tress has no unlit
+//! surface, so a flat shader is drawn as Lambert of its colour, said in its warning: the
+//! colour is the shader's, the shading is the lights'.
 
 use super::arnold_hair::{fmt_color, ArnoldShader, Param};
 use crate::math::Color;
@@ -222,6 +227,98 @@ impl ArnoldShader for StandardSurface {
     }
 }
 
+/// The warning naming what a simple shader leaves out (`None` when nothing).
+fn simple_warning(
+    shader: &str,
+    kind: &str,
+    mut left_out: Vec<String>,
+    opacity: Color,
+    connected: &[String],
+) -> Option<String> {
+    if opacity != Color::ONE {
+        left_out.push(format!("opacity {}", fmt_color(opacity)));
+    }
+    if !connected.is_empty() {
+        left_out.push(format!("shading networks on {} (their own values used)", connected.join(", ")));
+    }
+    (!left_out.is_empty())
+        .then(|| format!("{shader}: Arnold {kind} settings tress does not represent: {}", left_out.join(", ")))
+}
+
+/// Arnold's `lambert` shader, with Arnold's defaults.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lambert {
+    /// Diffuse weight.
+    pub kd: f32,
+    /// Diffuse colour.
+    pub kd_color: Color,
+    /// Opacity.
+    pub opacity: Color,
+}
+
+impl Default for Lambert {
+    /// Arnold's defaults (Arnold user guide, "Lambert").
+    fn default() -> Self {
+        Lambert { kd: 0.7, kd_color: Color::ONE, opacity: Color::ONE }
+    }
+}
+
+impl ArnoldShader for Lambert {
+    const NAMES: &'static [&'static str] = &["Kd", "Kd_color", "opacity"];
+
+    fn param(&mut self, name: &str) -> Option<Param<'_>> {
+        Some(match name {
+            "Kd" => Param::Float(&mut self.kd),
+            "Kd_color" => Param::Color(&mut self.kd_color),
+            "opacity" => Param::Color(&mut self.opacity),
+            _ => return None,
+        })
+    }
+
+    /// Lambert of `Kd × Kd_color`, clamped to [0, 1] (NaN is 0).
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
+        let kd = if self.kd.is_nan() { 0.0 } else { self.kd.clamp(0.0, 1.0) };
+        let color = (self.kd_color * kd).clamp(Color::ZERO, Color::ONE);
+        (Material::Diffuse { color }, simple_warning(shader, "lambert", Vec::new(), self.opacity, connected))
+    }
+}
+
+/// Arnold's `flat` shader (an unlit colour), with Arnold's defaults.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Flat {
+    /// The colour drawn.
+    pub color: Color,
+    /// Opacity.
+    pub opacity: Color,
+}
+
+impl Default for Flat {
+    /// Arnold's defaults (Arnold user guide, "Flat").
+    fn default() -> Self {
+        Flat { color: Color::ONE, opacity: Color::ONE }
+    }
+}
+
+impl ArnoldShader for Flat {
+    const NAMES: &'static [&'static str] = &["color", "opacity"];
+
+    fn param(&mut self, name: &str) -> Option<Param<'_>> {
+        Some(match name {
+            "color" => Param::Color(&mut self.color),
+            "opacity" => Param::Color(&mut self.opacity),
+            _ => return None,
+        })
+    }
+
+    /// Lambert of its colour clamped to [0, 1], said: tress has no unlit surface.
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
+        // `clamp` takes NaN to the low end.
+        let color = self.color.clamp(Color::ZERO, Color::ONE);
+        let lit = vec!["unlit colour (drawn lit, as Lambert of its colour)".to_string()];
+        (Material::Diffuse { color }, simple_warning(shader, "flat", lit, self.opacity, connected))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -280,5 +377,27 @@ mod tests {
         };
         let Material::Phong { diffuse, exponent, .. } = material(bad).0 else { panic!() };
         assert!(diffuse == Color::ZERO && exponent.is_finite());
+    }
+
+    #[test]
+    fn lambert_and_flat_shaders_are_lambert_of_their_colour() {
+        let (m, w) = Lambert::default().material("l", &[]);
+        assert_eq!((m, w), (Material::Diffuse { color: Color::splat(0.7) }, None));
+        let red = Lambert { kd: 0.5, kd_color: Color::new(1.0, 0.4, 0.0), ..Default::default() };
+        assert_eq!(red.material("l", &[]).0, Material::Diffuse { color: Color::new(0.5, 0.2, 0.0) });
+        let bad = Lambert { kd: f32::NAN, ..Default::default() };
+        assert_eq!(bad.material("l", &[]).0, Material::Diffuse { color: Color::ZERO });
+        let nan = Flat { color: Color::new(f32::NAN, 0.5, 0.5), ..Default::default() };
+        assert_eq!(nan.material("f", &[]).0, Material::Diffuse { color: Color::new(0.0, 0.5, 0.5) });
+        // A flat shader keeps its colour and says it is drawn lit.
+        let green = Flat { color: Color::new(0.0, 1.0, 0.0), opacity: Color::splat(0.5) };
+        let (m, w) = green.material("/materials/flat0", &["color".into()]);
+        assert_eq!(m, Material::Diffuse { color: Color::new(0.0, 1.0, 0.0) });
+        let w = w.unwrap();
+        for part in ["/materials/flat0: Arnold flat", "drawn lit", "opacity", "shading networks on color"] {
+            assert!(w.contains(part), "{part}: {w}");
+        }
+        let hot = Flat { color: Color::new(5.0, f32::INFINITY, -1.0), ..Default::default() };
+        assert_eq!(hot.material("f", &[]).0, Material::Diffuse { color: Color::new(1.0, 1.0, 0.0) });
     }
 }

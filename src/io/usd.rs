@@ -593,10 +593,11 @@ fn render_resolution(prim: &Prim, time: TimeCode) -> Res<Option<[u32; 2]>> {
     })
 }
 
-/// A surface prim's material: Arnold's `standard_surface` bound to it, else Lambert of its
-/// surface colour ([`shapes::surface_color`], 0.5 grey without one).
+/// A surface prim's material: Arnold's surface shader bound to it
+/// ([`shapes::bound_arnold_surface`]), else Lambert of its surface colour
+/// ([`shapes::surface_color`], 0.5 grey without one).
 fn surface_material(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Material> {
-    if let Some(m) = shapes::bound_standard_surface(prim, time, notes)? {
+    if let Some(m) = shapes::bound_arnold_surface(prim, time, notes)? {
         return Ok(m);
     }
     let color = shapes::surface_color(prim, time, notes)?;

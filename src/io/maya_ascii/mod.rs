@@ -74,7 +74,7 @@ pub mod xgen_collection;
 
 use self::parse::{Face, Graph, Value};
 use super::arnold_hair::{ArnoldShader, Param, StandardHair};
-use super::arnold_surface::StandardSurface;
+use super::arnold_surface::{Flat, StandardSurface};
 use super::imported::{relative_width, Imported, RELATIVE_WIDTH};
 use crate::error::LoadError;
 use crate::geometry::curve::Nurbs;
@@ -157,7 +157,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 61] = [
+const KNOWN: [&str; 62] = [
     "transform",
     "animCurveTL",
     "animCurveTA",
@@ -178,6 +178,7 @@ const KNOWN: [&str; 61] = [
     "aiCurveCollector",
     "aiStandardHair",
     "aiStandardSurface",
+    "aiFlat",
     "FurDescription",
     "FurFeedback",
     "FurGlobals",
@@ -253,7 +254,7 @@ struct Reader<'g> {
     /// The graph with its animation at the file's saved time, when the frame read is
     /// another and XGen grooms (stored as they stood then) must follow their meshes.
     saved_pose: Option<&'g Graph>,
-    /// The material of each `aiStandardSurface` met on meshes (its warning said once).
+    /// The material of each `aiStandardSurface` or `aiFlat` met on meshes (its warning said once).
     surface_shaders: HashMap<usize, Material>,
 }
 
@@ -659,15 +660,20 @@ impl<'g> Reader<'g> {
         mesh.validate().map_err(|e| (node.line, format!("mesh {}: {e}", node.name)))?;
         let world = self.world(n)?;
         let material = match self.mesh_shader(n) {
-            Some(shader) if self.kind(shader) == "aiStandardSurface" => match self.surface_shaders.get(&shader) {
-                Some(m) => m.clone(),
-                None => {
-                    let (m, warning) = self.arnold_params::<StandardSurface>(shader)?;
-                    self.out.warnings.extend(warning);
-                    self.surface_shaders.insert(shader, m.clone());
-                    m
+            Some(shader) if matches!(self.kind(shader), "aiStandardSurface" | "aiFlat") => {
+                match self.surface_shaders.get(&shader) {
+                    Some(m) => m.clone(),
+                    None => {
+                        let (m, warning) = match self.kind(shader) {
+                            "aiFlat" => self.arnold_params::<Flat>(shader)?,
+                            _ => self.arnold_params::<StandardSurface>(shader)?,
+                        };
+                        self.out.warnings.extend(warning);
+                        self.surface_shaders.insert(shader, m.clone());
+                        m
+                    }
                 }
-            },
+            }
             _ => Material::Diffuse { color: self.mesh_color(n)? },
         };
         let mut placed = mesh.clone();

@@ -1343,6 +1343,18 @@ fn meshes_take_their_ai_standard_surface() {
 }
 
 #[test]
+fn meshes_take_their_ai_flat_colour_lit() {
+    let text = "createNode transform -n p;\ncreateNode mesh -n ps -p p;\ncreateNode polySphere -n sph;\n\
+                connectAttr \"sph.out\" \"ps.i\";\ncreateNode aiFlat -n green;\n\
+                \tsetAttr \".color\" -type \"float3\" 0 1 0 ;\ncreateNode shadingEngine -n greenSG;\n\
+                connectAttr \"green.oc\" \"greenSG.ss\";\nconnectAttr \"ps.iog\" \"greenSG.dsm\" -na;\n";
+    let s = read(text).unwrap();
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.0, 1.0, 0.0) }.into());
+    assert!(s.warnings.iter().any(|w| w.contains("green: Arnold flat") && w.contains("drawn lit")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().all(|w| !w.contains("aiFlat")), "{:?}", s.warnings);
+}
+
+#[test]
 fn xgen_guides_shape_the_strands_at_their_length() {
     let dir = tempfile::tempdir().unwrap();
     let ma = dir.path().join("scene.ma");

@@ -8,7 +8,7 @@ use super::values::{boolean, interpolation, ints, number, short, token, value, v
 use super::Notes;
 use crate::geometry::TriangleMesh;
 use crate::io::arnold_hair::{ArnoldShader, Param, StandardHair};
-use crate::io::arnold_surface::StandardSurface;
+use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
 use crate::shading::Material;
 use glam::{Mat3, Vec3};
 use openusd::sdf;
@@ -226,10 +226,17 @@ pub fn bound_standard_hair(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Re
     bound_arnold::<StandardHair>(prim, "arnold:standard_hair", time, notes)
 }
 
-/// The material of Arnold's surface shader (`arnold:standard_surface`) bound to `prim`,
-/// as [`bound_standard_hair`] finds and reads it ([`crate::io::arnold_surface`]).
-pub fn bound_standard_surface(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
-    bound_arnold::<StandardSurface>(prim, "arnold:standard_surface", time, notes)
+/// The material of Arnold's surface shader bound to `prim` (`arnold:standard_surface`,
+/// `arnold:lambert` or `arnold:flat`), as [`bound_standard_hair`] finds and reads it
+/// ([`crate::io::arnold_surface`]).
+pub fn bound_arnold_surface(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
+    if let Some(m) = bound_arnold::<StandardSurface>(prim, "arnold:standard_surface", time, notes)? {
+        return Ok(Some(m));
+    }
+    if let Some(m) = bound_arnold::<Lambert>(prim, "arnold:lambert", time, notes)? {
+        return Ok(Some(m));
+    }
+    bound_arnold::<Flat>(prim, "arnold:flat", time, notes)
 }
 
 /// The material of the Arnold shader of type `id` bound to `prim`, by `S`'s parameters.

@@ -1486,6 +1486,44 @@ def Mesh "Plain" {
 }
 
 #[test]
+fn meshes_take_the_bound_arnold_lambert_and_flat_colours() {
+    let mesh = |name: &str, material: &str| {
+        format!(
+            "def Mesh \"{name}\" (prepend apiSchemas = [\"MaterialBindingAPI\"]) {{\n    rel material:binding = </{material}>\n    \
+             int[] faceVertexCounts = [3]\n    int[] faceVertexIndices = [0, 1, 2]\n    \
+             point3f[] points = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]\n}}\n"
+        )
+    };
+    let body = format!(
+        r#"
+def Material "Clay" {{
+    token outputs:arnold:surface.connect = </Clay/lambert>
+    def Shader "lambert" {{
+        uniform token info:id = "arnold:lambert"
+        float inputs:Kd = 0.5
+        color3f inputs:Kd_color = (1, 0.5, 0)
+    }}
+}}
+def Material "Green" {{
+    float4 outputs:arnold:surface.connect = </Green/flat0.outputs:rgb>
+    def Shader "flat0" {{
+        uniform token info:id = "arnold:flat"
+        color3f inputs:color = (0, 1, 0)
+        vector3f outputs:rgb
+    }}
+}}
+{}{}"#,
+        mesh("A", "Clay"),
+        mesh("B", "Green")
+    );
+    let s = read_body(&body);
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(0.5, 0.25, 0.0) }.into());
+    assert_eq!(s.contents.meshes[1].material, Material::Diffuse { color: Vec3::new(0.0, 1.0, 0.0) }.into());
+    assert!(s.warnings.iter().any(|w| w.contains("/Green/flat0") && w.contains("drawn lit")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().all(|w| !w.contains("/Clay")), "{:?}", s.warnings);
+}
+
+#[test]
 fn points_become_spheres_of_their_widths() {
     let body = r#"
 def Points "Dots" {
