@@ -550,7 +550,14 @@ impl Parser {
                 if self.state.ctm.determinant().abs() < 1e-12 {
                     return Err((line, "the camera transform is singular".into()));
                 }
-                self.camera_to_world = Some(self.state.ctm.inverse());
+                let c2w = self.state.ctm.inverse();
+                // The camera is kept in single precision: an eye finite in f64 but past
+                // f32's range (`LookAt 1e39 ...`) would become infinite there.
+                let eye = c2w.transform_point3(DVec3::ZERO);
+                if !(eye.as_vec3().is_finite() && (eye + c2w.transform_vector3(DVec3::Z)).as_vec3().is_finite()) {
+                    return Err((line, "the camera's position is beyond single precision".into()));
+                }
+                self.camera_to_world = Some(c2w);
                 if kind != "perspective" {
                     self.warnings.insert(format!("camera \"{kind}\" is rendered as a perspective camera"));
                 }

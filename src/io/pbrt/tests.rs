@@ -414,6 +414,15 @@ fn a_pinhole_cameras_focus_distance_is_not_reported_a_lens_is() {
     assert!(w.len() == 1 && w[0].contains("lensradius") && w[0].contains("depth of field"), "{w:?}");
 }
 
+#[test]
+fn a_camera_beyond_single_precision_is_an_error_naming_its_line() {
+    // Finite in double precision, infinite once the camera is kept in f32.
+    for look in ["LookAt 1e39 0 5  0 0 0  0 1 0", "Translate 3e38 0 0\nTranslate 3e38 0 0"] {
+        let e = read(&format!("{look}\nCamera \"perspective\"\nWorldBegin\n")).unwrap_err().to_string();
+        assert!(e.contains("beyond single precision") && e.contains("line"), "{look}: {e}");
+    }
+}
+
 /// pbrt's `fov` spans the shorter image side (its screen window is [-1, 1] there, Pharr et
 /// al. 4th ed. §5.2), so an image of another size (`-r`) refits the vertical field of
 /// view: a 40° fov is the vertical one at 2:1 and 1:1, and at 1:2 the horizontal one,
