@@ -295,7 +295,7 @@ fn an_infinite_pbrt_camera_is_named_as_such() {
     let d = dir.path();
     std::fs::write(d.join("far.pbrt"), "LookAt 0 0 1e39  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n").unwrap();
     let out = tress(&["render", "far.pbrt", "-o", "x.png"], d);
-    assert_refused(&out, &["far.pbrt: camera: the camera position is not finite"]);
+    assert_refused(&out, &["far.pbrt: line 2: the camera's position is beyond single precision"]);
 }
 
 /// A `.hair` file with no strands was accepted silently. It renders (a frame of a hair
