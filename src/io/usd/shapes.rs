@@ -230,50 +230,66 @@ pub fn bound_standard_hair(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Re
 /// `arnold:lambert` or `arnold:flat`), as [`bound_standard_hair`] finds and reads it
 /// ([`crate::io::arnold_surface`]).
 pub fn bound_arnold_surface(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
-    if let Some(m) = bound_arnold::<StandardSurface>(prim, "arnold:standard_surface", time, notes)? {
-        return Ok(Some(m));
-    }
-    if let Some(m) = bound_arnold::<Lambert>(prim, "arnold:lambert", time, notes)? {
-        return Ok(Some(m));
-    }
-    bound_arnold::<Flat>(prim, "arnold:flat", time, notes)
+    const IDS: [&str; 3] = ["arnold:standard_surface", "arnold:lambert", "arnold:flat"];
+    Ok(match bound_arnold_shader(prim, &IDS, time)? {
+        Some((shader, 0)) => Some(arnold_material::<StandardSurface>(&shader, time, notes)?),
+        Some((shader, 1)) => Some(arnold_material::<Lambert>(&shader, time, notes)?),
+        Some((shader, _)) => Some(arnold_material::<Flat>(&shader, time, notes)?),
+        None => None,
+    })
 }
 
 /// The material of the Arnold shader of type `id` bound to `prim`, by `S`'s parameters.
 fn bound_arnold<S: ArnoldShader>(prim: &Prim, id: &str, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
+    match bound_arnold_shader(prim, &[id], time)? {
+        Some((shader, _)) => Ok(Some(arnold_material::<S>(&shader, time, notes)?)),
+        None => Ok(None),
+    }
+}
+
+/// The shader `prim`'s material leads to from `outputs:arnold:surface` (what Arnold
+/// renders), else `outputs:surface`, when its type is one of `ids`: the shader and the
+/// index of its type.
+fn bound_arnold_shader(prim: &Prim, ids: &[&str], time: TimeCode) -> Res<Option<(Prim, usize)>> {
     let Some(material) = bound_material(prim)? else { return Ok(None) };
     for output in ["outputs:arnold:surface", "outputs:surface"] {
         let Some(shader) = connected_shader(&material, output)? else { continue };
-        if token(value(&shader, "info:id", time)?, "") != id {
-            continue;
+        let id = token(value(&shader, "info:id", time)?, "");
+        if let Some(k) = ids.iter().position(|i| *i == id) {
+            return Ok(Some((shader, k)));
         }
-        let mut hair = S::default();
-        let mut connected = Vec::new();
-        for &name in S::NAMES {
-            let input = format!("inputs:{name}");
-            if shader.attribute(&input).has_authored_connections()? {
-                connected.push(name.to_string());
-            }
-            let v = value(&shader, &input, time)?;
-            let what = format!("{}.{input}", shader.path());
-            match hair.param(name) {
-                Some(Param::Float(f)) => *f = number(v, &what)?.map_or(*f, |x| x as f32),
-                Some(Param::Color(c)) => *c = vec3(v, &what)?.unwrap_or(*c),
-                Some(Param::Bool(b)) => *b = boolean(v, *b),
-                None => {}
-            }
-        }
-        let path = shader.path().to_string();
-        let (material, left_out) = hair.material(&path, &connected);
-        if let Some(left_out) = left_out {
-            // Counted by what is left out, the first shader named: copies of one material
-            // (per instance, per asset) give one warning, not one each.
-            let what = left_out.strip_prefix(&format!("{path}: ")).unwrap_or(&left_out);
-            notes.note(what.to_string(), &shader);
-        }
-        return Ok(Some(material));
     }
     Ok(None)
+}
+
+/// The material standing in for the Arnold shader `shader`, its inputs read by `S`'s
+/// parameter names; what it leaves out is said in one note.
+fn arnold_material<S: ArnoldShader>(shader: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Material> {
+    let mut params = S::default();
+    let mut connected = Vec::new();
+    for &name in S::NAMES {
+        let input = format!("inputs:{name}");
+        if shader.attribute(&input).has_authored_connections()? {
+            connected.push(name.to_string());
+        }
+        let v = value(shader, &input, time)?;
+        let what = format!("{}.{input}", shader.path());
+        match params.param(name) {
+            Some(Param::Float(f)) => *f = number(v, &what)?.map_or(*f, |x| x as f32),
+            Some(Param::Color(c)) => *c = vec3(v, &what)?.unwrap_or(*c),
+            Some(Param::Bool(b)) => *b = boolean(v, *b),
+            None => {}
+        }
+    }
+    let path = shader.path().to_string();
+    let (material, left_out) = params.material(&path, &connected);
+    if let Some(left_out) = left_out {
+        // Counted by what is left out, the first shader named: copies of one material
+        // (per instance, per asset) give one warning, not one each.
+        let what = left_out.strip_prefix(&format!("{path}: ")).unwrap_or(&left_out);
+        notes.note(what.to_string(), shader);
+    }
+    Ok(material)
 }
 
 /// The material `prim` is bound to (`material:binding`), if any.
