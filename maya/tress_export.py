@@ -12,6 +12,8 @@ diffuse), hair systems (each with the curves of its follicles as guides, sampled
 uniformly, and its attributes as ``[[hair_system]]`` keys), fur descriptions (as
 ``[[fur]]`` entries on the meshes they are attached to), the render camera (the first
 renderable perspective camera) and directional, point, spot, ambient and area lights.
+Meshes and hair systems keep their render stats (Primary Visibility, Casts Shadows) and
+MtoA's Matte as the entries' visibility switches.
 
 **This script has not been run in Maya**: Maya was not available where it was written.
 Its Maya-independent part (``tress_maya_convert.py``: conversions and the entries it
@@ -69,6 +71,13 @@ def _mesh_color(cmds, shape):
     return [0.4, 0.4, 0.4]
 
 
+def _visibility(cmds, shape):
+    """The shape's render stats and ``aiMatte`` (present with MtoA) as entry keys."""
+    values = {a: cmds.getAttr(f"{shape}.{a}") for a in convert.VISIBILITY_ATTRIBUTES
+              if cmds.attributeQuery(a, node=shape, exists=True)}
+    return convert.shape_visibility(values)
+
+
 def _meshes(cmds, doc, warnings):
     """Exports every visible mesh; returns the 1-based entry number by shape name."""
     from maya.api import OpenMaya as om
@@ -87,7 +96,8 @@ def _meshes(cmds, doc, warnings):
             continue
         name = f"{shape.split('|')[-1]}.obj"
         doc.files[name] = convert.mesh(points, tris)
-        doc.meshes.append({"file": name, "material": {"type": "diffuse", "color": _mesh_color(cmds, shape)}})
+        doc.meshes.append({"file": name, "material": {"type": "diffuse", "color": _mesh_color(cmds, shape)},
+                           **_visibility(cmds, shape)})
         numbers[shape] = len(doc.meshes)
     return numbers
 
@@ -137,7 +147,7 @@ def _hair_systems(cmds, doc, warnings):
         doc.files[guides] = convert.strands(curves)
         entry, w = convert.hair_system_entry(values, guides)
         warnings.extend(w)
-        doc.hair_systems.append(entry)
+        doc.hair_systems.append({**entry, **_visibility(cmds, system)})
 
 
 def _furs(cmds, doc, mesh_numbers, warnings):

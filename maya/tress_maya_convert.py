@@ -13,7 +13,7 @@ import math
 import re
 from typing import Any, Iterable, Mapping, Sequence
 
-from scene_folder import MeshData, SceneDoc, StrandData
+from scene_folder import MeshData, SceneDoc, StrandData, visibility
 
 # [[hair_system]] keys by Maya hairSystem long attribute name, and how each is read.
 HAIR_SYSTEM_ATTRIBUTES = {
@@ -61,6 +61,9 @@ FUR_ATTRIBUTES = (
 FUR_COLORS = {"base_color", "tip_color", "base_ambient_color", "tip_ambient_color", "specular_color"}
 FUR_INTEGERS = {"density", "segments", "light_model"}
 
+# A shape's render stats and MtoA's holdout, by long name, with Maya's defaults.
+VISIBILITY_ATTRIBUTES = {"primaryVisibility": True, "castsShadows": True, "aiMatte": False}
+
 INTERPOLATIONS = ("none", "linear", "smooth", "spline")
 NOISE_METHODS = ("random", "surface_uv", "clump_uv")
 
@@ -79,6 +82,15 @@ def ramp(keys: Iterable[tuple[float, Any, int]]) -> list[list[Any]]:
         name = INTERPOLATIONS[int(interp)] if 0 <= int(interp) < len(INTERPOLATIONS) else "linear"
         out.append([float(position), v, name])
     return out
+
+
+def shape_visibility(values: Mapping[str, Any]) -> dict[str, bool]:
+    """The visibility switches of a mesh or hairSystem shape's entry from its
+    ``VISIBILITY_ATTRIBUTES`` values by long name (a missing one is Maya's default), as
+    tress's Maya ASCII reader reads them: ``primaryVisibility`` off is ``camera_visible =
+    false``, ``castsShadows`` off ``casts_shadows = false``, ``aiMatte`` on ``matte``."""
+    v = {**VISIBILITY_ATTRIBUTES, **values}
+    return visibility(v["primaryVisibility"], v["castsShadows"], v["aiMatte"])
 
 
 def hair_system_entry(values: Mapping[str, Any], guides_file: str, seed: int = 0):

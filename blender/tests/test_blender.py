@@ -123,6 +123,25 @@ def test_export_matches_blender(addon, tmp_path):
                                                                   "color": pytest.approx([0.6, 0.5, 0.4])}
 
 
+def test_ray_visibility_and_holdout_are_exported(addon, tmp_path):
+    scene, groom, _, _ = make_scene()
+    sphere = bpy.data.objects["Sphere"]
+    sphere.visible_camera = False
+    groom.visible_shadow = False
+    groom.is_holdout = True
+    doc, _ = export.build(bpy.context.evaluated_depsgraph_get())
+    (mesh,) = doc.meshes
+    (hair,) = doc.hair
+    assert mesh["camera_visible"] is False and "casts_shadows" not in mesh and "matte" not in mesh
+    assert hair["casts_shadows"] is False and hair["matte"] is True and "camera_visible" not in hair
+    # The folder reads back with the switches (its USD export writes them as Arnold's).
+    usda = tmp_path / "back.usda"
+    tress.export(tress.load(doc.write(tmp_path / "folder")), usda)
+    text = usda.read_text()
+    assert "primvars:arnold:visibility:camera = false" in text
+    assert "primvars:arnold:visibility:shadow = false" in text and "primvars:arnold:matte = true" in text
+
+
 def test_render_through_the_engine_equals_the_command_line(addon, tmp_path, tress_cli):
     scene, _, _, _ = make_scene()
     scene.render.image_settings.file_format = "OPEN_EXR"

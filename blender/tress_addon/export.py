@@ -31,7 +31,7 @@ from __future__ import annotations
 import math
 
 from . import materials
-from .scene_folder import ImageData, MeshData, SceneDoc, StrandData
+from .scene_folder import ImageData, MeshData, SceneDoc, StrandData, visibility
 
 try:
     import numpy as np
@@ -230,6 +230,13 @@ def world(scene, doc: SceneDoc, warnings):
     return {"type": "environment", "radiance": color.tolist()}
 
 
+def object_visibility(obj) -> dict[str, bool]:
+    """The object's ray visibility (Object Properties > Visibility > Ray Visibility: Camera,
+    Shadow) and Holdout as the entry's visibility switches, as Cycles honours them; the
+    other ray types (diffuse, glossy, transmission, volume) have no tress switch."""
+    return visibility(obj.visible_camera, obj.visible_shadow, obj.is_holdout)
+
+
 def _slot_material(obj, index):
     slots = obj.material_slots
     return slots[index].material if 0 <= index < len(slots) else None
@@ -273,7 +280,7 @@ def mesh_entries(obj, eval_obj, doc: SceneDoc, warnings):
             doc.files[name] = MeshData(
                 points[used], remap.reshape(-1, 3).astype(np.uint32), None if normals is None else normals[used]
             )
-            doc.meshes.append({"file": name, "material": material})
+            doc.meshes.append({"file": name, "material": material, **object_visibility(obj)})
     finally:
         eval_obj.to_mesh_clear()
 
@@ -379,7 +386,7 @@ def build(depsgraph, settings=None):
                 slot = ps.material - 1
                 material, mw = materials.from_material(_slot_material(original, slot), DEFAULT_HAIR, hair=True)
                 warnings.extend(mw)
-                doc.hair.append({"file": name, "material": material, "file_colors": False})
+                doc.hair.append({"file": name, "material": material, "file_colors": False, **object_visibility(original)})
         elif obj.type == "CURVES":
             strands = curves_strands(obj)
             if strands.strand_count == 0:
@@ -388,7 +395,7 @@ def build(depsgraph, settings=None):
             doc.files[name] = strands
             material, mw = materials.from_material(_slot_material(original, 0), DEFAULT_HAIR, hair=True)
             warnings.extend(mw)
-            entry = {"file": name, "material": material}
+            entry = {"file": name, "material": material, **object_visibility(original)}
             if strands.colors is not None and material.get("type") == "physical":
                 entry["material"] = {k: v for k, v in material.items() if k not in ("eumelanin", "pheomelanin", "color")}
                 entry["material"]["from_file"] = True

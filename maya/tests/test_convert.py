@@ -82,6 +82,14 @@ def test_attributes_become_scene_keys():
     assert convert.snake_case("ScraggleFrequency") == "scraggle_frequency"
 
 
+def test_render_stats_become_visibility_switches():
+    # As tress's .ma reader takes them: Maya's defaults write nothing.
+    assert convert.shape_visibility({}) == {}
+    assert convert.shape_visibility({"primaryVisibility": True, "castsShadows": True, "aiMatte": False}) == {}
+    assert convert.shape_visibility({"primaryVisibility": False}) == {"camera_visible": False}
+    assert convert.shape_visibility({"castsShadows": 0, "aiMatte": 1}) == {"casts_shadows": False, "matte": True}
+
+
 def test_a_converted_scene_is_read_and_rendered_by_the_command_line(tmp_path, tress_cli):
     doc = convert.scene_doc(convert.camera_table(rotation_x(0, (0.0, 0.0, 4.0)), 40.0), (32, 24))
     doc.render["spp"] = 1
@@ -93,12 +101,13 @@ def test_a_converted_scene_is_read_and_rendered_by_the_command_line(tmp_path, tr
     doc.files["g.hair"] = convert.strands(guides)
     entry, _ = convert.hair_system_entry({"hairsPerClump": 5, "clumpWidth": 0.2, "hairWidth": 0.01,
                                           "clumpWidthScale": [(0.0, 1.0, 1), (1.0, 0.3, 2)]}, "g.hair")
-    doc.hair_systems.append(entry)
+    doc.hair_systems.append({**entry, **convert.shape_visibility({"castsShadows": False})})
     fur, _ = convert.fur_entry(1, {"Density": 200, "Length": 0.2, "BaseWidth": 0.01, "TipWidth": 0.005,
                                    "BaseCurl": 0.5, "TipCurl": 0.5, "Segments": 3})
     doc.fur.append(fur)
     scene = doc.write(tmp_path / "maya")
-    assert tomllib.loads(open(scene).read())["hair_system"][0]["hairs_per_clump"] == 5
+    (system,) = tomllib.loads(open(scene).read())["hair_system"]
+    assert system["hairs_per_clump"] == 5 and system["casts_shadows"] is False
     info = run_cli(tress_cli, "info", scene).stdout
     assert "meshes        1 (2 triangles)" in info
     assert "strand sets   2" in info

@@ -110,6 +110,42 @@ def test_aovs_by_name_are_the_geometry_seen():
         image.aov("strandID")
 
 
+def test_visibility_switches_survive_the_folder_export(tmp_path):
+    # A square the camera does not see behind a strand that casts no shadow, and a matte
+    # strand: the folder's scene file holds the switches, its reading keeps them (its USD
+    # export writes them as Arnold's primvars) and renders as the scene in memory does.
+    scene = tress.Scene(camera={"eye": [0.0, 0.0, 3.0], "target": [0.0, 0.0, 0.0], "vfov": 20.0},
+                        render={"resolution": [17, 17], "spp": 1})
+    scene.add_light(type="distant", direction=[0.0, 0.0, 1.0], irradiance=[1.0, 1.0, 1.0])
+    quad = np.array([[-2, -2, 0], [2, -2, 0], [2, 2, 0], [-2, 2, 0]], np.float32)
+    scene.add_mesh(quad, [[0, 1, 2], [0, 2, 3]], material={"type": "diffuse", "color": [0.5, 0.5, 0.5]},
+                   **scene_folder.visibility(camera_visible=False))
+    strand = np.array([[-1.0, 0.3, 0.5], [1.0, 0.3, 0.5]], np.float32)
+    scene.add_hair(strand, 0.02, [0, 2], material={"type": "diffuse", "color": [0.2, 0.2, 0.2]},
+                   casts_shadows=False)
+    scene.add_hair(strand - [0.0, 0.6, 0.0], 0.02, [0, 2], material={"type": "diffuse", "color": [0.2, 0.2, 0.2]},
+                   matte=True)
+    written = tress.export(scene, tmp_path / "folder")
+    tables = tomllib.loads(open(written).read())
+    assert [{k: m[k] for k in ("camera_visible", "casts_shadows", "matte") if k in m}
+            for m in tables["mesh"] + tables["hair"]] == [{"camera_visible": False}, {"casts_shadows": False},
+                                                         {"matte": True}]
+    loaded = tress.load(written)
+    usda = tmp_path / "back.usda"
+    tress.export(loaded, usda)
+    text = usda.read_text()
+    assert text.count("primvars:arnold:visibility:camera = false") == 1
+    assert text.count("primvars:arnold:visibility:shadow = false") == 1
+    assert text.count("primvars:arnold:matte = true") == 1
+    image = tress.render(loaded)
+    assert np.array_equal(np.asarray(image), np.asarray(tress.render(scene)))
+    # The camera sees through the square: nothing behind it, so the centre is empty.
+    assert np.asarray(image)[8, 8, 3] == 0.0
+    assert scene_folder.visibility() == {}
+    assert scene_folder.visibility(False, False, True) == {"camera_visible": False, "casts_shadows": False,
+                                                           "matte": True}
+
+
 def test_errors_carry_the_command_lines_messages(tmp_path, tress_cli):
     bad = tmp_path / "bad.toml"
     bad.write_text('[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n[render]\nspp = 4\nsppp = 3\n')

@@ -20,7 +20,7 @@ import tempfile
 from array import array
 from typing import Any, Iterable, Mapping, Sequence
 
-__all__ = ["MeshData", "StrandData", "ImageData", "SceneDoc", "dumps", "write_hair", "write_obj", "write_pfm", "write_atomically"]
+__all__ = ["MeshData", "StrandData", "ImageData", "SceneDoc", "visibility", "dumps", "write_hair", "write_obj", "write_pfm", "write_atomically"]
 
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
 
@@ -116,6 +116,17 @@ class SceneDoc:
         scene = os.path.join(folder, name)
         write_atomically(scene, self.to_toml().encode("utf-8"))
         return scene
+
+
+def visibility(camera_visible: bool = True, casts_shadows: bool = True, matte: bool = False) -> dict[str, bool]:
+    """The visibility switches of a ``[[mesh]]``, ``[[hair]]``, ``[[hair_system]]`` or
+    ``[[fur]]`` entry (``docs/scene-format.md``, Visibility) that differ from the scene
+    file's defaults, to merge into the entry: an exporter hands over what its tool says
+    (Blender's ray visibility and holdout, Maya's render stats and ``aiMatte``) and the
+    scene file says it only where it is not the default."""
+    keys = {"camera_visible": bool(camera_visible), "casts_shadows": bool(casts_shadows), "matte": bool(matte)}
+    defaults = {"camera_visible": True, "casts_shadows": True, "matte": False}
+    return {k: v for k, v in keys.items() if v != defaults[k]}
 
 
 def _has(obj: Any, attr: str) -> bool:
