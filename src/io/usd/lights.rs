@@ -23,6 +23,16 @@
 //! `poleAxis` (`"Z"`, or `"scene"` on a Z-up stage); the dome's own transform turns it
 //! after that. Arnold-USD's `primvars:arnold:camera` on a dome is the weight camera rays
 //! see it with (0 hides it from the camera; it still lights).
+//!
+//! Arnold-USD hands a light's other `primvars:arnold:` primvars to its Arnold light node
+//! (`ReadArnoldParameters` in its `read_light.cpp`): the per-ray weights `diffuse`,
+//! `specular`, `transmission`, `sss`, `indirect`, `volume` (and `camera` on the lights
+//! drawn for camera rays), and `cast_shadows`. tress's lights reach every ray in full and
+//! always cast shadows, so a weight other than 1 or shadows turned off is reported, once per
+//! attribute with a count and the first prim. Ray visibility primvars
+//! (`primvars:arnold:visibility`, `...:visibility:camera`, ...) are Arnold's shape
+//! parameters: Arnold-USD reads them on shapes only, so on a light they change nothing,
+//! here as in Arnold (reported, since they say the author meant to hide something).
 
 use super::values::{boolean, number, token, value, vec3, Res};
 use super::Notes;
@@ -36,6 +46,10 @@ use openusd::usd::{Prim, TimeCode};
 pub const LIGHT_TYPES: [&str; 7] =
     ["DistantLight", "SphereLight", "RectLight", "DiskLight", "CylinderLight", "DomeLight", "DomeLight_1"];
 
+/// Arnold's per-ray weights of its light nodes (1 by default) that tress has no switch for;
+/// `camera` on a light that camera rays see (a dome's is honoured).
+const ARNOLD_RAY_WEIGHTS: [&str; 6] = ["diffuse", "specular", "transmission", "sss", "indirect", "volume"];
+
 /// Most spheres a cylinder light is drawn with (a cylinder longer than this many diameters
 /// gets spheres larger than its radius, so that their area still matches).
 const MAX_CYLINDER_SPHERES: usize = 64;
@@ -46,6 +60,42 @@ fn input(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<openusd::sdf::Va
     match value(prim, &format!("inputs:{name}"), time)? {
         Some(v) => Ok(Some(v)),
         None => value(prim, name, time),
+    }
+}
+
+/// Reports the Arnold primvars of light `prim` (of type `kind`) that tress does not apply
+/// (see the module's documentation). A value that is not a number or a flag is not one
+/// Arnold-USD converts either, and is passed over.
+fn note_arnold_light_parameters(prim: &Prim, kind: &str, time: TimeCode, notes: &mut Notes) {
+    let get = |name: &str| value(prim, &format!("primvars:arnold:{name}"), time).ok().flatten();
+    let drawn = matches!(kind, "SphereLight" | "RectLight" | "DiskLight" | "CylinderLight");
+    let weights = ARNOLD_RAY_WEIGHTS.iter().copied().chain(drawn.then_some("camera"));
+    for name in weights {
+        if let Some(w) = get(name).and_then(|v| number(Some(v), name).ok().flatten()) {
+            if w != 1.0 {
+                notes.note(
+                    format!(
+                        "Arnold light weight `primvars:arnold:{name}` other than 1: not applied (tress's lights \
+                         reach every ray in full)"
+                    ),
+                    prim,
+                );
+            }
+        }
+    }
+    if get("cast_shadows").is_some_and(|v| !boolean(Some(v), true)) {
+        notes.note("Arnold lights with `primvars:arnold:cast_shadows` off: their shadows are cast".into(), prim);
+    }
+    let visibility = std::iter::once("visibility".to_string())
+        .chain(super::visibility::RAYS.iter().map(|(ray, _)| format!("visibility:{ray}")));
+    if let Some(name) = visibility.into_iter().find(|n| get(n).is_some()) {
+        notes.note_why(
+            "Arnold ray visibility primvars on lights: not applied (Arnold-USD reads them on shapes only; a light's \
+             rays are weighted by `primvars:arnold:camera`, `diffuse`, `specular`, ...)"
+                .into(),
+            prim,
+            &format!("primvars:arnold:{name}"),
+        );
     }
 }
 
@@ -81,6 +131,7 @@ pub fn read_light(
     {
         notes.note("light shaping (cones, focus, IES profiles): not applied".into(), prim);
     }
+    note_arnold_light_parameters(prim, kind, time, notes);
     let scale = transform.matrix3.determinant().abs().cbrt();
     let size = |name: &str, d: f32| -> Res<f32> {
         let x = num(name, d)?;

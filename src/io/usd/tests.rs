@@ -540,6 +540,37 @@ def DomeLight "Backdrop" { float inputs:intensity = 2 double primvars:arnold:cam
 }
 
 #[test]
+fn arnold_light_primvars_tress_cannot_apply_are_said_once_per_attribute() {
+    let body = r#"
+def RectLight "Rect" { float primvars:arnold:diffuse = 0  float primvars:arnold:camera = 0 }
+def SphereLight "Bulb" {
+    float primvars:arnold:diffuse = 0.5
+    bool primvars:arnold:cast_shadows = 0
+    bool primvars:arnold:visibility:camera = 0 (interpolation = "constant")
+}
+def DomeLight "Sky" { float primvars:arnold:camera = 0  float primvars:arnold:specular = 1 }
+def DistantLight "Sun" { float primvars:arnold:camera = 0  uchar primvars:arnold:visibility = 0 }
+"#;
+    let s = read_body(body);
+    let has = |needle: &str| s.warnings.iter().filter(|w| w.contains(needle)).collect::<Vec<_>>();
+    // Each light is still read, lighting as it would without them.
+    assert_eq!(s.contents.lights.len(), 4, "{:?}", s.warnings);
+    assert_eq!(s.contents.lights[2], Light::Environment { radiance: Vec3::ONE, camera_visibility: 0.0 }.into());
+    let diffuse = has("`primvars:arnold:diffuse` other than 1: not applied");
+    assert_eq!(diffuse.len(), 1, "{:?}", s.warnings);
+    assert!(diffuse[0].ends_with("(2; first: /Rect)"), "{diffuse:?}");
+    // Camera rays see a rect light whole; a dome's weight is honoured, a distant light is
+    // not drawn, and a specular weight of 1 is what tress does.
+    let camera = has("`primvars:arnold:camera` other than 1");
+    assert!(camera.len() == 1 && camera[0].ends_with("(1; first: /Rect)"), "{:?}", s.warnings);
+    assert!(has("primvars:arnold:specular").is_empty(), "{:?}", s.warnings);
+    assert_eq!(has("`primvars:arnold:cast_shadows` off: their shadows are cast (1; first: /Bulb)").len(), 1);
+    let rays = has("Arnold ray visibility primvars on lights: not applied");
+    assert_eq!(rays.len(), 1, "{:?}", s.warnings);
+    assert!(rays[0].ends_with("(2; first: /Bulb: primvars:arnold:visibility:camera)"), "{rays:?}");
+}
+
+#[test]
 fn cylinder_lights_are_rows_of_spheres_with_their_side_area_and_power() {
     let body = r#"
 def CylinderLight "Tube" {

@@ -34,7 +34,7 @@ use openusd::usd::{Prim, TimeCode};
 
 /// Arnold's ray types: the name of each in `visibility:` primvars and its bit in the
 /// packed byte (`AI_RAY_CAMERA`, ... in Arnold's `ai_ray.h`).
-const RAYS: [(&str, u8); 8] = [
+pub(super) const RAYS: [(&str, u8); 8] = [
     ("camera", 1),
     ("shadow", 2),
     ("diffuse_transmit", 4),
