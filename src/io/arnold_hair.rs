@@ -145,6 +145,21 @@ pub enum Param<'a> {
     Bool(&'a mut bool),
 }
 
+impl Param<'_> {
+    /// Whether the value set is infinite: a number in the file beyond single precision
+    /// (1e39, finite as the double the file's text or a `double` attribute holds) is
+    /// infinite once stored as f32, and NaN once a weight of 0 multiplies it, so readers
+    /// refuse it, naming the shader and the parameter. (A NaN in the file is read as the
+    /// parameter's low end, as a value out of range.)
+    pub fn is_infinite(&self) -> bool {
+        match self {
+            Param::Float(x) => x.is_infinite(),
+            Param::Color(c) => c.to_array().iter().any(|x| x.is_infinite()),
+            Param::Bool(_) => false,
+        }
+    }
+}
+
 impl StandardHair {
     /// The names of the parameters read, as Arnold spells them.
     pub const NAMES: [&'static str; 20] = [

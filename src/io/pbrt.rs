@@ -301,6 +301,11 @@ impl Params {
     /// scale), noted in `warn`.
     fn color(&self, name: &str, default: Vec3, warn: &mut BTreeSet<String>) -> Res<Vec3> {
         let Some(p) = self.get(name) else { return Ok(default) };
+        // Colours are kept in single precision: a number finite in f64 but past f32's
+        // range (1e39) would become infinite there.
+        if p.ty != "texture" && p.numbers.iter().any(|v| !(*v as f32).is_finite()) {
+            return Err((p.line, format!("\"{} {}\" is beyond single precision", p.ty, p.name)));
+        }
         match p.ty.as_str() {
             "rgb" | "color" => match p.numbers.as_slice() {
                 [r, g, b] => Ok(DVec3::new(*r, *g, *b).as_vec3()),
@@ -362,6 +367,8 @@ struct Parser {
     image_scale: f64,
     /// The file being read, as messages name it.
     file_name: String,
+    /// Where each of `out`'s lights was read: file (as messages name it) and line.
+    light_at: Vec<(String, u32)>,
     /// Parameters nothing read, by directive and declaration: where each was first seen
     /// and how many times.
     unused: BTreeMap<(String, String), (String, u32, usize)>,
@@ -393,6 +400,7 @@ impl Parser {
             screen: None,
             image_scale: 1.0,
             file_name: String::new(),
+            light_at: Vec::new(),
             unused: BTreeMap::new(),
             warnings: BTreeSet::new(),
             chain: Vec::new(),
@@ -566,12 +574,16 @@ impl Parser {
                     return Err((line, format!("fov {} is not between 0 and 180", self.fov)));
                 }
                 self.screen = self.screen_window(&p)?;
+                if !self.aperture().iter().all(|a| a.is_finite() && *a > 0.0) {
+                    return Err((line, "the camera's screen window is beyond single precision".into()));
+                }
                 // pbrt-v4's exposure time is the shutter interval (Pharr et al. 4th ed. §5.4.2).
                 let exposure = p.float("shutterclose", 1.0)? - p.float("shutteropen", 0.0)?;
                 if !(exposure.is_finite() && exposure > 0.0) {
                     return Err((line, format!("the shutter interval {exposure} must be positive")));
                 }
                 self.image_scale *= exposure;
+                self.check_image_scale(line)?;
                 // tress's camera is a pinhole, as pbrt's thin lens of radius 0 (its default),
                 // whose focus distance changes nothing; a wider lens is said once, its focus
                 // distance with it.
@@ -595,6 +607,7 @@ impl Parser {
                     return Err((line, format!("Film iso {iso} and scale {scale} must be positive")));
                 }
                 self.image_scale *= iso / 100.0 * scale;
+                self.check_image_scale(line)?;
                 // pbrt-v4 scales a sample whose largest channel is above it down to it,
                 // tress's `max_sample_value` (applied to the samples as tress renders them,
                 // the lights already scaled by the sensor as pbrt's sample values are).
@@ -716,6 +729,33 @@ impl Parser {
         }
     }
 
+    /// The camera's film aperture (width, height) in units of its distance.
+    ///
+    /// pbrt maps its screen window onto the image, and `fov` spans the window's extent of 2
+    /// (Pharr et al. 4th ed. §5.2): by default [-1, 1] on the shorter image side, the
+    /// longer side following the image's aspect. As a film, that is an aperture of
+    /// 2 tan(fov / 2) times the window, overscanned: the shorter side fits, for the file's
+    /// image size and one given later alike.
+    fn aperture(&self) -> [f32; 2] {
+        let t = (0.5 * self.fov.to_radians()).tan();
+        let [sx, sy] = self.screen.unwrap_or([1.0, 1.0]);
+        [(2.0 * sx * t) as f32, (2.0 * sy * t) as f32]
+    }
+
+    /// The imaging ratio scales the lights in single precision: one past f32's range (or
+    /// below its smallest number) would make them infinite (or black).
+    fn check_image_scale(&self, line: u32) -> Res<()> {
+        let k = self.image_scale as f32;
+        match k.is_finite() && k > 0.0 {
+            true => Ok(()),
+            false => Err((
+                line,
+                "the imaging ratio (Film iso / 100 × scale × the camera's shutter interval) is beyond single precision"
+                    .into(),
+            )),
+        }
+    }
+
     fn apply(&mut self, m: DMat4) {
         self.state.ctm *= m;
     }
@@ -792,6 +832,9 @@ impl Parser {
                 if !(eta.is_finite() && eta >= 1.0) {
                     return Err((p.line, format!("eta {eta} must be at least 1")));
                 }
+                if !(eta as f32).is_finite() {
+                    return Err((p.line, "eta is beyond single precision".into()));
+                }
                 Material::Glass { ior: eta as f32, color: Vec3::ONE }
             }
             "conductor" | "coatedconductor" | "metal" => {
@@ -831,7 +874,11 @@ impl Parser {
         let ctm = self.state.ctm;
         let point = |name: &str, d: DVec3| -> Res<Vec3> {
             let v = p.point3s(name)?.and_then(|v| v.first().copied()).unwrap_or(d);
-            Ok(ctm.transform_point3(v).as_vec3())
+            let at = ctm.transform_point3(v).as_vec3();
+            match at.is_finite() {
+                true => Ok(at),
+                false => Err((p.line, format!("light \"{kind}\": \"{name}\" is beyond single precision"))),
+            }
         };
         // pbrt-v4's photometric alternatives to `scale` (Pharr et al. 4th ed. §12.1-12.5):
         // a point light's power spreads over 4π sr, a spot's over its cone, a distant or
@@ -839,8 +886,11 @@ impl Parser {
         let positive = |name: &str| -> Res<Option<f32>> {
             match p.has(name) {
                 true => match p.float(name, 0.0)? {
-                    v if v.is_finite() && v > 0.0 => Ok(Some(v as f32)),
-                    v => Err((p.line, format!("light \"{kind}\": {name} {v} must be positive"))),
+                    v if !(v.is_finite() && v > 0.0) => {
+                        Err((p.line, format!("light \"{kind}\": {name} {v} must be positive")))
+                    }
+                    v if (v as f32).is_finite() && v as f32 > 0.0 => Ok(Some(v as f32)),
+                    _ => Err((p.line, format!("light \"{kind}\": {name} is beyond single precision"))),
                 },
                 false => Ok(None),
             }
@@ -919,20 +969,11 @@ impl Parser {
                 return Ok(false);
             }
         };
-        let bad = match &light {
-            LightSource::Inline(
-                Light::Distant { irradiance: c, .. }
-                | Light::Environment { radiance: c, .. }
-                | Light::Point { intensity: c, .. }
-                | Light::Spot { intensity: c, .. },
-            )
-            | LightSource::File(EnvironmentFile { tint: c, .. }) => !(c.is_finite() && c.min_element() >= 0.0),
-            _ => false,
-        };
-        if bad {
+        if emission(&light).is_some_and(|c| !(c.is_finite() && c.min_element() >= 0.0)) {
             return Err((p.line, format!("light \"{kind}\": its emission must be finite and not negative")));
         }
         self.out.contents.lights.push(light);
+        self.light_at.push((self.file_name.clone(), p.line));
         Ok(true)
     }
 
@@ -1000,6 +1041,9 @@ impl Parser {
                 if !(r.is_finite() && r > 0.0) {
                     return Err((p.line, format!("sphere radius {r} must be positive")));
                 }
+                if !((r as f32).is_finite() && r as f32 > 0.0) {
+                    return Err((p.line, "sphere radius is beyond single precision".into()));
+                }
                 let mesh = TriangleMesh::sphere(r as f32, 48);
                 self.out.contents.meshes.push(MeshEntry {
                     source: MeshSource::Inline(mesh),
@@ -1023,6 +1067,14 @@ impl Parser {
         }
         if self.image_scale != 1.0 {
             let k = self.image_scale as f32;
+            for (l, (file, line)) in self.out.contents.lights.iter().zip(&self.light_at) {
+                if emission(l).is_some_and(|c| !(c * k).is_finite()) {
+                    return Err(LoadError::format(
+                        Path::new(file),
+                        format!("line {line}: the light's emission × the imaging ratio is beyond single precision"),
+                    ));
+                }
+            }
             for l in &mut self.out.contents.lights {
                 match l {
                     LightSource::Inline(l) => scale_emission(l, k),
@@ -1061,14 +1113,7 @@ impl Parser {
             let up = c2w.transform_vector3(DVec3::Y).normalize_or(DVec3::Y);
             let right = c2w.transform_vector3(DVec3::X).normalize_or(DVec3::X);
             let [w, h] = self.out.resolution.unwrap_or([1280, 720]);
-            // pbrt maps its screen window onto the image, and `fov` spans the window's
-            // extent of 2 (Pharr et al. 4th ed. §5.2): by default [-1, 1] on the
-            // shorter image side, the longer side following the image's aspect. As a
-            // film, that is an aperture of 2 tan(fov / 2) times the window, overscanned:
-            // the shorter side fits, for the file's image size and one given later alike.
-            let t = (0.5 * self.fov.to_radians()).tan();
-            let [sx, sy] = self.screen.unwrap_or([1.0, 1.0]);
-            let film = Film { aperture: [(2.0 * sx * t) as f32, (2.0 * sy * t) as f32], fit: FilmFit::Overscan };
+            let film = Film { aperture: self.aperture(), fit: FilmFit::Overscan };
             self.out.camera = Some(CameraDesc {
                 eye: eye.as_vec3(),
                 target: (eye + forward).as_vec3(),
@@ -1092,6 +1137,21 @@ impl Parser {
         }
         self.out.warnings.extend(self.warnings);
         Ok(self.out)
+    }
+}
+
+/// The emission of a light as [`Parser::light`] makes it (its colour: irradiance, radiance,
+/// intensity or a map's tint), to check it is finite and not negative.
+fn emission(light: &LightSource) -> Option<Vec3> {
+    match light {
+        LightSource::Inline(
+            Light::Distant { irradiance: c, .. }
+            | Light::Environment { radiance: c, .. }
+            | Light::Point { intensity: c, .. }
+            | Light::Spot { intensity: c, .. },
+        )
+        | LightSource::File(EnvironmentFile { tint: c, .. }) => Some(*c),
+        _ => None,
     }
 }
 

@@ -805,8 +805,14 @@ impl<'g> Reader<'g> {
             return Ok(());
         }
         let Some((_, mesh, _)) = self.meshes.get(&mesh_node) else { return Ok(()) };
-        let uv = [scalar(g, f, &["pu", "parameterU"], 0.0)? as f32, scalar(g, f, &["pv", "parameterV"], 0.0)? as f32];
+        let (u, v) = (scalar(g, f, &["pu", "parameterU"], 0.0)?, scalar(g, f, &["pv", "parameterV"], 0.0)?);
         let node = &g.nodes[f];
+        // UVs are searched in single precision: a value finite in f64 but past f32's range
+        // (1e39) would be infinite there, nearest to no point of the mesh.
+        let uv = [u as f32, v as f32];
+        if !uv.iter().all(|x| x.is_finite()) {
+            return Err((node.line, format!("follicle {}: its UV (`pu`, `pv`) is beyond single precision", node.name)));
+        }
         let found = follicles_at_uvs(mesh, &[uv]).map_err(|e| (node.line, format!("follicle {}: {e}", node.name)))?;
         let Some(placed) = found[0] else {
             return Err((node.line, format!("follicle {}: its mesh's UVs cover no area", node.name)));
@@ -1293,6 +1299,11 @@ impl<'g> Reader<'g> {
                     }
                 }
                 None => {}
+            }
+            if shader.param(name).is_some_and(|p| p.is_infinite()) {
+                let node = &g.nodes[s];
+                let line = attr(g, s, &plugs).map_or(node.line, |a| a.line);
+                return Err((line, format!("{}: `{name}` is beyond single precision", node.name)));
             }
         }
         Ok(shader.material(&g.nodes[s].name, &connected))

@@ -1343,6 +1343,24 @@ fn meshes_take_their_ai_standard_surface() {
 }
 
 #[test]
+fn arnold_shader_values_beyond_single_precision_are_errors_naming_the_shader() {
+    // A base colour of 1e39 under a base weight of 0 would be inf × 0, NaN: refused, naming
+    // the node, the parameter and the line of its setAttr; hair shaders alike.
+    let surface = "createNode transform -n p;\ncreateNode mesh -n ps -p p;\ncreateNode polySphere -n sph;\n\
+                   connectAttr \"sph.out\" \"ps.i\";\ncreateNode aiStandardSurface -n gold;\n\
+                   \tsetAttr \".base\" 0;\n\tsetAttr \".base_color\" -type \"float3\" 1e39 0.8 0.3 ;\n\
+                   createNode shadingEngine -n goldSG;\nconnectAttr \"gold.oc\" \"goldSG.ss\";\n\
+                   connectAttr \"ps.iog\" \"goldSG.dsm\" -na;\n";
+    let e = read(surface).unwrap_err().to_string();
+    assert_eq!(e, "dir/scene.ma: line 7: gold: `base_color` is beyond single precision", "{e}");
+    assert!(read(&surface.replace("1e39", "1e30")).is_ok());
+    let hair = ARNOLD_CURVES
+        .replace("\tsetAttr \".ior\" 1.4;", "\tsetAttr \".ior\" 1.4;\n\tsetAttr \".diffuseColorR\" -1e39;");
+    let e = read(&hair).unwrap_err().to_string();
+    assert!(e.starts_with("dir/scene.ma: line 10: brown: `diffuse_color` is beyond single precision"), "{e}");
+}
+
+#[test]
 fn meshes_take_their_ai_flat_colour_lit() {
     let text = "createNode transform -n p;\ncreateNode mesh -n ps -p p;\ncreateNode polySphere -n sph;\n\
                 connectAttr \"sph.out\" \"ps.i\";\ncreateNode aiFlat -n green;\n\
@@ -1489,6 +1507,18 @@ fn geometry_beyond_single_precision_is_an_error_naming_the_attribute() {
         let e = read(&SCENE.replacen(from, to, 1)).unwrap_err().to_string();
         assert!(e.contains("planeShape1") && e.contains("beyond single precision"), "{e}");
     }
+    // A follicle Maya places from its UV (it stores no transform): the UV is searched in
+    // single precision, so one past it is an error naming the follicle and its line.
+    let placed = "createNode follicle -n \"follicleShape3\" -p \"follicle3\";\n\tsetAttr \".pu\" 0.75;";
+    assert!(SCENE.contains(placed));
+    let line = SCENE[..SCENE.find(placed).unwrap()].lines().count() + 1;
+    let e = read(&SCENE.replacen(placed, &placed.replace("0.75", "1e39"), 1)).unwrap_err().to_string();
+    assert!(
+        e.starts_with(&format!(
+            "dir/scene.ma: line {line}: follicle follicleShape3: its UV (`pu`, `pv`) is beyond single precision"
+        )),
+        "{e}"
+    );
 }
 
 #[test]

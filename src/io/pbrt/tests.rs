@@ -423,6 +423,55 @@ fn a_camera_beyond_single_precision_is_an_error_naming_its_line() {
     }
 }
 
+#[test]
+fn colours_lights_and_sizes_beyond_single_precision_are_errors_naming_their_line() {
+    // Each value is finite in double precision and infinite (or 0) once kept in f32; the
+    // error names its line (the third, after the camera and WorldBegin) and what is wrong.
+    let head = "Camera \"perspective\"\nWorldBegin\n";
+    for (directive, what) in [
+        ("Material \"diffuse\" \"rgb reflectance\" [ 1e39 0.5 0.5 ]", "\"rgb reflectance\" is beyond single precision"),
+        ("Material \"coateddiffuse\" \"float reflectance\" 1e39", "\"float reflectance\" is beyond"),
+        ("Material \"hair\" \"spectrum sigma_a\" [ 400 1e39 700 1 ]", "\"spectrum sigma_a\" is beyond"),
+        ("Material \"dielectric\" \"float eta\" 1e39", "eta is beyond single precision"),
+        ("LightSource \"point\" \"rgb I\" [ 1e39 1 1 ]", "\"rgb I\" is beyond single precision"),
+        // A colour of 1e39 times a scale of 0 is not NaN light: the colour is refused.
+        ("LightSource \"distant\" \"rgb L\" [ 1e39 1 1 ] \"float scale\" 0", "\"rgb L\" is beyond"),
+        ("LightSource \"point\" \"point3 from\" [ 1e39 0 0 ]", "light \"point\": \"from\" is beyond"),
+        ("LightSource \"spot\" \"point3 to\" [ 0 -1e39 0 ]", "light \"spot\": \"to\" is beyond"),
+        ("LightSource \"distant\" \"point3 from\" [ 0 0 1e39 ]", "light \"distant\": \"from\" is beyond"),
+        ("LightSource \"point\" \"float power\" 1e39", "light \"point\": power is beyond single precision"),
+        ("LightSource \"distant\" \"float illuminance\" 1e-50", "illuminance is beyond single precision"),
+        (
+            "LightSource \"infinite\" \"string filename\" \"sky.exr\" \"float illuminance\" 1e39",
+            "light \"infinite\": illuminance is beyond",
+        ),
+        // Finite colours whose product overflows are refused too.
+        ("LightSource \"point\" \"rgb I\" [ 3e38 1 1 ] \"rgb scale\" [ 3e38 1 1 ]", "emission must be finite"),
+        ("Shape \"sphere\" \"float radius\" 1e39", "sphere radius is beyond single precision"),
+    ] {
+        let e = read(&format!("{head}{directive}\n")).unwrap_err().to_string();
+        assert!(e.starts_with("dir/scene.pbrt: line 3: ") && e.contains(what), "{directive}: {e}");
+    }
+    // The camera's screen window and the imaging ratio, on the Camera and Film lines.
+    let film = |film: &str, camera: &str| read(&format!("{film}\n{camera}\nWorldBegin\n")).unwrap_err().to_string();
+    let e = film("", "Camera \"perspective\" \"float screenwindow\" [ -1e39 1e39 -1 1 ]");
+    assert!(e.starts_with("dir/scene.pbrt: line 2: the camera's screen window is beyond single precision"), "{e}");
+    let e = film("Film \"rgb\" \"float iso\" 1e42", "Camera \"perspective\"");
+    assert!(e.starts_with("dir/scene.pbrt: line 1: the imaging ratio") && e.contains("beyond single precision"), "{e}");
+    let e = film("Film \"rgb\" \"float iso\" 1e30", "Camera \"perspective\" \"float shutterclose\" 1e30");
+    assert!(e.starts_with("dir/scene.pbrt: line 2: the imaging ratio"), "{e}");
+    // Each finite, the light times the imaging ratio is not: named by the light's line.
+    let e = film(
+        "Film \"rgb\" \"float iso\" 1e30",
+        "Camera \"perspective\"\nWorldBegin\n\nLightSource \"point\" \"rgb I\" [ 1e30 1 1 ]",
+    );
+    assert!(e.starts_with("dir/scene.pbrt: line 5: the light's emission × the imaging ratio"), "{e}");
+    // In range, nothing changes.
+    let s = read(&format!("Film \"rgb\" \"float iso\" 1e30\n{head}LightSource \"point\" \"rgb I\" [ 1e-20 1 1 ]\n"))
+        .unwrap();
+    assert_eq!(s.contents.lights.len(), 1);
+}
+
 /// pbrt's `fov` spans the shorter image side (its screen window is [-1, 1] there, Pharr et
 /// al. 4th ed. §5.2), so an image of another size (`-r`) refits the vertical field of
 /// view: a 40° fov is the vertical one at 2:1 and 1:1, and at 1:2 the horizontal one,

@@ -280,6 +280,7 @@ fn arnold_material<S: ArnoldShader>(shader: &Prim, time: TimeCode, notes: &mut N
             Some(Param::Bool(b)) => *b = boolean(v, *b),
             None => {}
         }
+        anyhow::ensure!(!params.param(name).is_some_and(|p| p.is_infinite()), "`{what}` is beyond single precision");
     }
     let path = shader.path().to_string();
     let (material, left_out) = params.material(&path, &connected);

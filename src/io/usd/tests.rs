@@ -1517,6 +1517,30 @@ def Mesh "Plain" {
 }
 
 #[test]
+fn arnold_shader_inputs_beyond_single_precision_are_errors_naming_the_input() {
+    // A `double` weight or a `color3d` finite in the file, infinite as f32: a colour of
+    // 1e39 under a weight of 0 would be NaN. Refused, naming the shader prim and input.
+    let stage = |inputs: &str| {
+        format!(
+            "def Material \"M\" {{\n    token outputs:arnold:surface.connect = </M/s>\n    def Shader \"s\" {{\n        \
+             uniform token info:id = \"arnold:lambert\"\n        {inputs}\n        token outputs:out\n    }}\n}}\n\
+             def Mesh \"Bound\" (prepend apiSchemas = [\"MaterialBindingAPI\"]) {{\n    rel material:binding = </M>\n    \
+             int[] faceVertexCounts = [3]\n    int[] faceVertexIndices = [0, 1, 2]\n    \
+             point3f[] points = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]\n}}\n"
+        )
+    };
+    for (inputs, what) in [
+        ("double inputs:Kd = 0\n        color3d inputs:Kd_color = (1e39, 0, 0)", "/M/s.inputs:Kd_color"),
+        ("double inputs:Kd = -1e39", "/M/s.inputs:Kd"),
+    ] {
+        let e = read_text(&format!("#usda 1.0\n{}", stage(inputs))).unwrap_err().to_string();
+        assert!(e.contains(&format!("`{what}` is beyond single precision")), "{inputs}: {e}");
+    }
+    let s = read_body(&stage("double inputs:Kd = 1\n        color3d inputs:Kd_color = (1e30, 0, 0)"));
+    assert_eq!(s.contents.meshes[0].material, Material::Diffuse { color: Vec3::new(1.0, 0.0, 0.0) }.into());
+}
+
+#[test]
 fn meshes_take_the_bound_arnold_lambert_and_flat_colours() {
     let mesh = |name: &str, material: &str| {
         format!(
