@@ -10,7 +10,8 @@
 //!   axis). A mesh built by a `polySphere`, `polyPlane`, `polyTorus` or `polyCube` node is
 //!   rebuilt from that node's attributes (spheres and cubes with Maya's vertex numbers, so
 //!   point tweaks land where Maya puts them), through the `transformGeometry` nodes on the
-//!   way (their matrix applied). Colour: the `lambert`/`blinn`/`phong` of its shading
+//!   way (their matrix applied) and the `deleteComponent` ones (their faces removed).
+//!   Colour: the `lambert`/`blinn`/`phong` of its shading
 //!   group (`color × diffuse`), else Maya's default grey. Hidden and intermediate shapes
 //!   are skipped; a deformed shape (a mesh or curve with no geometry of its own) is drawn
 //!   in its rest pose, from the shape its deformers start from (the intermediate `…Orig`).
@@ -157,7 +158,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 62] = [
+const KNOWN: [&str; 63] = [
     "transform",
     "animCurveTL",
     "animCurveTA",
@@ -193,6 +194,7 @@ const KNOWN: [&str; 62] = [
     "polyTorus",
     "polyCube",
     "transformGeometry",
+    "deleteComponent",
     "makeNurbCircle",
     "xgmSplineDescription",
     "xgmSplineBase",
@@ -599,61 +601,59 @@ impl<'g> Reader<'g> {
         let (mesh, faces) = match history.first() {
             Some(&src) if !stores(self, n) => {
                 // Built by a primitive node, or deformed from a shape upstream through a
-                // chain of nodes: `transformGeometry` ones are applied, deformers are not
-                // (the rest pose is drawn).
+                // chain of nodes: `transformGeometry` and `deleteComponent` ones are applied,
+                // deformers are not (the rest pose is drawn).
                 let (from, chain) = match PROCEDURAL_MESHES.contains(&self.kind(src)) {
                     true => (Some(src), Vec::new()),
                     false => self
-                        .rest_shape(n, stores, &["transformGeometry"])
+                        .rest_shape(n, stores, &["transformGeometry", "deleteComponent"])
                         .map_or((None, Vec::new()), |(f, c)| (Some(f), c)),
                 };
-                // The shape's own point tweaks go on top of what its history builds; only a
-                // primitive whose vertices are Maya's says where each one goes, and only when
-                // nothing between them changes the vertices' numbers.
-                let tweaks = point_tweaks(g, n)?;
-                let numbered = chain.iter().all(|&m| matches!(self.kind(m), "groupParts" | "transformGeometry"));
                 let built = match from {
-                    Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?.map(|(m, f)| (m, Faces::Of(f), None)),
-                    Some(f) => self.procedural(f)?.map(|p| (p.mesh, p.faces, p.maya_ids)),
+                    Some(f) if self.kind(f) == "mesh" => stored_mesh(g, f)?.map(Built::Poly),
+                    Some(f) => self.procedural(f)?,
                     None => None,
                 };
-                let built = match built {
-                    Some((mut m, faces, ids)) => {
-                        for &t in chain.iter().filter(|&&t| self.kind(t) == "transformGeometry") {
-                            m.transform(&transform_geometry(g, t)?);
-                        }
-                        match ids.filter(|_| numbered) {
-                            Some(ids) => {
-                                for (p, id) in m.positions.iter_mut().zip(ids) {
-                                    *p += tweaks.get(&(id as usize)).copied().unwrap_or_default().as_vec3();
-                                }
-                            }
-                            None if !tweaks.is_empty() => self.out.warnings.push(format!(
-                                "mesh {}: the point tweaks of {} vertices are not applied to what its `{}` history builds",
-                                node.name,
-                                tweaks.len(),
-                                self.kind(src)
-                            )),
-                            None => {}
-                        }
-                        Some((m, faces))
-                    }
-                    None => None,
+                let Some(mut built) = built else {
+                    self.out.warnings.push(format!(
+                        "mesh {} is built by a `{}` node, which tress cannot evaluate: skipped",
+                        node.name,
+                        self.kind(self.history_root(src))
+                    ));
+                    return Ok(());
                 };
-                match built {
-                    Some(m) => m,
-                    None => {
-                        self.out.warnings.push(format!(
-                            "mesh {} is built by a `{}` node, which tress cannot evaluate: skipped",
-                            node.name,
-                            self.kind(self.history_root(src))
-                        ));
-                        return Ok(());
+                // The shape's own point tweaks go on top of what its history builds, by Maya's
+                // vertex numbers: only while every node on the way keeps them known.
+                let mut numbered = true;
+                for &t in &chain {
+                    match self.kind(t) {
+                        "transformGeometry" => built.transform(&transform_geometry(g, t)?),
+                        "deleteComponent" => numbered &= self.delete_components(t, &mut built)?,
+                        "groupParts" => {}
+                        _ => numbered = false,
                     }
                 }
+                let tweaks = point_tweaks(g, n)?;
+                let applied = tweaks.is_empty() || numbered && built.tweak(&tweaks);
+                if !applied {
+                    self.out.warnings.push(format!(
+                        "mesh {}: the point tweaks of {} vertices are not applied to what its `{}` history builds",
+                        node.name,
+                        tweaks.len(),
+                        self.kind(src)
+                    ));
+                }
+                let (mesh, faces) = built.finish();
+                if mesh.indices.is_empty() {
+                    self.out
+                        .warnings
+                        .push(format!("mesh {}: its history deletes every face: nothing to draw", node.name));
+                    return Ok(());
+                }
+                (mesh, faces)
             }
             _ => match stored_mesh(g, n)? {
-                Some((m, f)) => (m, Faces::Of(f)),
+                Some(m) => Built::Poly(m).finish(),
                 None => return Ok(()),
             },
         };
@@ -691,7 +691,7 @@ impl<'g> Reader<'g> {
 
     /// The mesh a primitive node builds, from that node's attributes (Maya's defaults when
     /// unset); `None` for other history.
-    fn procedural(&self, src: usize) -> Res<Option<Primitive>> {
+    fn procedural(&self, src: usize) -> Res<Option<Built>> {
         let g = self.g;
         let check = |v: f64, what: &str| -> Res<f32> {
             match v.is_finite() && v > 0.0 && v < 1e12 {
@@ -710,7 +710,11 @@ impl<'g> Reader<'g> {
                 m.transform(&primitive_axis(g, src)?);
                 // Quads between the rings and a triangle (three Ptex faces) per column at
                 // each pole.
-                Some(Primitive { mesh: m, faces: Faces::Count(sa * (sh - 2) + 6 * sa), maya_ids: Some(ids) })
+                Some(Built::Tri(Primitive {
+                    mesh: m,
+                    faces: Faces::Count(sa * (sh - 2) + 6 * sa),
+                    maya_ids: Some(ids),
+                }))
             }
             "polyCube" => {
                 let size = Vec3::new(
@@ -727,9 +731,9 @@ impl<'g> Reader<'g> {
                 // `createUVs` 0 makes none; the other modes lay out the same cross on a box
                 // (every stored box of the MtoA files has it, whatever its proportions).
                 let with_uvs = scalar(g, src, &["cuv", "createUVs"], 3.0)? != 0.0;
-                let (mut m, faces, ids) = poly_cube(size, divisions, with_uvs);
-                m.transform(&primitive_axis(g, src)?);
-                Some(Primitive { mesh: m, faces: Faces::Of(faces), maya_ids: Some(ids) })
+                let mut cube = Built::Poly(poly_cube(size, divisions, with_uvs));
+                cube.transform(&primitive_axis(g, src)?);
+                Some(cube)
             }
             "polyTorus" => {
                 let (sa, sh) =
@@ -740,7 +744,7 @@ impl<'g> Reader<'g> {
                     sa,
                     sh,
                 );
-                Some(Primitive { mesh: m, faces: Faces::Count(sa * sh), maya_ids: None })
+                Some(Built::Tri(Primitive { mesh: m, faces: Faces::Count(sa * sh), maya_ids: None }))
             }
             "polyPlane" => {
                 let w = check(scalar(g, src, &["w", "width"], 1.0)?, "width")?;
@@ -750,10 +754,80 @@ impl<'g> Reader<'g> {
                 // Drawn as one quad; Maya divides it into a grid of faces (10 × 10 unless set).
                 let grid = |names: &[&str]| -> Res<u32> { Ok(scalar(g, src, names, 10.0)?.clamp(1.0, 1000.0) as u32) };
                 let faces = grid(&["sw", "subdivisionsWidth"])? * grid(&["sh", "subdivisionsHeight"])?;
-                Some(Primitive { mesh: m, faces: Faces::Count(faces), maya_ids: None })
+                Some(Built::Tri(Primitive { mesh: m, faces: Faces::Count(faces), maya_ids: None }))
             }
             _ => None,
         })
+    }
+
+    /// Applies a `deleteComponent` node to the mesh flowing through it: removes the faces
+    /// its `.dc` lists (`f[2]`, `f[0:3]`, `f[*]`). Maya numbers the faces left in their
+    /// order, from 0 again, so a later deletion counts from there. Returns whether the
+    /// vertices still have the numbers they came in with (what point tweaks further down
+    /// are indexed by): not when a vertex no face uses any more is left (Maya deletes it,
+    /// and the vertices after it take new numbers), nor when the deletion is not applied.
+    /// Vertices and edges (`vtx[…]`, `e[…]`) are not deleted: Maya merges the faces around
+    /// them into one, which tress does not evaluate (said, the mesh drawn without that
+    /// deletion); nor are faces of a mesh tress builds only as triangles.
+    fn delete_components(&mut self, n: usize, built: &mut Built) -> Res<bool> {
+        let g = self.g;
+        let node = &g.nodes[n];
+        let Some(a) = attr(g, n, &["dc", "deleteComponents"]) else { return Ok(true) };
+        let bad = |m: String| (a.line, format!("deleteComponent {}: {m}", node.name));
+        let Value::Strings(list) = &a.value else {
+            return Err(bad(format!("`{}` must be a component list (-type \"componentList\")", a.name)));
+        };
+        let Built::Poly(mesh) = built else {
+            self.out.warnings.push(format!(
+                "deleteComponent {}: tress does not number the faces of `{}` meshes as Maya does: drawn without \
+                 the deletion",
+                node.name,
+                self.kind(self.history_root(n))
+            ));
+            return Ok(false);
+        };
+        let count = mesh.polygons.len();
+        let mut gone = vec![false; count];
+        let mut other = Vec::new();
+        for c in list {
+            let (kind, range) = component(c).ok_or_else(|| bad(format!("`{c}` is not a component")))?;
+            if kind != "f" {
+                other.push(c.as_str());
+                continue;
+            }
+            let (first, end) = match range {
+                None => (0, count),
+                Some((a, b)) if a > b => return Err(bad(format!("`{c}` is an empty range"))),
+                Some((_, b)) if b >= count => {
+                    return Err(bad(format!("`{c}`: the mesh coming in has {count} faces")));
+                }
+                Some((a, b)) => (a, b + 1),
+            };
+            gone[first..end].fill(true);
+        }
+        if !other.is_empty() {
+            self.out.warnings.push(format!(
+                "deleteComponent {}: deleting {} merges the faces around them, which tress does not evaluate: \
+                 drawn without the deletion",
+                node.name,
+                other.join(", ")
+            ));
+            return Ok(false);
+        }
+        let used = |polygons: &[Polygon]| {
+            let mut used = vec![false; mesh.positions.len()];
+            for v in polygons.iter().flat_map(|p| &p.0) {
+                used[*v as usize] = true;
+            }
+            used
+        };
+        let before = used(&mesh.polygons);
+        let mut k = 0;
+        mesh.polygons.retain(|_| {
+            k += 1;
+            !gone[k - 1]
+        });
+        Ok(used(&mesh.polygons) == before)
     }
 
     /// The surface shader of the mesh's shading group, if it has one.
@@ -1712,9 +1786,8 @@ fn primitive_axis(g: &Graph, n: usize) -> Res<Affine3A> {
 ///   wide: the strip at u 0.375 to 0.625 over v 0 to 1 (a quarter of v per side), the +X
 ///   side at u 0.625 to 0.875 and the −X side at u 0.125 to 0.375, both at v 0 to 0.25.
 ///
-/// Returns the triangles (flat: Maya's cube edges are hard), their Ptex faces and the Maya
-/// vertex each mesh vertex is (what point tweaks are indexed by).
-fn poly_cube(size: Vec3, divisions: [u32; 3], with_uvs: bool) -> (TriangleMesh, Vec<[u32; 2]>, Vec<u32>) {
+/// Flat shaded: Maya's cube edges are hard.
+fn poly_cube(size: Vec3, divisions: [u32; 3], with_uvs: bool) -> PolyMesh {
     let [sw, sh, sd] = divisions;
     let rows = 2 * sh + 2 * sd;
     let half = size / 2.0;
@@ -1808,7 +1881,7 @@ fn poly_cube(size: Vec3, divisions: [u32; 3], with_uvs: bool) -> (TriangleMesh, 
             p.1 = None;
         }
     }
-    polygon_mesh(&positions, &uvs, &polygons, false)
+    PolyMesh { positions, uvs, polygons, smooth: false }
 }
 
 /// The matrix a `transformGeometry` node applies to the geometry passing through it: its
@@ -1885,6 +1958,18 @@ fn plug_base(plug: &str) -> &str {
 fn plug_leaf(plug: &str) -> &str {
     let last = plug.rsplit('.').next().unwrap_or(plug);
     last.split('[').next().unwrap_or(last)
+}
+
+/// A mesh component of a component list, `f[2]`, `f[0:3]` or `f[*]`: its kind (`f`, `vtx`,
+/// `e`, ...) and the range of indices it covers, `None` for all.
+fn component(c: &str) -> Option<(&str, Option<(usize, usize)>)> {
+    let (kind, rest) = c.split_once('[')?;
+    let inner = rest.strip_suffix(']')?;
+    if inner == "*" {
+        return Some((kind, None));
+    }
+    let (a, b) = inner.split_once(':').unwrap_or((inner, inner));
+    Some((kind, Some((a.parse().ok()?, b.parse().ok()?))))
 }
 
 /// The index of a plug like `ih[3]`.
@@ -2039,9 +2124,8 @@ fn tangent_u(mesh: &TriangleMesh, t: u32) -> Option<Vec3> {
     (det != 0.0).then(|| (e1 * dv2 - e2 * dv1) / det)
 }
 
-/// The mesh a `mesh` node stores and the Ptex faces of each of its triangles' face
-/// ([`Faces::Of`]; `None` when it stores no faces).
-fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>> {
+/// The mesh a `mesh` node stores, its point tweaks applied; `None` when it stores no faces.
+fn stored_mesh(g: &Graph, n: usize) -> Res<Option<PolyMesh>> {
     let node = &g.nodes[n];
     let vt = dense(g, n, "vertex", elements(g, n, &["vt", "vrts"], 3)?)?;
     let tweaks = point_tweaks(g, n)?;
@@ -2092,12 +2176,11 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<(TriangleMesh, Vec<[u32; 2]>)>
     // Edges flagged smooth (third value 1) mean Maya shades with vertex normals.
     let smooth = edges.iter().filter(|e| e[2] != 0.0).count();
     let smooth = smooth * 2 >= edges.len() && !edges.is_empty();
-    let (mesh, face_of, _) = polygon_mesh(&positions, &uvs, &polygons, smooth);
     // Faces that are all empty chunks draw nothing: as a mesh storing no faces.
-    if mesh.indices.is_empty() {
+    if polygons.is_empty() {
         return Ok(None);
     }
-    Ok(Some((mesh, face_of)))
+    Ok(Some(PolyMesh { positions, uvs, polygons, smooth }))
 }
 
 /// A polygon: its vertices in order and, when it has UVs, the UV of each corner (an index
@@ -2106,15 +2189,15 @@ type Polygon = (Vec<u32>, Option<Vec<i64>>);
 
 /// Triangulates polygons over `positions` as fans, one mesh vertex per distinct (vertex,
 /// UV) corner, keeping their winding; with the Ptex faces of each triangle's polygon
-/// ([`Faces::Of`]) and the vertex of `positions` each mesh vertex is. UV indices must be
-/// in range. `smooth`: vertex normals, the area-weighted sum of the normals of the
-/// triangles around each vertex of `positions`; else none (flat shading).
+/// ([`Faces::Of`]). Vertices no polygon uses are left out. UV indices must be in range.
+/// `smooth`: vertex normals, the area-weighted sum of the normals of the triangles around
+/// each vertex of `positions`; else none (flat shading).
 fn polygon_mesh(
     positions: &[Vec3],
     uvs: &[[f32; 2]],
     polygons: &[Polygon],
     smooth: bool,
-) -> (TriangleMesh, Vec<[u32; 2]>, Vec<u32>) {
+) -> (TriangleMesh, Vec<[u32; 2]>) {
     let mut mesh = TriangleMesh::default();
     let mut uv_out: Vec<[f32; 2]> = Vec::new();
     let mut original: Vec<u32> = Vec::new();
@@ -2153,10 +2236,75 @@ fn polygon_mesh(
         }
         mesh.normals = Some(original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect());
     }
-    (mesh, face_of, original)
+    (mesh, face_of)
 }
 
-/// A mesh a primitive node (`polySphere`, ...) builds.
+/// A polygon mesh by Maya's numbers, as a stored mesh holds it or a primitive node builds
+/// it: what history edits (`transformGeometry` moves its vertices, `deleteComponent`
+/// removes faces) and point tweaks index, before it is triangulated ([`polygon_mesh`]).
+struct PolyMesh {
+    /// Vertex positions, by Maya vertex number.
+    positions: Vec<Vec3>,
+    /// UV set 0.
+    uvs: Vec<[f32; 2]>,
+    /// The faces, by Maya face number.
+    polygons: Vec<Polygon>,
+    /// Shaded with vertex normals (most of its edges soft).
+    smooth: bool,
+}
+
+/// A mesh as construction history builds it, before it is drawn.
+enum Built {
+    /// Polygons by Maya's numbers (stored meshes, `polyCube`, `polyCylinder`).
+    Poly(PolyMesh),
+    /// Triangles (the primitives tress does not build face by face as Maya does).
+    Tri(Primitive),
+}
+
+impl Built {
+    /// Moves its vertices (and normals) by `m`.
+    fn transform(&mut self, m: &Affine3A) {
+        match self {
+            Built::Poly(p) => p.positions.iter_mut().for_each(|q| *q = m.transform_point3(*q)),
+            Built::Tri(t) => t.mesh.transform(m),
+        }
+    }
+
+    /// Adds point tweaks by Maya vertex number; `false` (nothing moved) when tress does not
+    /// know which of its vertices is which Maya vertex.
+    fn tweak(&mut self, tweaks: &BTreeMap<usize, DVec3>) -> bool {
+        match self {
+            Built::Poly(p) => {
+                for (&i, d) in tweaks {
+                    if let Some(q) = p.positions.get_mut(i) {
+                        *q += d.as_vec3();
+                    }
+                }
+                true
+            }
+            Built::Tri(Primitive { mesh, maya_ids: Some(ids), .. }) => {
+                for (p, &id) in mesh.positions.iter_mut().zip(ids.iter()) {
+                    *p += tweaks.get(&(id as usize)).copied().unwrap_or_default().as_vec3();
+                }
+                true
+            }
+            Built::Tri(_) => false,
+        }
+    }
+
+    /// Its triangles and their Maya faces.
+    fn finish(self) -> (TriangleMesh, Faces) {
+        match self {
+            Built::Poly(p) => {
+                let (m, faces) = polygon_mesh(&p.positions, &p.uvs, &p.polygons, p.smooth);
+                (m, Faces::Of(faces))
+            }
+            Built::Tri(t) => (t.mesh, t.faces),
+        }
+    }
+}
+
+/// A mesh of triangles a primitive node (`polySphere`, ...) builds.
 struct Primitive {
     /// Its triangles.
     mesh: TriangleMesh,

@@ -163,8 +163,8 @@ impl<'a> Lexer<'a> {
 pub enum Value {
     /// Numbers (`yes`/`no`, `on`/`off`, `true`/`false` read as 1 and 0).
     Numbers(Vec<f64>),
-    /// Strings (`-type "string"` and `"stringArray"`; the quoted words of an XGen
-    /// `"xgmSplineData"` block).
+    /// Strings (`-type "string"`, `"stringArray"` and `"componentList"`, the last two
+    /// without their leading count; the quoted words of an XGen `"xgmSplineData"` block).
     Strings(Vec<String>),
     /// A `-type "nurbsCurve"` block: every word after the type, as numbers (`yes`/`no`
     /// included).
@@ -592,8 +592,9 @@ fn read_value(type_name: Option<&str>, words: &[Word], line: u32) -> Result<Valu
         words.iter().map(|w| if w.quoted { None } else { number(w.text) }.ok_or(w.line)).collect()
     };
     Ok(match type_name {
-        Some("string" | "stringArray" | "xgmSplineData") => {
-            let start = usize::from(type_name == Some("stringArray") && words.first().is_some_and(|w| !w.quoted));
+        Some("string" | "stringArray" | "componentList" | "xgmSplineData") => {
+            let counted = matches!(type_name, Some("stringArray" | "componentList"));
+            let start = usize::from(counted && words.first().is_some_and(|w| !w.quoted));
             Value::Strings(words[start..].iter().map(|w| w.unescaped()).collect())
         }
         Some("nurbsCurve") => {
@@ -704,7 +705,10 @@ mod tests {
         assert_eq!(parse("createNode mesh;\n\nsetAttr \".fc[0]\" -type \"polyFaces\" f 9 1;\n").unwrap_err().0, 3);
         assert_eq!(parse("currentUnit -a grad;").unwrap_err().0, 1);
         // An odd value on some attribute is kept, with its line, not an error.
-        let g = parse("createNode x;\nsetAttr \".a\" -type \"componentList\" 1 \"vtx[0]\";").unwrap();
-        assert_eq!(g.nodes[0].attrs[0].value, Value::Other(Some("componentList".into()), 2));
+        let g = parse("createNode x;\nsetAttr \".a\" -type \"double4\" 1 \"vtx[0]\";").unwrap();
+        assert_eq!(g.nodes[0].attrs[0].value, Value::Other(Some("double4".into()), 2));
+        // A component list is its components, without the count Maya writes first.
+        let g = parse("createNode x;\nsetAttr \".dc\" -type \"componentList\" 2 \"f[0:1]\" \"f[4]\";").unwrap();
+        assert_eq!(g.nodes[0].attrs[0].value, Value::Strings(vec!["f[0:1]".into(), "f[4]".into()]));
     }
 }

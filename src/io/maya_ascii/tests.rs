@@ -1828,3 +1828,88 @@ fn a_face_of_fewer_than_three_edges_is_an_error_and_empty_faces_no_mesh() {
     .unwrap();
     assert!(s.contents.meshes.is_empty());
 }
+
+#[test]
+fn delete_component_removes_faces_by_mayas_numbers() {
+    // A default cube (faces: 0 front +Z, 1 top +Y, 2 back −Z, 3 bottom −Y, 4 +X, 5 −X)
+    // through one or two deleteComponent nodes, the shape's vertex 0 (−0.5, −0.5, 0.5)
+    // tweaked 1 down.
+    let scene = |first: &str, second: Option<&str>| {
+        let (nodes, links) = match second {
+            Some(c) => (
+                format!("createNode deleteComponent -n dc2;\n\tsetAttr \".dc\" -type \"componentList\" 1 \"{c}\";\n"),
+                "connectAttr \"dc.og\" \"dc2.ig\";\nconnectAttr \"dc2.og\" \"cs.i\";\n",
+            ),
+            None => (String::new(), "connectAttr \"dc.og\" \"cs.i\";\n"),
+        };
+        format!(
+            "createNode transform -n c;\ncreateNode mesh -n cs -p c;\n\tsetAttr \".pt[0]\" -type \"float3\" 0 -1 0;\n\
+             createNode polyCube -n pc;\ncreateNode deleteComponent -n dc;\n\
+             \tsetAttr \".dc\" -type \"componentList\" {first};\n{nodes}\
+             connectAttr \"pc.out\" \"dc.ig\";\n{links}"
+        )
+    };
+    let mesh = |s: &Imported| {
+        let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+        m.clone()
+    };
+    // The plane of each triangle: the axis and side all three corners share.
+    let sides = |m: &TriangleMesh| -> Vec<(usize, bool)> {
+        (0..m.indices.len() as u32)
+            .map(|t| {
+                let c = m.corners(t);
+                let k = (0..3).find(|&k| c.iter().all(|p| (p[k] - c[0][k]).abs() < 1e-6)).unwrap();
+                (k, c[0][k] > 0.0)
+            })
+            .collect()
+    };
+    // f[0:1] and f[4] (as test_0033): the back, bottom and −X faces are left. Vertex 3
+    // (0.5, 0.5, 0.5) is on none of them: Maya deletes it and numbers the vertices anew,
+    // so the tweak is not applied, and said.
+    let s = read(&scene("2 \"f[0:1]\" \"f[4]\"", None)).unwrap();
+    let m = mesh(&s);
+    assert_eq!(m.indices.len(), 6);
+    let mut got = sides(&m);
+    got.dedup();
+    assert_eq!(got, [(2, false), (1, false), (0, false)]);
+    assert!(m.positions.iter().all(|p| p.abs().max_element() < 0.5 + 1e-6));
+    assert!(s.warnings.iter().any(|w| w.contains("point tweaks of 1 vertices are not applied")), "{:?}", s.warnings);
+    // Two deletions of f[0]: the second counts the faces left, its face 0 the old face 1
+    // (the top). Every vertex still on a face: the tweak lands on vertex 0.
+    let s = read(&scene("1 \"f[0]\"", Some("f[0]"))).unwrap();
+    assert!(s.warnings.iter().all(|w| !w.contains("deleteComponent") && !w.contains("tweak")), "{:?}", s.warnings);
+    assert!(mesh(&s).positions.iter().any(|&p| close(p, Vec3::new(-0.5, -1.5, 0.5))), "{:?}", mesh(&s).positions);
+    // (Untweaked, each triangle lies on a side of the box.)
+    let untweaked = scene("1 \"f[0]\"", Some("f[0]")).replace("\tsetAttr \".pt[0]\" -type \"float3\" 0 -1 0;\n", "");
+    let m = mesh(&read(&untweaked).unwrap());
+    assert_eq!(
+        sides(&m),
+        [(2, false), (2, false), (1, false), (1, false), (0, true), (0, true), (0, false), (0, false)]
+    );
+    // f[*]: every face, nothing to draw.
+    let s = read(&scene("1 \"f[*]\"", None)).unwrap();
+    assert!(s.contents.meshes.is_empty());
+    assert!(s.warnings.iter().any(|w| w.contains("mesh cs") && w.contains("every face")), "{:?}", s.warnings);
+    // Vertices and edges are not deleted (Maya merges faces): the cube whole, the node named.
+    let s = read(&scene("1 \"vtx[0]\"", None)).unwrap();
+    assert_eq!(mesh(&s).indices.len(), 12);
+    assert!(s.warnings.iter().any(|w| w.contains("deleteComponent dc") && w.contains("vtx[0]")), "{:?}", s.warnings);
+    // Nor faces of a sphere, whose faces tress does not number as Maya does.
+    let s = read(&scene("1 \"f[0]\"", None).replace("polyCube", "polySphere")).unwrap();
+    assert_eq!(mesh(&s).indices.len(), 760);
+    assert!(
+        s.warnings.iter().any(|w| w.contains("deleteComponent dc") && w.contains("polySphere")),
+        "{:?}",
+        s.warnings
+    );
+    // Bad components are errors naming the node and its line, a huge range included
+    // (refused, not allocated).
+    for bad in
+        ["1 \"f[5:2]\"", "1 \"f[6]\"", "1 \"f[0:18446744073709551615]\"", "1 \"f[0:99999999999999999999]\"", "1 \"f[\""]
+    {
+        let e = read(&scene(bad, None)).unwrap_err().to_string();
+        assert!(e.starts_with("dir/scene.ma: line 6:") && e.contains("deleteComponent dc"), "{bad}: {e}");
+    }
+    let e = read(&scene("1 \"f[0]\"", None).replace("-type \"componentList\" 1 \"f[0]\"", "3")).unwrap_err();
+    assert!(e.to_string().contains("component list"), "{e}");
+}
