@@ -3,7 +3,8 @@
 //! integrator where only direct light exists, shadows through hair of known opacity,
 //! layers sharing a shadow ray lit as if each had its own,
 //! fast multi-hit transparency against re-tracing after every hit, adaptive sampling on
-//! edges, and the same image for any thread count with every integrator.
+//! edges, the same image for any thread count with every integrator, and unlit surfaces
+//! seen as their colour and lighting their neighbours.
 
 use glam::{Affine3A, Vec3};
 use tress::film::Film;
@@ -558,4 +559,121 @@ fn a_lone_diffuse_strand_in_a_uniform_sky_reflects_its_albedo() {
             );
         }
     }
+}
+
+/// Every integrator, the final gather with and without the irradiance cache.
+fn every_integrator(spp: u32, max_depth: u32) -> Vec<RenderSettings> {
+    let cache = IrradianceCacheSettings { accuracy: 0.3, spacing: 2, rays: 256 };
+    [Integrator::Direct, Integrator::FinalGather, Integrator::Path]
+        .into_iter()
+        .map(|i| settings(32, 24, spp, max_depth, i))
+        .chain([RenderSettings {
+            irradiance_cache: Some(cache),
+            ..settings(32, 24, spp, max_depth, Integrator::FinalGather)
+        }])
+        .collect()
+}
+
+#[test]
+fn an_unlit_plane_is_its_colour_with_and_without_lights() {
+    // A plane filling the view from above, its colour a radiance above 1 in red: every
+    // pixel is that colour, in the dark and under a quad light, the sun and a sky alike.
+    let color = Color::new(2.0, 0.3, 0.05);
+    let lights = [
+        Light::Quad {
+            corner: Vec3::new(-0.5, 1.0, -0.5),
+            edge_u: Vec3::new(1.0, 0.0, 0.0),
+            edge_v: Vec3::new(0.0, 0.0, 1.0),
+            radiance: Color::splat(4.0),
+        },
+        Light::distant(Vec3::new(-0.5, 1.0, 0.3).normalize(), Color::splat(3.0), 0.1),
+        Light::Environment { radiance: Color::splat(0.5), camera_visibility: 1.0 },
+    ];
+    for lit in [false, true] {
+        for settings in every_integrator(4, 5) {
+            let desc = Description {
+                camera: CameraDesc { eye: Vec3::new(0.0, 2.0, 0.0), up: Vec3::Z, vfov: 40.0, ..Default::default() },
+                settings,
+                contents: Contents {
+                    lights: if lit { lights.iter().cloned().map(Into::into).collect() } else { vec![] },
+                    meshes: vec![mesh(TriangleMesh::plane(8.0), Material::Unlit { color }, Affine3A::IDENTITY)],
+                    ..Default::default()
+                },
+            };
+            let film = render(&desc, 2);
+            for p in &film.pixels {
+                let what = format!("{:?}, lit {lit}", desc.settings.integrator);
+                assert!((p.color - color).abs().max_element() < 1e-6, "{what}: {}", p.color);
+            }
+        }
+    }
+}
+
+/// A diffuse square of albedo `a` facing the camera inside a closed unlit sphere of
+/// radiance `l`, with the sun and a bright sky outside, which the enclosure shuts out. (A
+/// flat square: every direction above it reaches the enclosure, where rays leaving a
+/// tessellated sphere by its interpolated normals may meet the sphere again.)
+fn unlit_enclosure(a: Color, l: Color, settings: RenderSettings) -> Description {
+    Description {
+        camera: CameraDesc { eye: Vec3::new(0.0, 0.0, 1.5), vfov: 40.0, ..Default::default() },
+        settings,
+        contents: Contents {
+            lights: vec![
+                Light::distant(Vec3::new(0.3, 1.0, 0.5).normalize(), Color::splat(100.0), 0.1).into(),
+                Light::Environment { radiance: Color::splat(5.0), camera_visibility: 1.0 }.into(),
+            ],
+            meshes: vec![
+                mesh(
+                    TriangleMesh::plane(1.0),
+                    Material::Diffuse { color: a },
+                    Affine3A::from_rotation_x(std::f32::consts::FRAC_PI_2),
+                ),
+                mesh(TriangleMesh::sphere(3.0, 48), Material::Unlit { color: l }, Affine3A::IDENTITY),
+            ],
+            ..Default::default()
+        },
+    }
+}
+
+#[test]
+fn an_unlit_enclosure_lights_a_diffuse_square_inside_by_its_albedo_times_its_radiance() {
+    // The light leaving the square is `a × l` (every direction above it sees the enclosure
+    // at radiance `l`; the sun and the sky are shadowed): exactly so for every sample of
+    // the path tracer and the final gather (cosine-weighted rays of weight `a`, each seeing
+    // `l`), near it with the irradiance cache (records of `l`, extrapolated by their
+    // gradients). The direct integrator lights nothing by an unlit surface.
+    let (a, l) = (Color::new(0.8, 0.5, 0.2), Color::new(0.5, 1.0, 2.0));
+    for settings in every_integrator(4, 3) {
+        let (integrator, cached) = (settings.integrator, settings.irradiance_cache.is_some());
+        let film = render(&unlit_enclosure(a, l, settings), 2);
+        let (w, h) = (film.width as usize, film.height as usize);
+        let object = |x: usize, y: usize| film.pixels[y * w + x].object_id;
+        let (mut square, mut enclosure) = (0, 0);
+        for y in 1..h - 1 {
+            for x in 1..w - 1 {
+                // Pixels whose neighbours see the same object: none of their samples sees the other.
+                let id = object(x, y);
+                if (y - 1..=y + 1).any(|j| (x - 1..=x + 1).any(|i| object(i, j) != id)) {
+                    continue;
+                }
+                let c = film.pixels[y * w + x].color;
+                let (want, tolerance) = match (id, integrator) {
+                    (1.0, _) => (l, 1e-6),
+                    (_, Integrator::Direct) => (Color::ZERO, 1e-6),
+                    (_, Integrator::FinalGather) if cached => (a * l, 0.02),
+                    _ => (a * l, 1e-5),
+                };
+                assert!((c - want).abs().max_element() <= tolerance, "{integrator:?} cached {cached}: {c} vs {want}");
+                if id == 0.0 {
+                    square += 1;
+                } else {
+                    enclosure += 1;
+                }
+            }
+        }
+        assert!(square > 50 && enclosure > 50, "{square} square and {enclosure} enclosure pixels");
+    }
+    // The same image on one and two threads.
+    let desc = unlit_enclosure(a, l, settings(32, 24, 2, 3, Integrator::Path));
+    assert_eq!(render(&desc, 1), render(&desc, 2));
 }

@@ -26,9 +26,11 @@
 //! networks) is named in one warning per shader.
 //!
 //! Arnold's two simple surface shaders are read the same way: `lambert` ([`Lambert`],
-//! Lambert of `Kd × Kd_color`) and `flat` ([`Flat`], an unlit colour). tress has no unlit
-//! surface, so a flat shader is drawn as Lambert of its colour, said in its warning: the
-//! colour is the shader's, the shading is the lights'.
+//! Lambert of `Kd × Kd_color`) and `flat` ([`Flat`], an unlit colour), which is tress's
+//! `unlit` material ([`Material::Unlit`]): the shader returns its `color` as the radiance
+//! leaving the surface for every ray type, lights nothing by reflection and lights its
+//! neighbours under global illumination (Arnold user guide, "Flat"). Its opacity and a
+//! shading network on its colour are not evaluated, said in its warning.
 
 use super::arnold_hair::{fmt_color, ArnoldShader, Param};
 use crate::math::Color;
@@ -310,12 +312,11 @@ impl ArnoldShader for Flat {
         })
     }
 
-    /// Lambert of its colour clamped to [0, 1], said: tress has no unlit surface.
+    /// Unlit, of its colour: a radiance, so above 1 is kept; negative, NaN and infinite
+    /// components are 0 (an infinite radiance would fill the image with infinities).
     fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
-        // `clamp` takes NaN to the low end.
-        let color = self.color.clamp(Color::ZERO, Color::ONE);
-        let lit = vec!["unlit colour (drawn lit, as Lambert of its colour)".to_string()];
-        (Material::Diffuse { color }, simple_warning(shader, "flat", lit, self.opacity, connected))
+        let color = Color::from_array(self.color.to_array().map(|c| if c.is_finite() { c.max(0.0) } else { 0.0 }));
+        (Material::Unlit { color }, simple_warning(shader, "flat", Vec::new(), self.opacity, connected))
     }
 }
 
@@ -380,24 +381,33 @@ mod tests {
     }
 
     #[test]
-    fn lambert_and_flat_shaders_are_lambert_of_their_colour() {
+    fn lambert_shaders_are_lambert_of_their_colour() {
         let (m, w) = Lambert::default().material("l", &[]);
         assert_eq!((m, w), (Material::Diffuse { color: Color::splat(0.7) }, None));
         let red = Lambert { kd: 0.5, kd_color: Color::new(1.0, 0.4, 0.0), ..Default::default() };
         assert_eq!(red.material("l", &[]).0, Material::Diffuse { color: Color::new(0.5, 0.2, 0.0) });
         let bad = Lambert { kd: f32::NAN, ..Default::default() };
         assert_eq!(bad.material("l", &[]).0, Material::Diffuse { color: Color::ZERO });
-        let nan = Flat { color: Color::new(f32::NAN, 0.5, 0.5), ..Default::default() };
-        assert_eq!(nan.material("f", &[]).0, Material::Diffuse { color: Color::new(0.0, 0.5, 0.5) });
-        // A flat shader keeps its colour and says it is drawn lit.
+    }
+
+    #[test]
+    fn flat_shaders_are_unlit_of_their_colour() {
+        // Nothing left out: no warning.
+        let (m, w) = Flat { color: Color::new(0.2, 0.4, 0.6), ..Default::default() }.material("f", &[]);
+        assert_eq!((m, w), (Material::Unlit { color: Color::new(0.2, 0.4, 0.6) }, None));
+        // What is not evaluated (opacity, a network on the colour) is said, naming the shader.
         let green = Flat { color: Color::new(0.0, 1.0, 0.0), opacity: Color::splat(0.5) };
         let (m, w) = green.material("/materials/flat0", &["color".into()]);
-        assert_eq!(m, Material::Diffuse { color: Color::new(0.0, 1.0, 0.0) });
+        assert_eq!(m, Material::Unlit { color: Color::new(0.0, 1.0, 0.0) });
         let w = w.unwrap();
-        for part in ["/materials/flat0: Arnold flat", "drawn lit", "opacity", "shading networks on color"] {
+        for part in ["/materials/flat0: Arnold flat", "opacity", "shading networks on color"] {
             assert!(w.contains(part), "{part}: {w}");
         }
+        assert!(!w.contains("lit"), "{w}");
+        // A radiance above 1 is kept; bad components are 0, never a NaN or infinite material.
         let hot = Flat { color: Color::new(5.0, f32::INFINITY, -1.0), ..Default::default() };
-        assert_eq!(hot.material("f", &[]).0, Material::Diffuse { color: Color::new(1.0, 1.0, 0.0) });
+        assert_eq!(hot.material("f", &[]).0, Material::Unlit { color: Color::new(5.0, 0.0, 0.0) });
+        let nan = Flat { color: Color::new(f32::NAN, 0.5, 0.5), ..Default::default() };
+        assert_eq!(nan.material("f", &[]).0, Material::Unlit { color: Color::new(0.0, 0.5, 0.5) });
     }
 }

@@ -2,6 +2,7 @@
 //! through semi-transparent hair), the constant environment as an ambient term and
 //! environment maps sampled with MIS (`super::environment`), mirror reflection and
 //! refraction up to the maximum depth, and semi-transparent hair blended in layers.
+//! An unlit surface is its colour, lit by nothing ([`crate::shading::Material::Unlit`]).
 //! The final gather reuses it with an indirect term ([`Indirect`]).
 
 use super::interaction::{FirstHit, Interaction};
@@ -258,6 +259,11 @@ fn shade(
     let at = Interaction::new(world, ray, hit);
     let (sp, material) = (&at.sp, at.material);
     let first = at.first_hit();
+    // An unlit surface shows its colour to every ray, gathered ones too (light sampling
+    // never finds it, so nothing counts it twice), and reflects nothing.
+    if let Some(radiance) = material.unlit_radiance(sp) {
+        return (radiance, first);
+    }
 
     let mut color = material.ambient(sp, world.ambient);
     let tube_hair = material.has_ambient_term(sp);

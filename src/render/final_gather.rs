@@ -6,7 +6,10 @@
 //! transmits from behind). Each gathered ray returns the direct light at the point it
 //! reaches; lights and the environment it sees directly count nothing, since the direct
 //! part of the shading already sampled them, nor do lights it sees through a mirror
-//! (no caustics: a few very bright samples would be fireflies). With the irradiance cache
+//! (no caustics: a few very bright samples would be fireflies). An unlit surface it
+//! reaches returns its colour, which no light sample counted: unlit surfaces light their
+//! neighbours through the gathered bounce (and the irradiance cache's records), as
+//! Arnold's `flat` shader does under global illumination. With the irradiance cache
 //! ([`IrradianceCache`]), diffuse surfaces read the gathered light from it where a record
 //! serves, and gather anew elsewhere; hair always gathers anew.
 

@@ -2,7 +2,9 @@
 //! ch. 13): next-event estimation at every vertex, multiple importance sampling (power
 //! heuristic, Veach & Guibas 1995) between light sampling and material sampling for lights
 //! a ray can hit (quad, sphere, sun), the physical hair BSDF's own sampling on hair, and
-//! Russian roulette once a path's throughput falls below 1.
+//! Russian roulette once a path's throughput falls below 1. A path ends at an unlit surface
+//! with its colour ([`crate::shading::Material::Unlit`]), which lights every surface whose
+//! paths reach it.
 //!
 //! The constant environment is reached by material sampling only (cosine- or
 //! BSDF-weighted directions already sample it well); an environment map is sampled at
@@ -141,6 +143,12 @@ pub(super) fn trace_camera(
         let at = Interaction::new(world, &ray, &hit);
         if vertex == 0 {
             first = Some(at.first_hit());
+        }
+        // An unlit surface ends the path with its colour: it reflects nothing, and no
+        // light sampling finds it, so it takes no MIS weight.
+        if let Some(le) = at.material.unlit_radiance(&at.sp) {
+            radiance += beta * le;
+            break;
         }
         // Path regularization past the camera hit (see the module documentation).
         let widened = match world.settings.indirect_hair_roughness {

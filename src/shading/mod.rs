@@ -4,7 +4,9 @@
 //! radiance leaving towards `wo` per unit of light arriving from `wi` (a BRDF times the
 //! cosine for surfaces; the tube model or the physical hair BSDF times its cosine for
 //! hair). Mirror and glass answer through [`Material::specular`] instead, which the
-//! integrator follows recursively.
+//! integrator follows recursively. An unlit surface ([`Material::Unlit`]) answers neither:
+//! it shows its colour whatever the light ([`Material::unlit_radiance`]), and the
+//! integrators draw it without sampling lights at it or scattering from it.
 
 pub mod fur_tube;
 pub mod hair_bsdf;
@@ -55,6 +57,18 @@ pub enum Material {
     /// A surface whose diffuse colour, and optionally its glossiness, comes from image
     /// textures by UV ([`Textured`]).
     Textured(Textured),
+    /// An unlit surface, as Arnold's `flat` shader draws one (Arnold user guide, "Flat"):
+    /// the radiance leaving it in every direction is `color` (the geometry's colour where it has
+    /// one, as for every material), whatever light arrives, for
+    /// every ray that reaches it (camera, mirror, gathered and path rays), so under global
+    /// illumination it lights its neighbours like an emitter of that radiance. It has no
+    /// BSDF: light arriving is not reflected, and no light is sampled at it. It blocks
+    /// light like any opaque surface (it casts shadows); light sampling does not find it
+    /// (it is not a light), only rays that reach it.
+    Unlit {
+        /// The outgoing radiance (linear RGB, may exceed 1).
+        color: Color,
+    },
 }
 
 /// A textured surface: Lambert with the colour `tint` times the `color` texture, plus,
@@ -173,7 +187,7 @@ impl Material {
             Material::Phong { diffuse, specular, exponent } => {
                 surface::phong(sp.color.unwrap_or(*diffuse), *specular, *exponent, sp.normal, wo, wi)
             }
-            Material::Mirror { .. } | Material::Glass { .. } => Color::ZERO,
+            Material::Mirror { .. } | Material::Glass { .. } | Material::Unlit { .. } => Color::ZERO,
             Material::Tube(t) => match sp.tangent {
                 Some(tangent) => t.response(sp.color, tangent, wo, wi),
                 // Tube shading on a surface: fall back to Lambert with the diffuse colour.
@@ -190,6 +204,17 @@ impl Material {
                 _ => surface::lambert(sp.color.unwrap_or(f.diffuse[0]), sp.normal, wi),
             },
             Material::Textured(t) => t.response(sp, wo, wi),
+        }
+    }
+
+    /// The radiance an unlit surface ([`Material::Unlit`]) sends towards every direction
+    /// at `sp`: its colour, or the geometry's colour there when it has one (as it replaces
+    /// every material's base colour). `None` for every other material, which reflects
+    /// light instead.
+    pub fn unlit_radiance(&self, sp: &ShadingPoint) -> Option<Color> {
+        match self {
+            Material::Unlit { color } => Some(sp.color.unwrap_or(*color)),
+            _ => None,
         }
     }
 

@@ -33,9 +33,11 @@ impl Scatter {
 
 impl Material {
     /// Draws the direction a path continues in after arriving along `-wo`; `None` when
-    /// the material scatters nothing there. Uses up to four sampler dimensions.
+    /// the material scatters nothing there (always for an unlit surface). Uses up to four
+    /// sampler dimensions.
     pub fn sample_scatter(&self, sp: &ShadingPoint, wo: Vec3, sampler: &mut PixelSampler) -> Option<Scatter> {
         match self {
+            Material::Unlit { .. } => None,
             Material::Mirror { .. } | Material::Glass { .. } => {
                 let rays = self.specular(sp, wo);
                 let lum = |c: Color| c.x + c.y + c.z;
@@ -80,10 +82,11 @@ impl Material {
     }
 
     /// The density with which [`Material::sample_scatter`] picks `wi` (0 for specular
-    /// materials, whose directions no other strategy finds).
+    /// materials, whose directions no other strategy finds, and for unlit ones, which
+    /// draw none).
     pub fn scatter_pdf(&self, sp: &ShadingPoint, wo: Vec3, wi: Vec3) -> f32 {
         match (self, sp.tangent) {
-            (Material::Mirror { .. } | Material::Glass { .. }, _) => 0.0,
+            (Material::Mirror { .. } | Material::Glass { .. } | Material::Unlit { .. }, _) => 0.0,
             (Material::Physical(h), Some(t)) => h.pdf(sp.color, t, sp.normal, wo, wi),
             (_, Some(_)) => 1.0 / (4.0 * PI),
             (_, None) => sp.normal.dot(wi).max(0.0) / PI,

@@ -391,6 +391,10 @@ pub(super) fn material(m: &MaterialToml, base: &Path) -> Result<MaterialSource, 
             check("color", &color, 0.0)?;
             Material::Mirror { color: color.into() }
         }
+        MaterialToml::Unlit { color } => {
+            check("color", &color, 0.0)?;
+            Material::Unlit { color: color.into() }
+        }
         MaterialToml::Glass { ior, color } => {
             check("color", &color, 0.0)?;
             if !(ior.is_finite() && ior >= 1.0) {

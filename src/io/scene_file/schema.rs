@@ -332,6 +332,11 @@ pub(super) enum MaterialToml {
         #[serde(default = "one3", deserialize_with = "exact")]
         color: V3,
     },
+    /// Its colour whatever the light (Arnold's `flat`).
+    Unlit {
+        #[serde(default = "one3", deserialize_with = "exact")]
+        color: V3,
+    },
     Glass {
         #[serde(default = "default_ior")]
         ior: f32,

@@ -245,6 +245,14 @@ fn every_material_has_defaults() {
     );
     assert_eq!(material("mirror"), Material::Mirror { color: Vec3::ONE });
     assert_eq!(material("glass"), Material::Glass { ior: Material::DEFAULT_IOR, color: Vec3::ONE });
+    assert_eq!(material("unlit"), Material::Unlit { color: Vec3::ONE });
+    // An unlit colour is a radiance: above 1 is kept, negative refused.
+    let unlit =
+        |c: &str| parse(&format!("[[hair]]\nfile = \"h.hair\"\nmaterial = {{ type = \"unlit\", color = {c} }}\n"));
+    let MaterialSource::Inline(m) = &unlit("[4.0, 0.5, 0.0]").unwrap().contents.hair[0].material else { panic!() };
+    assert_eq!(*m, Material::Unlit { color: Vec3::new(4.0, 0.5, 0.0) });
+    let Err(e) = unlit("[-1.0, 0.5, 0.0]") else { panic!("a negative unlit colour is accepted") };
+    assert!(e.to_string().contains("`color` must be finite and not negative"), "{e}");
     let Material::Physical(p) = material("physical") else { panic!("physical") };
     assert_eq!(*p.params(), HairParams::default());
     // A tube's ambient colour follows its diffuse colour unless given.
