@@ -114,6 +114,21 @@ impl TriangleMesh {
         Ok(())
     }
 
+    /// Smooth vertex normals: for each vertex, the area-weighted mean of the normals of the
+    /// triangles around the vertex of the source polygons it came from (`original[i]`, one
+    /// of `sources`), so vertices split at UV seams share one normal.
+    pub fn smooth_normals(&self, original: &[u32], sources: usize) -> Vec<Vec3> {
+        let mut sum = vec![Vec3::ZERO; sources];
+        for t in &self.indices {
+            let [a, b, c] = t.map(|i| self.positions[i as usize]);
+            let area_normal = (b - a).cross(c - a);
+            for &i in t {
+                sum[original[i as usize] as usize] += area_normal;
+            }
+        }
+        original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect()
+    }
+
     /// The box around the vertices placed by `m`.
     pub fn bounds_under(&self, m: &glam::Affine3A) -> crate::math::Aabb {
         (self.positions.iter()).fold(crate::math::Aabb::EMPTY, |b, p| b.grow(m.transform_point3(*p).into()))

@@ -4,6 +4,7 @@ pub mod curve;
 pub mod mesh;
 pub mod segment;
 pub mod strands;
+pub mod subdivision;
 pub mod triangle;
 
 pub use mesh::TriangleMesh;

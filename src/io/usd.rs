@@ -56,7 +56,7 @@ use openusd::sdf;
 use openusd::usd::{Prim, PrimPredicate, SchemaBase, SchemaKind, Stage, TimeCode};
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
-use values::{token, Res};
+use values::Res;
 
 /// Linear pieces per cubic segment (and per NURBS span).
 pub const PIECES_PER_SEGMENT: usize = 8;
@@ -81,10 +81,15 @@ const STRUCTURE: [&str; 15] = [
     "BlendShape",
 ];
 
-/// Warnings counted by kind: each kind is reported once, with how many prims it concerns
-/// and the first of them.
+/// What reading one file gathers as it goes: warnings counted by kind (each kind is
+/// reported once, with how many prims it concerns and the first of them), and the faces
+/// subdivision has made so far, which [`MAX_SUBDIVIDED_FACES_PER_FILE`] bounds.
 #[derive(Default)]
-pub struct Notes(BTreeMap<String, (usize, String)>);
+pub struct Notes(BTreeMap<String, (usize, String)>, pub usize);
+
+/// Faces the subdivision of all of a file's meshes may make together: a few lines of text
+/// asking for many iterations on many meshes must not exhaust memory.
+pub const MAX_SUBDIVIDED_FACES_PER_FILE: usize = 8_000_000;
 
 impl Notes {
     /// Counts one prim under `what`.
@@ -421,16 +426,13 @@ fn read_drawable(
             contents.hair.push(HairEntry { visibility, ..entry });
         }
         "Mesh" => {
-            let mesh = match shapes::read_mesh(prim, time, skin) {
+            let mesh = match shapes::read_mesh(prim, time, skin, notes) {
                 Ok(mesh) => mesh,
                 Err(e) => {
                     skip(notes, prim, e);
                     return Ok(());
                 }
             };
-            if token(values::value(prim, "subdivisionScheme", time)?, "catmullClark") != "none" {
-                notes.note("subdivision surfaces: drawn as their control cage".into(), prim);
-            }
             push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform, visibility);
         }
         "Points" => {

@@ -2226,15 +2226,7 @@ fn polygon_mesh(
         mesh.uvs = Some(uv_out);
     }
     if smooth {
-        let mut sum = vec![Vec3::ZERO; positions.len()];
-        for t in &mesh.indices {
-            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
-            let area_normal = (b - a).cross(c - a);
-            for &i in t {
-                sum[original[i as usize] as usize] += area_normal;
-            }
-        }
-        mesh.normals = Some(original.iter().map(|&o| sum[o as usize].normalize_or(Vec3::Y)).collect());
+        mesh.normals = Some(mesh.smooth_normals(&original, positions.len()));
     }
     (mesh, face_of)
 }

@@ -4,8 +4,12 @@
 //! curves.
 
 use super::skel::Skinning;
-use super::values::{boolean, interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res};
-use super::Notes;
+use super::values::{
+    boolean, floats, interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res,
+};
+use super::visibility::{inherited, integer};
+use super::{Notes, MAX_SUBDIVIDED_FACES_PER_FILE};
+use crate::geometry::subdivision::PolygonMesh;
 use crate::geometry::TriangleMesh;
 use crate::io::arnold_hair::{ArnoldShader, Param, StandardHair};
 use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
@@ -21,11 +25,11 @@ pub const GPRIMS: [&str; 5] = ["Sphere", "Cube", "Cylinder", "Cone", "Capsule"];
 /// Facets around a gprim's axis.
 const AROUND: usize = 32;
 
-/// A `Mesh` prim: `points`, `faceVertexCounts`, `faceVertexIndices` (polygons as fans),
-/// vertex `normals` and `primvars:st` (vertex or face-varying, indexed or not).
-/// Subdivision surfaces are their control cage. With `skin`, points and vertex normals
-/// are skinned first.
-pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>) -> Res<TriangleMesh> {
+/// A `Mesh` prim: `points`, `faceVertexCounts`, `faceVertexIndices` (polygons as fans;
+/// faces of fewer than three vertices draw nothing), vertex `normals` and `primvars:st`
+/// (vertex or face-varying, indexed or not). With `skin`, points and vertex normals are
+/// skinned first. Subdivided as Arnold subdivides it (`primvars:arnold:subdiv_iterations`, ...).
+pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut Notes) -> Res<TriangleMesh> {
     let mut positions = vec3s(value(prim, "points", time)?, "points")?.unwrap_or_default();
     if let Some(skin) = skin {
         skin.points(&mut positions)?;
@@ -65,48 +69,181 @@ pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>) -> Res<Tr
     interpolation(&st_attr, Interpolation::Vertex)?;
     let face_varying = matches!(st_attr.get_metadata::<sdf::Value>("interpolation")?, Some(sdf::Value::Token(t)) if t.as_str() == "faceVarying");
     // The UV of corner `k` (running over all faces) of point `p`.
-    let uv_of = |k: usize, p: usize| -> Res<Option<[f32; 2]>> {
-        let Some(st) = &st else { return Ok(None) };
+    let uv_of = |k: usize, p: usize| -> Res<[f32; 2]> {
+        let Some(st) = &st else { return Ok([0.0; 2]) };
         let slot = if face_varying { k } else { p };
         let slot = match &st_indices {
             Some(ix) => *ix.get(slot).ok_or_else(|| anyhow::anyhow!("`primvars:st:indices` is too short"))? as usize,
             None => slot,
         };
-        Ok(Some(*st.get(slot).ok_or_else(|| anyhow::anyhow!("`primvars:st` has no value {slot}"))?))
+        Ok(*st.get(slot).ok_or_else(|| anyhow::anyhow!("`primvars:st` has no value {slot}"))?)
     };
-    let mut mesh = TriangleMesh::default();
-    let (mut uvs, mut out_normals) = (Vec::new(), Vec::new());
-    let mut corners: std::collections::HashMap<(u32, [u32; 2]), u32> = std::collections::HashMap::new();
+    let mut polygons = PolygonMesh { positions, ..Default::default() };
+    let mut uvs = Vec::new();
     let mut k = 0usize;
     for &c in &counts {
-        let mut ids = Vec::with_capacity(c as usize);
-        for _ in 0..c {
-            let p = indices[k] as usize;
-            let uv = uv_of(k, p)?;
-            let key = (p as u32, uv.map_or([u32::MAX; 2], |u| u.map(f32::to_bits)));
-            let id = *corners.entry(key).or_insert_with(|| {
-                mesh.positions.push(positions[p]);
-                uvs.push(uv.unwrap_or([0.0; 2]));
-                if let Some(ns) = &normals {
-                    out_normals.push(ns[p]);
+        if c >= 3 {
+            polygons.counts.push(c as u32);
+            for (j, &p) in indices.iter().enumerate().skip(k).take(c as usize) {
+                polygons.indices.push(p as u32);
+                if st.is_some() {
+                    uvs.push(uv_of(j, p as usize)?);
                 }
-                (mesh.positions.len() - 1) as u32
-            });
-            ids.push(id);
-            k += 1;
+            }
         }
-        for j in 1..ids.len().saturating_sub(1) {
-            mesh.indices.push([ids[0], ids[j], ids[j + 1]]);
-        }
+        k += c as usize;
     }
     if st.is_some() {
-        mesh.uvs = Some(uvs);
+        polygons.uvs = Some(uvs);
     }
-    if normals.is_some() {
-        mesh.normals = Some(out_normals);
-    }
+    let mesh = match subdivision(prim, time, notes)? {
+        Some(iterations) => {
+            (polygons.creases, polygons.corners) = creases(prim, time, n)?;
+            let left = MAX_SUBDIVIDED_FACES_PER_FILE.saturating_sub(notes.1);
+            let (refined, done) = polygons.subdivide(iterations, MAX_SUBDIVIDED_FACES.min(left));
+            if done.iterations < done.asked {
+                notes.note(
+                    format!(
+                        "subdivision stopped before an iteration past {MAX_SUBDIVIDED_FACES} faces per mesh or {MAX_SUBDIVIDED_FACES_PER_FILE} per file"
+                    ),
+                    prim,
+                );
+            }
+            if done.iterations > 0 {
+                notes.1 += refined.counts.len();
+            }
+            refined.triangulate(true).0
+        }
+        None => {
+            let (mut mesh, original) = polygons.triangulate(false);
+            if let Some(ns) = &normals {
+                mesh.normals = Some(original.iter().map(|&o| ns[o as usize]).collect());
+            }
+            mesh
+        }
+    };
     mesh.validate().map_err(|e| anyhow::anyhow!("{e}"))?;
     Ok(mesh)
+}
+
+/// Faces a subdivided mesh may have: iterations past it are not applied (Arnold applies
+/// `subdiv_iterations` uniformly, 4 times the faces per iteration).
+const MAX_SUBDIVIDED_FACES: usize = 2_000_000;
+
+/// The Catmull-Clark iterations Arnold applies to a `Mesh` prim, as Arnold-USD's reader
+/// decides them (`ReadMesh` in its `read_geometry.cpp`): `primvars:arnold:subdiv_iterations`
+/// (on the prim or inherited as a constant primvar; 0, no subdivision, when not authored),
+/// of the type `primvars:arnold:subdiv_type` (`catclark` or 1, `linear` or 2, `none` or 0)
+/// or else the prim's `subdivisionScheme` (`catmullClark`, the fallback; `bilinear`;
+/// `none`). `None`: drawn as authored. Linear subdivision keeps flat faces as they are and
+/// is drawn as authored. A mesh whose scheme asks for subdivision that Arnold does not
+/// apply is counted in a note: other renderers draw it smooth.
+fn subdivision(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<u32>> {
+    let scheme = token(value(prim, "subdivisionScheme", time)?, "catmullClark");
+    let iterations = match inherited(prim, "primvars:arnold:subdiv_iterations", time)? {
+        None => 0,
+        Some(v) => match integer(&v) {
+            Some(i) if (0..=255).contains(&i) => i as u32,
+            other => {
+                let shown = other.map_or_else(|| short(&v), |i| i.to_string());
+                notes.note_why(
+                    "`primvars:arnold:subdiv_iterations` that are not 0 to 255: not subdivided".into(),
+                    prim,
+                    &shown,
+                );
+                return Ok(None);
+            }
+        },
+    };
+    if iterations == 0 {
+        if scheme != "none" {
+            notes.note(
+                "subdivision surfaces without `primvars:arnold:subdiv_iterations`: drawn as their control cage, as Arnold draws them"
+                    .into(),
+                prim,
+            );
+        }
+        return Ok(None);
+    }
+    let kind = match inherited(prim, "primvars:arnold:subdiv_type", time)? {
+        Some(sdf::Value::String(s)) => s,
+        Some(sdf::Value::Token(t)) => t.as_str().to_string(),
+        Some(v) => match integer(&v) {
+            Some(0) => "none".into(),
+            Some(1) => "catclark".into(),
+            Some(2) => "linear".into(),
+            _ => short(&v),
+        },
+        None => match scheme.as_str() {
+            "catmullClark" => "catclark".into(),
+            "bilinear" => "linear".into(),
+            other => other.into(),
+        },
+    };
+    match kind.as_str() {
+        "catclark" => Ok(Some(iterations)),
+        "none" | "linear" => Ok(None),
+        other => {
+            notes.note(format!("subdivision `{other}`: not applied, drawn as the control cage"), prim);
+            Ok(None)
+        }
+    }
+}
+
+/// The creases and corners of a mesh of `points` points: `creaseIndices` in runs of
+/// `creaseLengths` vertices, `creaseSharpnesses` one per run or one per edge of the runs,
+/// `cornerIndices` with one `cornerSharpnesses` each (`UsdGeomMesh`).
+#[allow(clippy::type_complexity)]
+fn creases(prim: &Prim, time: TimeCode, points: usize) -> Res<(Vec<([u32; 2], f32)>, Vec<(u32, f32)>)> {
+    let list = |name: &str| -> Res<Vec<i64>> { Ok(ints(value(prim, name, time)?, name)?.unwrap_or_default()) };
+    let sharpness = |name: &str| -> Res<Vec<f32>> {
+        let s = floats(value(prim, name, time)?, name)?.unwrap_or_default();
+        anyhow::ensure!(s.iter().all(|x| x.is_finite()), "`{name}` must be finite");
+        Ok(s)
+    };
+    let vertex = |i: i64, name: &str| -> Res<u32> {
+        anyhow::ensure!(i >= 0 && (i as usize) < points, "`{name}` uses point {i} of {points}");
+        Ok(i as u32)
+    };
+    let (indices, lengths, sharp) = (list("creaseIndices")?, list("creaseLengths")?, sharpness("creaseSharpnesses")?);
+    anyhow::ensure!(lengths.iter().all(|&l| l >= 0), "`creaseLengths` has a negative length");
+    let total: i64 = lengths.iter().sum();
+    anyhow::ensure!(
+        total as usize == indices.len(),
+        "`creaseLengths` sum to {total} but there are {} `creaseIndices`",
+        indices.len()
+    );
+    let edges: i64 = lengths.iter().map(|&l| (l - 1).max(0)).sum();
+    let per_edge = sharp.len() as i64 == edges && sharp.len() != lengths.len();
+    anyhow::ensure!(
+        sharp.len() == lengths.len() || per_edge,
+        "{} `creaseSharpnesses` for {} creases of {edges} edges",
+        sharp.len(),
+        lengths.len()
+    );
+    let mut creases = Vec::new();
+    let (mut at, mut edge) = (0usize, 0usize);
+    for (c, &l) in lengths.iter().enumerate() {
+        for j in at..(at + l as usize).saturating_sub(1) {
+            let e = [vertex(indices[j], "creaseIndices")?, vertex(indices[j + 1], "creaseIndices")?];
+            creases.push((e, if per_edge { sharp[edge] } else { sharp[c] }));
+            edge += 1;
+        }
+        at += l as usize;
+    }
+    let (corner_indices, corner_sharp) = (list("cornerIndices")?, sharpness("cornerSharpnesses")?);
+    anyhow::ensure!(
+        corner_indices.len() == corner_sharp.len(),
+        "{} `cornerSharpnesses` for {} `cornerIndices`",
+        corner_sharp.len(),
+        corner_indices.len()
+    );
+    let corners = corner_indices
+        .iter()
+        .zip(corner_sharp)
+        .map(|(&i, s)| Ok((vertex(i, "cornerIndices")?, s)))
+        .collect::<Res<_>>()?;
+    Ok((creases, corners))
 }
 
 /// A gprim of `kind` as a triangle mesh with the schema's attributes and fallbacks

@@ -1672,3 +1672,128 @@ fn curves_sampled_beyond_single_precision_are_skipped_naming_the_prim() {
     let w = s.warnings.iter().find(|w| w.contains("inconsistent: skipped")).expect("a warning");
     assert!(w.contains("/Over") && w.contains("single precision"), "{w}");
 }
+
+/// A unit cube `Mesh` prim under an Xform `Parent` whose extra attributes are
+/// `parent_attrs`, with `mesh_attrs` on the mesh.
+fn cube_stage(parent_attrs: &str, mesh_attrs: &str) -> String {
+    format!(
+        r#"def Xform "Parent" {{
+        {parent_attrs}
+        def Mesh "Cube" {{
+            int[] faceVertexCounts = [4, 4, 4, 4, 4, 4]
+            int[] faceVertexIndices = [0, 1, 3, 2, 2, 3, 5, 4, 4, 5, 7, 6, 6, 7, 1, 0, 1, 7, 5, 3, 6, 0, 2, 4]
+            point3f[] points = [(-0.5, -0.5, 0.5), (0.5, -0.5, 0.5), (-0.5, 0.5, 0.5), (0.5, 0.5, 0.5), (-0.5, 0.5, -0.5), (0.5, 0.5, -0.5), (-0.5, -0.5, -0.5), (0.5, -0.5, -0.5)]
+            {mesh_attrs}
+        }}
+    }}"#
+    )
+}
+
+#[test]
+fn meshes_are_subdivided_as_arnold_subdivides_them() {
+    let mesh = |s: &Imported| match &s.contents.meshes[0].source {
+        MeshSource::Inline(m) => m.clone(),
+        other => panic!("{other:?}"),
+    };
+    // Without Arnold's iterations: the cage, faceted, said once (Arnold draws it so).
+    let cage = read_body(&cube_stage("", ""));
+    assert_eq!(mesh(&cage).indices.len(), 12);
+    assert!(mesh(&cage).normals.is_none());
+    assert!(
+        cage.warnings.iter().any(|w| w.contains("without `primvars:arnold:subdiv_iterations`")),
+        "{:?}",
+        cage.warnings
+    );
+    // Two iterations inherited from the parent (a constant primvar), the type by the
+    // fallback scheme `catmullClark`: 6 × 4² quads, smooth normals, every corner pulled in
+    // to the 5/18-per-axis point after the first iteration and further after the second.
+    let iterations = "int primvars:arnold:subdiv_iterations = 2 (interpolation = \"constant\")";
+    let smooth = read_body(&cube_stage(iterations, ""));
+    let m = mesh(&smooth);
+    assert_eq!(m.indices.len(), 2 * 6 * 16);
+    assert!(m.normals.is_some());
+    let extent = m.positions.iter().fold(0.0f32, |e, p| e.max(p.abs().max_element()));
+    assert!(extent < 0.5 && extent > 0.4, "{extent}");
+    let corner = m.positions.iter().map(|p| p.x + p.y + p.z).fold(f32::MIN, f32::max);
+    assert!(corner < 3.0 * 5.0 / 18.0, "{corner}");
+    assert!(smooth.warnings.iter().all(|w| !w.contains("subdiv")), "{:?}", smooth.warnings);
+    // `subdiv_type` wins over the scheme: `linear` (or 2) and `none` (or 0) draw the cage,
+    // and so does the scheme `none` or `bilinear` without a type.
+    for attrs in [
+        "string primvars:arnold:subdiv_type = \"linear\"",
+        "int primvars:arnold:subdiv_type = 0",
+        "uniform token subdivisionScheme = \"bilinear\"",
+    ] {
+        let s = read_body(&cube_stage(iterations, attrs));
+        assert_eq!(mesh(&s).indices.len(), 12, "{attrs}");
+    }
+    let typed = read_body(&cube_stage(
+        iterations,
+        "int primvars:arnold:subdiv_type = 1\nuniform token subdivisionScheme = \"none\"",
+    ));
+    assert_eq!(mesh(&typed).indices.len(), 2 * 6 * 16);
+    // Infinitely sharp creases on every edge around the top face keep it flat at y = 0.5.
+    let creased = read_body(&cube_stage(
+        iterations,
+        "int[] creaseIndices = [2, 3, 5, 4, 2]\nint[] creaseLengths = [5]\nfloat[] creaseSharpnesses = [10]",
+    ));
+    let top = mesh(&creased).positions.iter().filter(|p| (p.y - 0.5).abs() < 1e-6).count();
+    assert!(top >= 5 * 5, "{top} points on the top face");
+    assert!(mesh(&smooth).positions.iter().all(|p| p.y < 0.5 - 1e-3));
+}
+
+#[test]
+fn bad_subdivision_attributes_are_named() {
+    let iterations = "int primvars:arnold:subdiv_iterations = 1";
+    for (attrs, message) in [
+        (
+            "int[] creaseIndices = [2, 3]\nint[] creaseLengths = [3]\nfloat[] creaseSharpnesses = [10]",
+            "`creaseLengths` sum to 3",
+        ),
+        (
+            "int[] creaseIndices = [2, 9]\nint[] creaseLengths = [2]\nfloat[] creaseSharpnesses = [10]",
+            "`creaseIndices` uses point 9 of 8",
+        ),
+        (
+            "int[] creaseIndices = [2, 3]\nint[] creaseLengths = [2]\nfloat[] creaseSharpnesses = [1, 2, 3]",
+            "3 `creaseSharpnesses` for 1 creases",
+        ),
+        (
+            "int[] cornerIndices = [1, 2]\nfloat[] cornerSharpnesses = [1]",
+            "1 `cornerSharpnesses` for 2 `cornerIndices`",
+        ),
+        ("int[] cornerIndices = [1]\nfloat[] cornerSharpnesses = [1e39]", "`cornerSharpnesses` must be finite"),
+    ] {
+        let s = read_body(&cube_stage("", &format!("{iterations}\n{attrs}")));
+        assert!(s.contents.meshes.is_empty(), "{attrs}");
+        assert!(
+            s.warnings.iter().any(|w| w.contains(message) && w.contains("/Parent/Cube")),
+            "{attrs}: {:?}",
+            s.warnings
+        );
+    }
+    // Iterations Arnold's byte cannot hold: not subdivided, said with the value.
+    let s = read_body(&cube_stage("", "int primvars:arnold:subdiv_iterations = 300"));
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    assert_eq!(m.indices.len(), 12);
+    assert!(s.warnings.iter().any(|w| w.contains("not 0 to 255") && w.contains("300")), "{:?}", s.warnings);
+    // Arnold's largest count stops at the face budget, said once: 6 × 4⁹ quads, as the
+    // tenth iteration would make 6 × 4¹⁰, past 2,000,000.
+    let s = read_body(&cube_stage("", "int primvars:arnold:subdiv_iterations = 255"));
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    assert_eq!(m.indices.len(), 2 * 6 * 4usize.pow(9));
+    assert!(s.warnings.iter().any(|w| w.contains("subdivision stopped")), "{:?}", s.warnings);
+    // A file's meshes share one budget: with 100 faces of it left, a cube gets two
+    // iterations (6 -> 24 -> 96), not 255.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cube.usda");
+    std::fs::write(&path, format!("#usda 1.0\n{}", cube_stage("", "int primvars:arnold:subdiv_iterations = 255")))
+        .unwrap();
+    let stage = Stage::open(path.to_str().unwrap()).unwrap();
+    let prim = stage.prim(sdf::path("/Parent/Cube").unwrap());
+    let mut notes = Notes(Default::default(), MAX_SUBDIVIDED_FACES_PER_FILE - 100);
+    let m = shapes::read_mesh(&prim, TimeCode::new(0.0), None, &mut notes).unwrap();
+    assert_eq!(m.indices.len(), 2 * 96);
+    assert_eq!(notes.1, MAX_SUBDIVIDED_FACES_PER_FILE - 4);
+    assert!(notes.lines().iter().any(|w| w.contains("per file")));
+}

@@ -115,7 +115,7 @@ pub fn read(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Visibi
 
 /// The value of the primvar `name` on `prim`, else on its nearest ancestor that authors
 /// it with constant interpolation (the only kind that inherits).
-fn inherited(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<sdf::Value>> {
+pub(super) fn inherited(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<sdf::Value>> {
     // Integer samples are held, not blended (a byte between 0 and 255 is no mask).
     if let Some(v) = held_value(&prim.attribute(name), time)? {
         return Ok(Some(v));
@@ -144,7 +144,7 @@ fn flag(v: &sdf::Value) -> Option<bool> {
 }
 
 /// An integer value of any width.
-fn integer(v: &sdf::Value) -> Option<i128> {
+pub(super) fn integer(v: &sdf::Value) -> Option<i128> {
     match *v {
         sdf::Value::Uchar(x) => Some(x.into()),
         sdf::Value::Int(x) => Some(x.into()),
