@@ -7,8 +7,9 @@
 //! - **mesh**: vertices (`.vt`, plus tweaks `.pt`), edges (`.ed`), faces (`.fc`, as edge
 //!   loops) and UV set 0 (`.uvst[0].uvsp`, per face corner), triangulated as fans and
 //!   placed by its DAG transforms (translate, rotate with its order, scale, pivots, rotate
-//!   axis). A mesh built by a `polySphere`, `polyPlane`, `polyTorus` or `polyCube` node is
-//!   rebuilt from that node's attributes (spheres and cubes with Maya's vertex numbers, so
+//!   axis). A mesh built by a `polySphere`, `polyPlane`, `polyTorus`, `polyCube` or
+//!   `polyCylinder` node is rebuilt from that node's attributes (spheres, cubes and
+//!   cylinders with Maya's vertex numbers, so
 //!   point tweaks land where Maya puts them), through the `transformGeometry` nodes on the
 //!   way (their matrix applied) and the `deleteComponent` ones (their faces removed).
 //!   Colour: the `lambert`/`blinn`/`phong` of its shading
@@ -94,7 +95,7 @@ use std::f32::consts::PI;
 use std::path::Path;
 
 /// The primitive nodes a mesh's geometry is rebuilt from (`Reader::procedural`).
-const PROCEDURAL_MESHES: &[&str] = &["polySphere", "polyPlane", "polyTorus", "polyCube"];
+const PROCEDURAL_MESHES: &[&str] = &["polySphere", "polyPlane", "polyTorus", "polyCube", "polyCylinder"];
 /// The attributes a deformed shape's geometry flows in through, from the shape it starts
 /// from to the deformed one: a shape's `inMesh` and `create`, a deformer's
 /// `input[i].inputGeometry`, `groupParts.inputGeometry`.
@@ -158,7 +159,7 @@ type Res<T> = Result<T, (u32, String)>;
 
 /// The DAG and shading node types read here, and Maya's bookkeeping nodes that need no
 /// reading; anything else is reported once.
-const KNOWN: [&str; 63] = [
+const KNOWN: [&str; 64] = [
     "transform",
     "animCurveTL",
     "animCurveTA",
@@ -193,6 +194,7 @@ const KNOWN: [&str; 63] = [
     "polyPlane",
     "polyTorus",
     "polyCube",
+    "polyCylinder",
     "transformGeometry",
     "deleteComponent",
     "makeNurbCircle",
@@ -734,6 +736,29 @@ impl<'g> Reader<'g> {
                 let mut cube = Built::Poly(poly_cube(size, divisions, with_uvs));
                 cube.transform(&primitive_axis(g, src)?);
                 Some(cube)
+            }
+            "polyCylinder" => {
+                let sa = scalar(g, src, &["sa", "subdivisionsAxis"], 20.0)?.clamp(3.0, 1000.0) as u32;
+                let sh = scalar(g, src, &["sh", "subdivisionsHeight"], 1.0)?.clamp(1.0, 1000.0) as u32;
+                let sc = scalar(g, src, &["sc", "subdivisionsCaps"], 0.0)?.clamp(0.0, 1000.0) as u32;
+                let radius = check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?;
+                let height = check(scalar(g, src, &["h", "height"], 2.0)?, "height")?;
+                let with_uvs = scalar(g, src, &["cuv", "createUVs"], 3.0)? != 0.0;
+                let cylinder = poly_cylinder(radius, height, [sa, sh, sc.min(1)], with_uvs);
+                let mut built = match sc {
+                    0 | 1 => Built::Poly(cylinder),
+                    // Caps of more rings have the same shape; their numbering is not known
+                    // here, so they are drawn as triangles no tweak or deletion refers to.
+                    _ => {
+                        let (mesh, _) = polygon_mesh(&cylinder.positions, &cylinder.uvs, &cylinder.polygons, true);
+                        // Ptex faces: the side's quads, each cap's inner triangles (3 each)
+                        // and its rings of quads.
+                        let faces = Faces::Count(sa * sh + 2 * (3 * sa + (sc - 1) * sa));
+                        Built::Tri(Primitive { mesh, faces, maya_ids: None })
+                    }
+                };
+                built.transform(&primitive_axis(g, src)?);
+                Some(built)
             }
             "polyTorus" => {
                 let (sa, sh) =
@@ -1882,6 +1907,87 @@ fn poly_cube(size: Vec3, divisions: [u32; 3], with_uvs: bool) -> PolyMesh {
         }
     }
     PolyMesh { positions, uvs, polygons, smooth: false }
+}
+
+/// Maya's `polyCylinder` of `radius` and `height` (along Y, centred on the origin) with
+/// `[sa, sh, sc]` subdivisions around, along and on the caps (`sc` 0: each cap one
+/// polygon; 1: a fan of triangles), numbered as in the cylinders Maya stores (the MtoA
+/// suite's, of 20 sides, 1 and 10 rows, `sc` 1):
+///
+/// - **vertices**: `sh + 1` rings of `sa` from the bottom up, vertex `j` of a ring at the
+///   azimuth `360° (j + 1) / sa` turning from +X towards −Z (as `polySphere`'s); then the
+///   bottom cap's centre and the top's (`sc` 1).
+/// - **faces**: the side's quads row by row from the bottom, then the bottom cap's, then
+///   the top's (a triangle per side each, `sc` 1), all wound to face outwards.
+/// - **UVs** (when `with_uvs`): the bottom cap on a circle of radius 0.15625 about
+///   (0.5, 0.15625), the side a grid of `sa + 1` columns (the seam repeated) from u 0.375
+///   to 0.625 and v 0.3125 to 0.68844, the top cap on the circle about (0.5, 0.84375)
+///   mirrored, then the caps' centres at (0.5, 0.15) and (0.5, 0.8375), as stored.
+///
+/// Smooth shaded: most of Maya's cylinder edges are soft (all but the rims).
+fn poly_cylinder(radius: f32, height: f32, [sa, sh, sc]: [u32; 3], with_uvs: bool) -> PolyMesh {
+    use std::f32::consts::TAU;
+    let angle = |j: u32| TAU * (j % sa + 1) as f32 / sa as f32;
+    let mut positions = Vec::new();
+    for i in 0..=sh {
+        let y = -height / 2.0 + height * i as f32 / sh as f32;
+        positions.extend((0..sa).map(|j| Vec3::new(radius * angle(j).cos(), y, -radius * angle(j).sin())));
+    }
+    let ring = |i: u32, j: u32| i * sa + j % sa;
+    let (bottom, top) = (positions.len() as u32, positions.len() as u32 + 1);
+    if sc > 0 {
+        positions.extend([Vec3::new(0.0, -height / 2.0, 0.0), Vec3::new(0.0, height / 2.0, 0.0)]);
+    }
+    // UVs: the bottom circle (0..sa), the side grid, the top circle, the centres.
+    const R: f32 = 0.15625;
+    let circle = |v0: f32, k: u32| [0.5 + R * angle(k).cos(), v0 - R * angle(k).sin()];
+    let mut uvs: Vec<[f32; 2]> = (0..sa).map(|k| circle(R, k)).collect();
+    let grid = uvs.len() as u32;
+    for i in 0..=sh {
+        let v = 0.3125 + 0.37593985 * i as f32 / sh as f32;
+        uvs.extend((0..=sa).map(|j| [0.375 + 0.25 * j as f32 / sa as f32, v]));
+    }
+    let upper = uvs.len() as u32;
+    uvs.extend((0..sa).map(|k| circle(1.0 - R, k)));
+    let centres = uvs.len() as u32;
+    uvs.extend([[0.5, 0.15], [0.5, 0.8375]]);
+    let side_uv = |i: u32, j: u32| (grid + i * (sa + 1) + j) as i64;
+    // The top circle is mirrored: vertex j of the top ring at its UV sa − 2 − j.
+    let top_uv = |j: u32| (upper + (2 * sa - 2 - j) % sa) as i64;
+    let mut polygons: Vec<Polygon> = Vec::new();
+    for i in 0..sh {
+        for j in 0..sa {
+            polygons.push((
+                vec![ring(i, j), ring(i, j + 1), ring(i + 1, j + 1), ring(i + 1, j)],
+                Some(vec![side_uv(i, j), side_uv(i, j + 1), side_uv(i + 1, j + 1), side_uv(i + 1, j)]),
+            ));
+        }
+    }
+    let bottom_uv = |j: u32| (j % sa) as i64;
+    if sc == 0 {
+        polygons.push(((0..sa).rev().map(|j| ring(0, j)).collect(), Some((0..sa).rev().map(bottom_uv).collect())));
+        polygons.push(((0..sa).map(|j| ring(sh, j)).collect(), Some((0..sa).map(top_uv).collect())));
+    } else {
+        for j in 0..sa {
+            polygons.push((
+                vec![ring(0, j + 1), ring(0, j), bottom],
+                Some(vec![bottom_uv(j + 1), bottom_uv(j), centres as i64]),
+            ));
+        }
+        for j in 0..sa {
+            polygons.push((
+                vec![ring(sh, j), ring(sh, j + 1), top],
+                Some(vec![top_uv(j), top_uv(j + 1), centres as i64 + 1]),
+            ));
+        }
+    }
+    if !with_uvs {
+        uvs.clear();
+        for p in &mut polygons {
+            p.1 = None;
+        }
+    }
+    PolyMesh { positions, uvs, polygons, smooth: true }
 }
 
 /// The matrix a `transformGeometry` node applies to the geometry passing through it: its

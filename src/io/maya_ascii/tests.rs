@@ -112,8 +112,8 @@ createNode nurbsCurve -n "ctrlShape" -p "ctrl";
 		5
 		1 0 0 0 0 1 -1 0 0 0 0 -1 1 0 0
 		;
-createNode polyCylinder -n "polyCylinder1";
-createNode polyCylinder -n "polyCylinder2";
+createNode polyCone -n "polyCone1";
+createNode polyCone -n "polyCone2";
 select -ne :defaultResolution;
 	setAttr ".w" 320;
 	setAttr ".h" 240;
@@ -196,7 +196,7 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     assert_eq!((d.segments, d.light_model), (n.segments, n.light_model));
     assert_eq!(d[ColorAttr::TipColor], n[ColorAttr::TipColor]);
 
-    // Camera, light, resolution; the control circle is not hair; polyCylinder is reported once.
+    // Camera, light, resolution; the control circle is not hair; polyCone is reported once.
     let c = s.camera.as_ref().unwrap();
     assert!(close(c.eye, Vec3::new(0.0, 3.0, 10.0)) && close(c.target, Vec3::new(0.0, 3.0, 0.0)));
     // Horizontal fit: 2 atan(1.41732 × 25.4 / 2 / 50 / (320 / 240)).
@@ -209,7 +209,7 @@ fn a_scene_with_mesh_hair_system_and_fur_imports_with_its_counts_and_values() {
     assert!(close(direction, Vec3::Y), "{direction}");
     assert!(close(irradiance, Vec3::splat(2.0 * PI)));
     assert!(s.contents.hair.is_empty());
-    assert!(s.warnings.iter().any(|w| w.contains("polyCylinder (2)")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("polyCone (2)")), "{:?}", s.warnings);
     assert!(s.warnings.iter().any(|w| w.contains("1 closed")), "{:?}", s.warnings);
 }
 
@@ -1804,9 +1804,9 @@ fn transform_geometry_moves_the_geometry_flowing_through_it() {
     let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
     assert!(m.positions.iter().any(|&q| close(q, Vec3::new(0.25, -0.75, 0.25))), "{:?}", m.positions);
     // Through it from history tress cannot build, the warning names where the history starts.
-    let s = read(&scene("").replace("polyCube", "polyCylinder")).unwrap();
+    let s = read(&scene("").replace("polyCube", "polyCone")).unwrap();
     assert!(s.contents.meshes.is_empty());
-    assert!(s.warnings.iter().any(|w| w.contains("mesh cs is built by a `polyCylinder` node")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("mesh cs is built by a `polyCone` node")), "{:?}", s.warnings);
     // A matrix of the wrong size, or not affine, is an error naming the node and its line.
     for bad in ["2 0 0 0 0 2 0 0 0 0 2 0 0 1 0", "2 0 0 0 0 2 0 0 0 0 2 0 0 1 0 2"] {
         let text = scene("").replace("2 0 0 0 0 2 0 0 0 0 2 0 0 1 0 1", bad);
@@ -1912,4 +1912,71 @@ fn delete_component_removes_faces_by_mayas_numbers() {
     }
     let e = read(&scene("1 \"f[0]\"", None).replace("-type \"componentList\" 1 \"f[0]\"", "3")).unwrap_err();
     assert!(e.to_string().contains("component list"), "{e}");
+}
+
+#[test]
+fn poly_cylinders_have_mayas_vertex_numbers_face_order_and_uvs() {
+    // Maya's default cylinder (radius 1, height 2, 20 sides, one row) with caps of
+    // triangles (`sc` 1): 20 × 2 ring vertices, vertex j at the azimuth 18° (j + 1) from +X
+    // towards −Z, then the bottom and the top centre (40, 41). Vertex 0 tweaked 1 out
+    // along X, the top centre 1 up.
+    let scene = |attrs: &str| {
+        format!(
+            "createNode transform -n c;\ncreateNode mesh -n cs -p c;\n\
+             \tsetAttr \".pt[0]\" -type \"float3\" 1 0 0;\n\tsetAttr \".pt[41].py\" 1;\n\
+             createNode polyCylinder -n pc;\n{attrs}connectAttr \"pc.out\" \"cs.i\";\n"
+        )
+    };
+    let s = read(&scene("\tsetAttr \".sc\" 1;\n")).unwrap();
+    assert!(s.warnings.iter().all(|w| !w.contains("polyCylinder") && !w.contains("tweak")), "{:?}", s.warnings);
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    // 20 side quads, 20 + 20 cap triangles.
+    assert_eq!(m.indices.len(), 80);
+    let a = 18f32.to_radians();
+    let v0 = Vec3::new(a.cos() + 1.0, -1.0, -a.sin());
+    let v1 = Vec3::new((2.0 * a).cos(), -1.0, -(2.0 * a).sin());
+    let (v20, v21) = (Vec3::new(a.cos(), 1.0, -a.sin()), Vec3::new((2.0 * a).cos(), 1.0, -(2.0 * a).sin()));
+    // Face 0: vertices 0, 1, 21, 20 (UVs 20, 21, 42, 41 of the side grid).
+    let tri = |t: usize| m.indices[t].map(|i| m.positions[i as usize]);
+    assert!(close(tri(0)[0], v0) && close(tri(0)[1], v1) && close(tri(0)[2], v21), "{:?}", tri(0));
+    assert!(close(tri(1)[2], v20), "{:?}", tri(1));
+    let uv = |t: usize, k: usize| m.uvs.as_ref().unwrap()[m.indices[t][k] as usize];
+    assert_eq!(uv(0, 0), [0.375, 0.3125]);
+    assert!((uv(0, 2)[0] - 0.3875).abs() < 1e-6 && (uv(0, 2)[1] - 0.68843985).abs() < 1e-6);
+    // Face 20, the first of the bottom cap: vertices 1, 0 and the centre; face 40, the
+    // first of the top: 20, 21 and the (tweaked) centre, UV (0.5, 0.8375).
+    let want20 = [v1, v0, Vec3::new(0.0, -1.0, 0.0)];
+    let want40 = [v20, v21, Vec3::new(0.0, 2.0, 0.0)];
+    assert!(
+        (0..3).all(|k| close(tri(40)[k], want20[k]) && close(tri(60)[k], want40[k])),
+        "{:?} {:?}",
+        tri(40),
+        tri(60)
+    );
+    assert_eq!(uv(60, 2), [0.5, 0.8375]);
+    // The bottom cap's UV circle: vertex 0 at (0.5 + 0.15625 cos 18°, 0.15625 − 0.15625 sin 18°).
+    assert!((uv(40, 1)[0] - (0.5 + 0.15625 * a.cos())).abs() < 1e-6);
+    assert!((uv(40, 1)[1] - 0.15625 * (1.0 - a.sin())).abs() < 1e-6);
+    // Outwards, smooth.
+    assert!(m.normals.is_some());
+    for t in 0..80 {
+        let [p, q, r] = m.corners(t);
+        assert!((q - p).cross(r - p).dot(p + q + r) > 0.0, "triangle {t} faces in");
+    }
+    // Node defaults (`sc` 0): each cap one polygon of 20 sides (18 triangles), no centres;
+    // sizes, rows and the axis.
+    let s = read(&scene("\tsetAttr \".r\" 2;\n\tsetAttr \".h\" 0.5;\n\tsetAttr \".sh\" 3;\n\tsetAttr \".ax\" -type \"double3\" 1 0 0;\n"))
+        .unwrap();
+    let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!() };
+    assert_eq!(m.indices.len(), 20 * 3 * 2 + 2 * 18);
+    // Height along X (±0.25), radius 2; vertex 0 (at the bottom, x −0.25) tweaked to 0.75.
+    let extent = m.positions.iter().fold(Vec3::ZERO, |e, p| e.max(p.abs()));
+    assert!(close(extent, Vec3::new(0.75, 2.0, 2.0)), "{extent}");
+    // Caps of more rings: drawn, their tweaks not applied (numbering unknown), said.
+    let s = read(&scene("\tsetAttr \".sc\" 3;\n")).unwrap();
+    assert_eq!(s.contents.meshes.len(), 1);
+    assert!(s.warnings.iter().any(|w| w.contains("point tweaks of 2 vertices are not applied")), "{:?}", s.warnings);
+    // A radius that is not positive is an error naming the node.
+    let e = read(&scene("\tsetAttr \".r\" 0;\n")).unwrap_err().to_string();
+    assert!(e.contains("pc") && e.contains("radius"), "{e}");
 }
