@@ -433,6 +433,11 @@ fn read_drawable(
                     return Ok(());
                 }
             };
+            // No face of three vertices or more (none authored, or all of one or two).
+            if mesh.indices.is_empty() {
+                notes.note("meshes without faces of three or more vertices: not drawn".into(), prim);
+                return Ok(());
+            }
             push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform, visibility);
         }
         "Points" => {

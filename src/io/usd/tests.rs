@@ -1797,3 +1797,16 @@ fn bad_subdivision_attributes_are_named() {
     assert_eq!(notes.1, MAX_SUBDIVIDED_FACES_PER_FILE - 4);
     assert!(notes.lines().iter().any(|w| w.contains("per file")));
 }
+
+#[test]
+fn meshes_without_faces_are_said_and_not_drawn() {
+    for faces in [
+        "int[] faceVertexCounts = []\nint[] faceVertexIndices = []",
+        "int[] faceVertexCounts = [2, 1]\nint[] faceVertexIndices = [0, 1, 2]",
+    ] {
+        let s =
+            read_body(&format!("def Mesh \"M\" {{\n{faces}\npoint3f[] points = [(0, 0, 0), (1, 0, 0), (0, 1, 0)]\n}}"));
+        assert!(s.contents.meshes.is_empty(), "{faces}");
+        assert!(s.warnings.iter().any(|w| w.contains("meshes without faces") && w.contains("/M")), "{:?}", s.warnings);
+    }
+}
