@@ -1,22 +1,42 @@
-//! The perspective camera.
+//! The camera: a pinhole (perspective) or an orthographic projection.
 
 use crate::math::{Ray, RayCone};
 use glam::Vec3;
 
-/// A pinhole camera looking from `eye` towards `target`.
+/// How the camera projects the scene onto its image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// Rays fan out from the eye over a vertical field of view in degrees.
+    Perspective {
+        /// The vertical field of view in degrees.
+        vfov_deg: f32,
+    },
+    /// Rays run parallel to the view direction, from a window centred on the eye and
+    /// perpendicular to it.
+    Orthographic {
+        /// The window's height in scene units (its width follows the image aspect).
+        height: f32,
+    },
+}
+
+/// A camera looking from `eye` towards `target`.
 #[derive(Clone, Debug)]
 pub struct Camera {
     eye: Vec3,
     /// Direction to the image centre.
     forward: Vec3,
-    /// Offset to the right image edge, at unit distance.
+    /// Offset to the right image edge: at unit distance for a pinhole, on the window for an
+    /// orthographic camera.
     right: Vec3,
-    /// Offset to the top image edge, at unit distance.
+    /// Offset to the top image edge, as `right`.
     up: Vec3,
+    /// Parallel rays from a window instead of a pinhole.
+    orthographic: bool,
     width: u32,
     height: u32,
-    /// Angle a pixel subtends: the spread of every camera ray cone.
-    pixel_spread: f32,
+    /// The footprint of every camera ray cone: a pixel's angle for a pinhole, a pixel's size
+    /// for an orthographic camera.
+    pixel_cone: RayCone,
     /// Clipping distances along `forward`: rays start on the near plane and end on the far.
     near: f32,
     far: f32,
@@ -37,6 +57,9 @@ pub enum CameraError {
     /// Field of view out of range.
     #[error("vertical field of view {0} is not between 0 and 180 degrees")]
     BadFov(f32),
+    /// Orthographic window without a finite positive height.
+    #[error("orthographic view height {0} is not a finite positive length")]
+    BadOrthoHeight(f32),
     /// Zero-sized image.
     #[error("resolution {0}x{1} has no pixels")]
     EmptyImage(u32, u32),
@@ -46,12 +69,12 @@ pub enum CameraError {
 }
 
 impl Camera {
-    /// A camera with a vertical field of view `vfov_deg` for a `width` x `height` image.
+    /// A camera with `projection` for a `width` x `height` image.
     pub fn new(
         eye: Vec3,
         target: Vec3,
         up: Vec3,
-        vfov_deg: f32,
+        projection: Projection,
         width: u32,
         height: u32,
     ) -> Result<Camera, CameraError> {
@@ -63,24 +86,35 @@ impl Camera {
         let view = target - eye;
         let forward = (view / view.abs().max_element()).try_normalize().ok_or(CameraError::NoDirection)?;
         let right = forward.cross(up).try_normalize().ok_or(CameraError::UpParallel)?;
-        if !(vfov_deg > 0.0 && vfov_deg < 180.0) {
-            return Err(CameraError::BadFov(vfov_deg));
-        }
         if width == 0 || height == 0 {
             return Err(CameraError::EmptyImage(width, height));
         }
-        let half_h = (vfov_deg.to_radians() * 0.5).tan();
+        let (half_h, orthographic) = match projection {
+            Projection::Perspective { vfov_deg } if vfov_deg > 0.0 && vfov_deg < 180.0 => {
+                ((vfov_deg.to_radians() * 0.5).tan(), false)
+            }
+            Projection::Perspective { vfov_deg } => return Err(CameraError::BadFov(vfov_deg)),
+            Projection::Orthographic { height } if height.is_finite() && height > 0.0 => (0.5 * height, true),
+            Projection::Orthographic { height } => return Err(CameraError::BadOrthoHeight(height)),
+        };
         let half_w = half_h * width as f32 / height as f32;
         let true_up = right.cross(forward);
+        let pixel = 2.0 * half_h / height as f32;
         Ok(Camera {
             eye,
             forward,
             right: right * half_w,
             up: true_up * half_h,
+            orthographic,
             width,
             height,
-            // Akenine-Moller et al. 2019, eq. 20.30: gamma_0 = atan(2 tan(fov/2) / height).
-            pixel_spread: (2.0 * half_h / height as f32).atan(),
+            pixel_cone: if orthographic {
+                // Parallel rays: every footprint is a pixel wide, at any distance.
+                RayCone { width: pixel, spread: 0.0 }
+            } else {
+                // Akenine-Moller et al. 2019, eq. 20.30: gamma_0 = atan(2 tan(fov/2) / height).
+                RayCone { width: 0.0, spread: pixel.atan() }
+            },
             near: 0.0,
             far: f32::INFINITY,
         })
@@ -115,22 +149,30 @@ impl Camera {
         self.height
     }
 
-    /// The angle a pixel subtends: the spread of every camera ray's cone.
-    pub fn pixel_spread(&self) -> f32 {
-        self.pixel_spread
+    /// The cone of a camera ray at the eye (or the window): its width there (0 for a
+    /// pinhole, a pixel's size for an orthographic camera) and its spread (the angle a
+    /// pixel subtends, 0 for an orthographic camera).
+    pub fn pixel_cone(&self) -> RayCone {
+        self.pixel_cone
     }
 
     /// The ray through image position (`x`, `y`) in pixels from the top-left corner.
     pub fn ray(&self, x: f32, y: f32) -> Ray {
         let sx = 2.0 * x / self.width as f32 - 1.0;
         let sy = 1.0 - 2.0 * y / self.height as f32;
-        let dir = (self.forward + self.right * sx + self.up * sy).normalize();
+        let offset = self.right * sx + self.up * sy;
+        let (origin, dir) = if self.orthographic {
+            (self.eye + offset, self.forward)
+        } else {
+            (self.eye, (self.forward + offset).normalize())
+        };
         // The clipping planes are perpendicular to `forward`: along `dir` they are
         // 1 / cos(dir, forward) times farther.
         let start = self.clip_start(dir);
-        let mut ray = Ray::new(self.eye + dir * start, dir);
+        let mut ray = Ray::new(origin + dir * start, dir);
         ray.tmax = (self.far - self.near) / dir.dot(self.forward);
-        ray.cone = RayCone { width: self.pixel_spread * start, spread: self.pixel_spread };
+        let cone = self.pixel_cone;
+        ray.cone = RayCone { width: cone.width + cone.spread * start, spread: cone.spread };
         ray.camera = true;
         ray
     }
@@ -140,10 +182,12 @@ impl Camera {
 mod tests {
     use super::*;
 
+    const PERSPECTIVE_60: Projection = Projection::Perspective { vfov_deg: 60.0 };
+
     #[test]
     fn clipped_rays_run_from_the_near_plane_to_the_far_plane() {
         let eye = Vec3::new(1.0, 2.0, 3.0);
-        let camera = Camera::new(eye, Vec3::new(1.0, 2.0, -7.0), Vec3::Y, 60.0, 40, 30).unwrap();
+        let camera = Camera::new(eye, Vec3::new(1.0, 2.0, -7.0), Vec3::Y, PERSPECTIVE_60, 40, 30).unwrap();
         let forward = Vec3::NEG_Z;
         let plain = camera.clone().ray(3.0, 27.0);
         assert_eq!((plain.origin, plain.tmax), (eye, f32::INFINITY));
@@ -155,7 +199,7 @@ mod tests {
             assert!(((ray.at(ray.tmax) - eye).dot(forward) - 4.0).abs() < 1e-5);
             assert!((clipped.clip_start(ray.dir) - (ray.origin - eye).length()).abs() < 1e-5);
             // The footprint is the cone's width where the ray now starts.
-            assert!((ray.cone.width - clipped.pixel_spread() * clipped.clip_start(ray.dir)).abs() < 1e-7);
+            assert!((ray.cone.width - clipped.pixel_cone().spread * clipped.clip_start(ray.dir)).abs() < 1e-7);
         }
         assert_eq!(clipped.clone().ray(3.0, 27.0).dir, plain.dir);
         for (near, far) in [(-1.0, 2.0), (2.0, 2.0), (f32::INFINITY, f32::INFINITY), (f32::NAN, 1.0), (0.0, f32::NAN)] {
@@ -163,6 +207,31 @@ mod tests {
                 clipped.clone().clipped(near, far).unwrap_err().to_string(),
                 CameraError::BadClip(near, far).to_string()
             );
+        }
+    }
+
+    #[test]
+    fn orthographic_rays_are_parallel_from_a_window_of_the_given_size() {
+        let eye = Vec3::new(1.0, 2.0, 3.0);
+        // A 4 x 2 unit window (8 x 4 pixels), looking down -z with y up: +x on the right.
+        let ortho = Projection::Orthographic { height: 2.0 };
+        let camera = Camera::new(eye, eye - Vec3::Z, Vec3::Y, ortho, 8, 4).unwrap().clipped(0.5, 4.0).unwrap();
+        let corner = camera.ray(0.0, 0.0);
+        assert_eq!(corner.dir, Vec3::NEG_Z);
+        assert!((corner.origin - Vec3::new(-1.0, 3.0, 2.5)).length() < 1e-6, "{}", corner.origin);
+        let centre = camera.ray(4.0, 2.0);
+        assert!((centre.origin - Vec3::new(1.0, 2.0, 2.5)).length() < 1e-6);
+        assert!((centre.tmax - 3.5).abs() < 1e-6);
+        let right = camera.ray(8.0, 2.0);
+        assert!((right.origin - Vec3::new(3.0, 2.0, 2.5)).length() < 1e-6);
+        // Every footprint is a pixel (half a unit) wide, however far the ray goes.
+        for ray in [corner, centre, right] {
+            assert_eq!((ray.cone.width, ray.cone.spread), (0.5, 0.0));
+        }
+        assert_eq!(camera.clip_start(Vec3::NEG_Z), 0.5);
+        for height in [0.0, -1.0, f32::NAN, f32::INFINITY] {
+            let err = Camera::new(eye, eye - Vec3::Z, Vec3::Y, Projection::Orthographic { height }, 8, 4).unwrap_err();
+            assert_eq!(err.to_string(), CameraError::BadOrthoHeight(height).to_string());
         }
     }
 }

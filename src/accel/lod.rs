@@ -180,10 +180,11 @@ impl LodParams {
 /// average, at some more cost for those rays.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LodCamera {
-    /// The eye (pinhole).
+    /// The eye: the pinhole, or the centre of an orthographic camera's window.
     pub eye: Vec3,
-    /// Spread of the camera ray cones: the angle a pixel subtends.
-    pub pixel_spread: f32,
+    /// The camera ray cones at the eye: a pinhole's start 0 wide and spread by the angle a
+    /// pixel subtends, an orthographic camera's are a pixel wide and do not spread.
+    pub cone: RayCone,
 }
 
 /// A strand set's pruning levels: the group of each strand, and per level the widening
@@ -508,7 +509,7 @@ impl StrandLod {
     fn camera_level(&self, a: [f32; 4], b: [f32; 4], jitter: f32, distance: impl Fn(Vec3, Vec3) -> f32) -> usize {
         let Some(camera) = self.camera else { return MAX_LEVELS - 1 };
         let (a, b) = (Vec3::new(a[0], a[1], a[2]), Vec3::new(b[0], b[1], b[2]));
-        let footprint = camera.pixel_spread * distance(a, b) * jitter;
+        let footprint = (camera.cone.width + camera.cone.spread * distance(a, b)) * jitter;
         self.thresholds.iter().take_while(|&&c| footprint >= c).count()
     }
 
@@ -1066,7 +1067,7 @@ mod tests {
         let s = curtain(3000, 0.0005, 7); // width 0.001
         let p = LodParams { spread: 4.0, ..Default::default() };
         // From 2 away a pixel covers 4 widths: camera rays take level 3 or 4 (log_1.5 4 = 3.4).
-        let camera = LodCamera { eye: Vec3::new(0.5, 0.5, 2.0), pixel_spread: 0.002 };
+        let camera = LodCamera { eye: Vec3::new(0.5, 0.5, 2.0), cone: RayCone { width: 0.0, spread: 0.002 } };
         let free = Accel::build_with_lod(vec![(Shape::Strands(s.clone()), 0, Some(p))]);
         let seen = Accel::build_with_lod_for(vec![(Shape::Strands(s), 0, Some(p))], Some(camera));
         let mut rng = GenRng::seed_from_u64(14);
@@ -1074,7 +1075,7 @@ mod tests {
         for i in 0..4000 {
             let target = Vec3::new(rng.random(), 0.1 + 0.8 * rng.random::<f32>(), 0.0);
             let mut ray = Ray::new(camera.eye, (target - camera.eye).normalize());
-            ray.cone = RayCone { width: 0.0, spread: camera.pixel_spread };
+            ray.cone = camera.cone;
             if i % 2 == 0 {
                 // A camera ray sees the same hits, but where a segment straddles a level
                 // change (the camera's level is read at its midpoint, the ray's at the hit).

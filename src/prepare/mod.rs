@@ -15,7 +15,7 @@ pub use maps::{read_map_images, MAX_MAP_SIDE};
 
 use crate::accel::lod::LodParams;
 use crate::accel::{Accel, Shape, Visibility};
-use crate::camera::Camera;
+use crate::camera::{Camera, Projection};
 use crate::error::{LoadError, PrepareError};
 use crate::geometry::StrandSet;
 use crate::hair_system::{self, Guides};
@@ -272,7 +272,11 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     desc.validate()?;
     let c = &desc.camera;
     let (w, h) = (desc.settings.width, desc.settings.height);
-    let camera = Camera::new(c.eye, c.target, c.up, c.vfov_for(w, h), w, h)?.clipped(c.clip[0], c.clip[1])?;
+    let projection = match c.ortho_height_for(w, h) {
+        Some(height) => Projection::Orthographic { height },
+        None => Projection::Perspective { vfov_deg: c.vfov_for(w, h) },
+    };
+    let camera = Camera::new(c.eye, c.target, c.up, projection, w, h)?.clipped(c.clip[0], c.clip[1])?;
     let start = Instant::now();
     let LoadedGeometry { shapes, materials, lods, visibility, mut warnings } = load_geometry_taking(desc, taken)?;
     let lights = lights(desc, &mut warnings)?;
@@ -280,7 +284,7 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     // The global switch drops every strand set's level of detail.
     let lod = |p: Option<LodParams>| p.filter(|_| desc.settings.lod);
-    let lod_camera = crate::accel::lod::LodCamera { eye: c.eye, pixel_spread: camera.pixel_spread() };
+    let lod_camera = crate::accel::lod::LodCamera { eye: c.eye, cone: camera.pixel_cone() };
     let mut accel = Accel::build_with_lod_for(
         shapes.into_iter().zip(lods).map(|((s, m), l)| (in_spatial_order(s, lod(l)), m, lod(l))).collect(),
         Some(lod_camera),

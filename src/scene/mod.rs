@@ -30,8 +30,10 @@ pub struct CameraDesc {
     pub target: Vec3,
     /// Up direction.
     pub up: Vec3,
-    /// Vertical field of view in degrees; a [`Film`] overrides it.
+    /// Vertical field of view in degrees of a perspective camera; a [`Film`] overrides it.
     pub vfov: f32,
+    /// Perspective (a pinhole) or orthographic (parallel rays).
+    pub projection: CameraProjection,
     /// The film back of a camera read from a file with one (USD, Maya): the field of view
     /// is fitted from it to the aspect of the image finally rendered, so an image size given
     /// later (`-r`) refits it as the source application would.
@@ -50,6 +52,7 @@ impl Default for CameraDesc {
             target: Vec3::ZERO,
             up: Vec3::Y,
             vfov: 35.0,
+            projection: CameraProjection::Perspective,
             film: None,
             clip: [0.0, f32::INFINITY],
         }
@@ -58,10 +61,37 @@ impl Default for CameraDesc {
 
 impl CameraDesc {
     /// The vertical field of view in degrees for a `width` x `height` image: the film's
-    /// fit when there is one, else `vfov`.
+    /// fit when there is one, else `vfov`. Perspective cameras only.
     pub fn vfov_for(&self, width: u32, height: u32) -> f32 {
         self.film.map_or(self.vfov, |f| f.vfov(width, height))
     }
+
+    /// The height in scene units of an orthographic camera's window for a `width` x
+    /// `height` image: the film's fit when there is one (its apertures are then lengths in
+    /// scene units), else the projection's `height`; `None` for a perspective camera.
+    pub fn ortho_height_for(&self, width: u32, height: u32) -> Option<f32> {
+        match self.projection {
+            CameraProjection::Perspective => None,
+            CameraProjection::Orthographic { height: h } => {
+                Some(self.film.map_or(h, |f| f.fitted_height(width, height)))
+            }
+        }
+    }
+}
+
+/// How a camera projects the scene.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum CameraProjection {
+    /// A pinhole: rays fan out from the eye over `vfov` (or the film's angle of view).
+    #[default]
+    Perspective,
+    /// Parallel rays along the view direction, from a window centred on the eye `height`
+    /// scene units tall (its width follows the image aspect). A [`Film`] overrides the
+    /// height; its apertures are then the window's sides in scene units.
+    Orthographic {
+        /// The window's height in scene units.
+        height: f32,
+    },
 }
 
 /// Which side of a film aperture meets the image edge when the two aspects differ (Maya's
@@ -79,11 +109,13 @@ pub enum FilmFit {
     Overscan,
 }
 
-/// A camera's film back: its apertures over its focal length, and how it fits the image.
+/// A camera's film back: its apertures over its focal length (for an orthographic camera,
+/// its window's sides in scene units), and how it fits the image.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Film {
     /// Horizontal and vertical aperture, each divided by the focal length (same unit), so
-    /// half of each is the tangent of that side's half angle. Finite and positive.
+    /// half of each is the tangent of that side's half angle; an orthographic camera's in
+    /// scene units. Finite and positive.
     pub aperture: [f32; 2],
     /// How the aperture is fitted to the image's aspect.
     pub fit: FilmFit,
@@ -94,6 +126,14 @@ impl Film {
     /// fit, Autodesk Maya Help "Camera Attribute Editor: Film Back"; `2 atan(aperture / 2)`
     /// on the side that fits, the other side following the image aspect).
     pub fn vfov(&self, width: u32, height: u32) -> f32 {
+        2.0 * (0.5 * self.fitted_height(width, height)).atan().to_degrees()
+    }
+
+    /// The vertical aperture fitted to a `width` x `height` image: the vertical aperture
+    /// when that side fits, else the horizontal one over the image aspect. In the
+    /// apertures' unit: over the focal length for a perspective camera, scene units for an
+    /// orthographic one.
+    pub fn fitted_height(&self, width: u32, height: u32) -> f32 {
         let [h, v] = self.aperture;
         let image_aspect = width.max(1) as f32 / height.max(1) as f32;
         let horizontal = match self.fit {
@@ -102,8 +142,11 @@ impl Film {
             FilmFit::Fill => image_aspect > h / v,
             FilmFit::Overscan => image_aspect < h / v,
         };
-        let height = if horizontal { h / image_aspect } else { v };
-        2.0 * (0.5 * height).atan().to_degrees()
+        if horizontal {
+            h / image_aspect
+        } else {
+            v
+        }
     }
 }
 

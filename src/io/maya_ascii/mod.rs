@@ -40,7 +40,8 @@
 //!   [`fur_nodes`].
 //! - **camera**: the one asked for by name (`--camera`: its transform's or its shape's
 //!   name), else the first renderable perspective camera other than the default `persp`
-//!   (else `persp`), field of view from focal length (`.fl`), film aperture (`.cap`) and
+//!   (else `persp`, else the first renderable orthographic one, its orthographic width
+//!   spanning the image width), field of view from focal length (`.fl`), film aperture (`.cap`) and
 //!   film fit (`.ff`), clipped at its near and far clip planes (`.ncp`, `.fcp`); image
 //!   size from `defaultResolution`.
 //! - **lights**: directional, point, spot, ambient and area lights, colour × intensity
@@ -86,7 +87,8 @@ use crate::hair_system::{
 };
 use crate::light::Light;
 use crate::scene::{
-    CameraDesc, Film, FilmFit, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry, MeshSource, Visibility,
+    CameraDesc, CameraProjection, Film, FilmFit, GuideSource, HairEntry, HairSource, HairSystemEntry, MeshEntry,
+    MeshSource, Visibility,
 };
 use crate::shading::Material;
 use glam::{Affine3A, DAffine3, DMat3, DVec3, Vec3, Vec4};
@@ -1445,12 +1447,18 @@ impl<'g> Reader<'g> {
 
     fn camera(&mut self) -> Res<()> {
         let g = self.g;
-        let cameras: Vec<usize> = self
+        let orthographic = |c: usize| scalar(g, c, &["o", "orthographic"], 0.0).is_ok_and(|o| o != 0.0);
+        let renderable: Vec<usize> = self
             .of_kind("camera")
-            .filter(|&c| {
-                scalar(g, c, &["o", "orthographic"], 0.0).is_ok_and(|o| o == 0.0)
-                    && scalar(g, c, &["rnd", "renderable"], 1.0).is_ok_and(|r| r != 0.0)
-            })
+            .filter(|&c| scalar(g, c, &["rnd", "renderable"], 1.0).is_ok_and(|r| r != 0.0))
+            .collect();
+        // Perspective cameras first: an orthographic one is rendered only when it is the
+        // only kind renderable (Maya's top, front and side views are not, by default).
+        let cameras: Vec<usize> = renderable
+            .iter()
+            .copied()
+            .filter(|&c| !orthographic(c))
+            .chain(renderable.iter().copied().filter(|&c| orthographic(c)))
             .collect();
         let cam = match &self.wanted_camera {
             // By its transform's name (what Maya's outliner shows) or its shape's.
@@ -1473,10 +1481,13 @@ impl<'g> Reader<'g> {
                     }
                 }
             }
-            None => match cameras.iter().find(|&&c| g.nodes[c].name != "perspShape").or(cameras.first()) {
-                Some(&c) => c,
-                None => return Ok(()),
-            },
+            None => {
+                match cameras.iter().find(|&&c| g.nodes[c].name != "perspShape" && !orthographic(c)).or(cameras.first())
+                {
+                    Some(&c) => c,
+                    None => return Ok(()),
+                }
+            }
         };
         let m = self.world(cam)?;
         finite_affine(g, cam, &m)?;
@@ -1506,17 +1517,32 @@ impl<'g> Reader<'g> {
             3 => FilmFit::Overscan,
             _ => FilmFit::Horizontal,
         };
-        // Aperture in inches, focal length in millimetres.
-        let film = Film { aperture: aperture.map(|a| (a * 25.4 / focal) as f32), fit };
-        if !film.aperture.iter().all(|a| a.is_finite() && *a > 0.0) {
-            return Err((node.line, format!("camera {}: aperture over focal length out of range", node.name)));
-        }
         let [w, h] = self.out.resolution.unwrap_or([640, 480]);
-        let vfov = film.vfov(w, h);
+        let cm = g.centimeters_per_unit;
+        let (film, vfov, projection) = if orthographic(cam) {
+            // The orthographic width spans the image width (Maya's default 30, in its
+            // internal centimetres), the height following the image aspect.
+            let width = scalar(g, cam, &["ow", "orthographicWidth"], 30.0 / cm)?;
+            let film = Film { aperture: [width as f32; 2], fit: FilmFit::Horizontal };
+            if !(width.is_finite() && width > 0.0 && film.aperture[0].is_finite()) {
+                return Err((
+                    node.line,
+                    format!("camera {}: orthographic width {width} is not a positive size", node.name),
+                ));
+            }
+            let height = film.fitted_height(w, h);
+            (film, CameraDesc::default().vfov, CameraProjection::Orthographic { height })
+        } else {
+            // Aperture in inches, focal length in millimetres.
+            let film = Film { aperture: aperture.map(|a| (a * 25.4 / focal) as f32), fit };
+            if !film.aperture.iter().all(|a| a.is_finite() && *a > 0.0) {
+                return Err((node.line, format!("camera {}: aperture over focal length out of range", node.name)));
+            }
+            (film, film.vfov(w, h), CameraProjection::Perspective)
+        };
         // The clip planes, along the view direction: the node's defaults are in Maya's
         // internal centimetres, set values in the file's unit; the camera's scale
         // stretches them.
-        let cm = g.centimeters_per_unit;
         let (near, far) = (
             scalar(g, cam, &["ncp", "nearClipPlane"], 0.1 / cm)?,
             scalar(g, cam, &["fcp", "farClipPlane"], 10_000.0 / cm)?,
@@ -1538,7 +1564,7 @@ impl<'g> Reader<'g> {
                 format!("camera {}: clip planes {near} and {far} are beyond single precision", node.name),
             ));
         }
-        self.out.camera = Some(CameraDesc { eye, target, up, vfov, film: Some(film), clip });
+        self.out.camera = Some(CameraDesc { eye, target, up, vfov, projection, film: Some(film), clip });
         Ok(())
     }
 

@@ -1980,3 +1980,21 @@ fn poly_cylinders_have_mayas_vertex_numbers_face_order_and_uvs() {
     let e = read(&scene("\tsetAttr \".r\" 0;\n")).unwrap_err().to_string();
     assert!(e.contains("pc") && e.contains("radius"), "{e}");
 }
+
+#[test]
+fn an_orthographic_camera_renders_when_it_is_the_renderable_one() {
+    // Maya's startup cameras: persp made non-renderable, top (orthographic) renderable.
+    let text = "createNode transform -s -n \"persp\";\n\tsetAttr \".t\" -type \"double3\" 0 0 9 ;\n\
+                createNode camera -s -n \"perspShape\" -p \"persp\";\n\tsetAttr \".rnd\" no;\n\
+                createNode transform -s -n \"top\";\n\tsetAttr \".t\" -type \"double3\" 0 100 0 ;\n\
+                \tsetAttr \".r\" -type \"double3\" -90 0 0 ;\n\
+                createNode camera -s -n \"topShape\" -p \"top\";\n\tsetAttr \".ow\" 12;\n\tsetAttr \".o\" yes;\n";
+    let c = read(text).unwrap().camera.unwrap();
+    assert!(close(c.eye, Vec3::new(0.0, 100.0, 0.0)), "{}", c.eye);
+    assert!(close((c.target - c.eye).normalize(), Vec3::NEG_Y));
+    // The orthographic width spans the image width.
+    assert!((c.ortho_height_for(640, 480).unwrap() - 9.0).abs() < 1e-5);
+    // A renderable perspective camera is preferred to it.
+    let both = text.replace("\tsetAttr \".rnd\" no;\n", "");
+    assert_eq!(read(&both).unwrap().camera.unwrap().ortho_height_for(640, 480), None);
+}

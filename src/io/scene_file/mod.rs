@@ -12,12 +12,18 @@ mod animation;
 mod convert;
 mod schema;
 
-use crate::scene::{CameraDesc, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource, Visibility};
+use crate::scene::{
+    CameraDesc, CameraProjection, Contents, Description, HairEntry, HairSource, MeshEntry, MeshSource, Visibility,
+};
 use crate::world::{Adaptive, Integrator, IrradianceCacheSettings, RenderSettings};
 pub use animation::{at_frame, has_pattern};
 use animation::{camera_at, frame_warning};
 use convert::{fur, hair_system, light, material, procedural, transform, visibility_keys};
-use schema::{IrradianceCacheToml, LodToml, SceneToml};
+use schema::{IrradianceCacheToml, LodToml, ProjectionToml, SceneToml};
+
+/// An orthographic camera's window height in scene units when the scene gives none (the
+/// size of pbrt's default screen window, from -1 to 1).
+const DEFAULT_ORTHO_HEIGHT: f32 = 2.0;
 use std::path::{Path, PathBuf};
 
 /// Why a scene file cannot be read.
@@ -100,7 +106,30 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
                     clip[0], clip[1]
                 )));
             }
-            Some(CameraDesc { eye: eye.into(), target: target.into(), up: c.up.into(), vfov, film: None, clip })
+            let projection = match (c.projection, c.ortho_height) {
+                (ProjectionToml::Perspective, None) => CameraProjection::Perspective,
+                (ProjectionToml::Perspective, Some(_)) => {
+                    return Err(invalid("camera `ortho_height` is for `projection = \"orthographic\"`".into()))
+                }
+                (ProjectionToml::Orthographic, height) => {
+                    let height = height.unwrap_or(DEFAULT_ORTHO_HEIGHT);
+                    if !(height.is_finite() && height > 0.0) {
+                        return Err(invalid(format!(
+                            "camera `ortho_height` {height}: give the window's height, a finite positive length"
+                        )));
+                    }
+                    CameraProjection::Orthographic { height }
+                }
+            };
+            Some(CameraDesc {
+                eye: eye.into(),
+                target: target.into(),
+                up: c.up.into(),
+                vfov,
+                projection,
+                film: None,
+                clip,
+            })
         }
         None => None,
     };

@@ -97,6 +97,11 @@ pub(super) struct CameraToml {
     pub(super) up: V3,
     #[serde(default = "default_vfov")]
     pub(super) vfov: f32,
+    #[serde(default)]
+    pub(super) projection: ProjectionToml,
+    /// The orthographic window's height in scene units.
+    #[serde(default)]
+    pub(super) ortho_height: Option<f32>,
     /// `[near, far]` clipping distances along the view direction.
     #[serde(default)]
     pub(super) clip: Option<[f32; 2]>,
@@ -104,6 +109,15 @@ pub(super) struct CameraToml {
     #[serde(default)]
     pub(super) key: Vec<CameraKeyToml>,
 }
+/// `projection` of `[camera]`.
+#[derive(Deserialize, Default, Clone, Copy, PartialEq)]
+#[serde(rename_all = "lowercase")]
+pub(super) enum ProjectionToml {
+    #[default]
+    Perspective,
+    Orthographic,
+}
+
 fn default_up() -> V3 {
     CameraDesc::default().up.into()
 }

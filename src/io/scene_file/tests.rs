@@ -483,3 +483,21 @@ casts_shadows = false
         .to_string();
     assert!(e.contains("matte") && e.contains("bool"), "{e}");
 }
+
+#[test]
+fn an_orthographic_camera_takes_its_window_height() {
+    let path = Path::new("a.toml");
+    let scene =
+        |keys: &str| super::parse(&format!("[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n{keys}"), path, None);
+    let (d, _) = scene("projection = \"orthographic\"\northo_height = 3.5\n").unwrap();
+    assert_eq!(d.camera.ortho_height_for(640, 480), Some(3.5));
+    let (d, _) = scene("projection = \"orthographic\"\n").unwrap();
+    assert_eq!(d.camera.ortho_height_for(640, 480), Some(2.0));
+    assert_eq!(scene("").unwrap().0.camera.ortho_height_for(640, 480), None);
+    for bad in
+        ["projection = \"orthographic\"\northo_height = -1.0\n", "ortho_height = 2.0\n", "projection = \"fisheye\"\n"]
+    {
+        let e = scene(bad).unwrap_err().to_string();
+        assert!(e.contains("ortho_height") || e.contains("fisheye"), "{bad}: {e}");
+    }
+}

@@ -11,15 +11,21 @@
 //! not authored, clips along the view direction, in the camera's units: a scale in the
 //! camera's transform scales the distances with it.
 //!
+//! An orthographic camera (`projection = "orthographic"`) casts parallel rays from a window
+//! centred on the camera: Arnold's `ortho_camera` window `primvars:arnold:screen_window_min`
+//! and `max` (its x extent in scene units spanning the image width, as Arnold spans it) when
+//! authored, else the apertures, which the schema gives for orthographic cameras in tenths
+//! of a scene unit (UsdGeomCamera, "Cameras, Lenses, and Projections"), fitted as above.
+//!
 //! Arnold's USD writer also stores the `persp_camera` parameters as `primvars:arnold:`
 //! primvars, and Arnold's reader applies them over the schema's attributes: `fov` (Arnold's
 //! horizontal field of view, in degrees) replaces the horizontal aperture's, and a camera
 //! with no transform operations of its own is placed by `position`, `look_at` and `up` (in
 //! its parent's space), as Arnold places it.
 
-use super::values::{floats, number, short, token, value, vec3, Res};
+use super::values::{floats, number, short, token, value, vec2, vec3, Res};
 use super::Notes;
-use crate::scene::{CameraDesc, Film, FilmFit};
+use crate::scene::{CameraDesc, CameraProjection, Film, FilmFit};
 use crate::world::RenderSettings;
 use glam::{Affine3A, Vec3};
 use openusd::sdf;
@@ -42,9 +48,11 @@ pub fn read_camera(
     // The schema's fallbacks: a 35 mm academy aperture and a 50 mm lens.
     let focal = num("focalLength", 50.0)?;
     let (h_ap, v_ap) = (num("horizontalAperture", 20.955)?, num("verticalAperture", 15.2908)?);
-    if token(value(prim, "projection", time)?, "perspective") != "perspective" {
-        notes.note("orthographic cameras: rendered in perspective with the same apertures".into(), prim);
-    }
+    let orthographic = match token(value(prim, "projection", time)?, "perspective").as_str() {
+        "perspective" => false,
+        "orthographic" => true,
+        other => anyhow::bail!("`projection` is `{other}`: neither `perspective` nor `orthographic`"),
+    };
     for name in ["horizontalApertureOffset", "verticalApertureOffset"] {
         if number(value(prim, name, time)?, name)?.is_some_and(|x| x != 0.0) {
             notes.note("camera aperture offsets: not applied".into(), prim);
@@ -54,19 +62,16 @@ pub fn read_camera(
         let width = RenderSettings::default().width;
         [width, ((width as f32 * v_ap / h_ap).round() as u32).clamp(1, 16 * width)]
     });
-    let h_ratio = match arnold_number(prim, "fov", time)? {
-        Some(fov) => {
-            anyhow::ensure!(fov > 0.0 && fov < 180.0, "`primvars:arnold:fov` {fov} is not an angle between 0 and 180°");
-            2.0 * (0.5 * fov).to_radians().tan()
-        }
-        None => h_ap / focal,
+    let film = if orthographic {
+        ortho_window(prim, time, [h_ap, v_ap], notes)?
+    } else {
+        angle_of_view(prim, time, [h_ap, v_ap], focal)?
     };
-    let film = Film { aperture: [h_ratio, h_ratio * v_ap / h_ap], fit: FilmFit::Horizontal };
-    anyhow::ensure!(
-        film.aperture.iter().all(|a| a.is_finite() && *a > 0.0),
-        "apertures {h_ap} × {v_ap} over focal length {focal} do not give a field of view"
-    );
-    let vfov = film.vfov(w, h);
+    let vfov = if orthographic { CameraDesc::default().vfov } else { film.vfov(w, h) };
+    let projection = match orthographic {
+        true => CameraProjection::Orthographic { height: film.fitted_height(w, h) },
+        false => CameraProjection::Perspective,
+    };
     let arnold_position = vec3(value(prim, "primvars:arnold:position", time)?, "primvars:arnold:position")?;
     // `forward` is along the view, as long as the transform makes one unit of the camera's.
     let (eye, forward, up) = match arnold_position
@@ -103,7 +108,61 @@ pub fn read_camera(
         "`clippingRange` ({near}, {far}) is not a range from a finite near distance >= 0 to a larger far one"
     );
     let clip = [near, far].map(|d| d * forward.length());
-    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, film: Some(film), clip }, [w, h]))
+    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, projection, film: Some(film), clip }, [w, h]))
+}
+
+/// A perspective camera's film: the apertures over the focal length, or Arnold's `fov`.
+fn angle_of_view(prim: &Prim, time: TimeCode, [h_ap, v_ap]: [f32; 2], focal: f32) -> Res<Film> {
+    let h_ratio = match arnold_number(prim, "fov", time)? {
+        Some(fov) => {
+            anyhow::ensure!(fov > 0.0 && fov < 180.0, "`primvars:arnold:fov` {fov} is not an angle between 0 and 180°");
+            2.0 * (0.5 * fov).to_radians().tan()
+        }
+        None => h_ap / focal,
+    };
+    let film = Film { aperture: [h_ratio, h_ratio * v_ap / h_ap], fit: FilmFit::Horizontal };
+    anyhow::ensure!(
+        film.aperture.iter().all(|a| a.is_finite() && *a > 0.0),
+        "apertures {h_ap} × {v_ap} over focal length {focal} do not give a field of view"
+    );
+    Ok(film)
+}
+
+/// An orthographic camera's window in scene units: Arnold's screen window when authored,
+/// else the apertures in tenths of a unit. A window off the camera's axis is drawn centred.
+fn ortho_window(prim: &Prim, time: TimeCode, [h_ap, v_ap]: [f32; 2], notes: &mut Notes) -> Res<Film> {
+    let corner = |name: &str| -> Res<Option<[f32; 2]>> {
+        let what = format!("primvars:arnold:{name}");
+        vec2(value(prim, &what, time)?, &what)
+    };
+    let sides = match (corner("screen_window_min")?, corner("screen_window_max")?) {
+        (None, None) => [h_ap / 10.0, v_ap / 10.0],
+        (min, max) => {
+            // Arnold's defaults: (-1, -1) to (1, 1).
+            let (min, max) = (min.unwrap_or([-1.0, -1.0]), max.unwrap_or([1.0, 1.0]));
+            if min[0] + max[0] != 0.0 || min[1] + max[1] != 0.0 {
+                notes.note("orthographic screen windows off the camera's axis: drawn centred".into(), prim);
+            }
+            // Arnold's screen y runs over the image's height in units of its width, so a
+            // square window (the usual one) spans the image without stretching it; the x
+            // extent is the window's width and its height follows the image aspect.
+            let [dx, dy] = [max[0] - min[0], max[1] - min[1]];
+            if dx != dy {
+                notes.note(
+                    "orthographic screen windows that are not square: their height follows the image aspect".into(),
+                    prim,
+                );
+            }
+            [dx, dx]
+        }
+    };
+    anyhow::ensure!(
+        sides.iter().all(|a| a.is_finite() && *a > 0.0),
+        "the orthographic window {} × {} is not a finite positive size",
+        sides[0],
+        sides[1]
+    );
+    Ok(Film { aperture: sides, fit: FilmFit::Horizontal })
 }
 
 /// An Arnold parameter Arnold-USD writes as a `primvars:arnold:NAME` primvar: a number, or

@@ -1810,3 +1810,32 @@ fn meshes_without_faces_are_said_and_not_drawn() {
         assert!(s.warnings.iter().any(|w| w.contains("meshes without faces") && w.contains("/M")), "{:?}", s.warnings);
     }
 }
+
+#[test]
+fn orthographic_cameras_take_arnolds_screen_window_or_the_apertures_in_tenths() {
+    let camera = |attrs: &str| {
+        let text = format!(
+            "def Camera \"Top\" {{\n    token projection = \"orthographic\"\n{attrs}}}\ndef Sphere \"Ball\" {{}}\n"
+        );
+        let s = read_with("", &text, &ImportOptions::default()).unwrap();
+        let [w, h] = s.resolution.unwrap();
+        (s.camera.unwrap(), [w, h], s.warnings)
+    };
+    // The schema's apertures, in tenths of a unit: a window 3 x 2 units.
+    let (c, [w, h], _) = camera("    float horizontalAperture = 30\n    float verticalAperture = 20\n");
+    assert!(matches!(c.projection, crate::scene::CameraProjection::Orthographic { .. }));
+    assert_eq!([w, h], [640, 427]);
+    assert!((c.ortho_height_for(w, h).unwrap() - 3.0 * 427.0 / 640.0).abs() < 1e-5);
+    // Arnold's screen window wins: 1.6 units wide, the height following the image (as -r
+    // refits it).
+    let window = "    float2[] primvars:arnold:screen_window_max = [(0.8, 0.8)]\n    float2[] primvars:arnold:screen_window_min = [(-0.8, -0.8)]\n";
+    let (c, _, warnings) = camera(window);
+    assert!((c.ortho_height_for(200, 100).unwrap() - 0.8).abs() < 1e-6);
+    assert!(warnings.iter().all(|w| !w.contains("orthographic")), "{warnings:?}");
+    let (_, _, warnings) = camera("    float2[] primvars:arnold:screen_window_max = [(1, 0.5)]\n");
+    assert!(warnings.iter().any(|w| w.contains("not square")), "{warnings:?}");
+    // A projection that is neither is refused, named.
+    let text = "def Camera \"Top\" {\n    token projection = \"fisheye\"\n}\n";
+    let e = read_with("", text, &ImportOptions::default()).unwrap_err().to_string();
+    assert!(e.contains("fisheye"), "{e}");
+}

@@ -39,6 +39,22 @@ pub fn vec3s(v: Option<sdf::Value>, what: &str) -> Res<Option<Vec<Vec3>>> {
     })
 }
 
+/// One 2-vector, or an array of one (as Arnold's writer stores its `VECTOR2` parameters),
+/// or `None` when not authored.
+pub fn vec2(v: Option<sdf::Value>, what: &str) -> Res<Option<[f32; 2]>> {
+    let first = |v: Option<[f32; 2]>| v.ok_or_else(|| anyhow::anyhow!("`{what}` is an empty array"));
+    let v = match v {
+        None => return Ok(None),
+        Some(sdf::Value::Vec2f(v)) => [v.x, v.y],
+        Some(sdf::Value::Vec2d(v)) => [v.x as f32, v.y as f32],
+        Some(sdf::Value::Vec2fVec(v)) => first(v.first().map(|p| [p.x, p.y]))?,
+        Some(sdf::Value::Vec2dVec(v)) => first(v.first().map(|p| [p.x as f32, p.y as f32]))?,
+        Some(other) => anyhow::bail!("`{what}` is not a 2-vector: {}", short(&other)),
+    };
+    anyhow::ensure!(v.iter().all(|x| x.is_finite()), "`{what}` must be finite");
+    Ok(Some(v))
+}
+
 /// One 3-vector (a colour), or `None` when not authored.
 pub fn vec3(v: Option<sdf::Value>, what: &str) -> Res<Option<Vec3>> {
     Ok(match v {
