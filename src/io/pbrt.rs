@@ -7,7 +7,8 @@
 //! `AttributeBegin`/`End` (and the older `TransformBegin`/`End`), `Include`/`Import`
 //! (paths relative to the first file's directory, as pbrt resolves them), `Camera
 //! "perspective"` (`fov` spanning the shorter image side, or the window `screenwindow` or
-//! `frameaspectratio` give, for the file's image size and one given later alike), `Film`
+//! `frameaspectratio` give, for the file's image size and one given later alike) and
+//! `"orthographic"` (the same window, in camera space units), `Film`
 //! (`xresolution`, `yresolution`), `Sampler` (`pixelsamples`), `Integrator`, `LightSource` `distant`,
 //! `infinite`, `point` and `spot`, `Material` and `MakeNamedMaterial`/`NamedMaterial`,
 //! and `Shape` `curve`, `trianglemesh`, `plymesh`, `sphere`, `disk`, `cylinder` and
@@ -72,7 +73,8 @@ use crate::geometry::curve::{cubic_point, CubicBasis};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::{Light, MapPlacement};
 use crate::scene::{
-    CameraDesc, EnvironmentFile, Film, FilmFit, HairEntry, HairSource, LightSource, MeshEntry, MeshSource, Projection,
+    CameraDesc, CameraProjection, EnvironmentFile, Film, FilmFit, HairEntry, HairSource, LightSource, MeshEntry,
+    MeshSource, Projection,
 };
 use crate::shading::hair_bsdf::{color_from_sigma_a, Absorption, HairParams, PhysicalHair};
 use crate::shading::Material;
@@ -357,6 +359,9 @@ struct Parser {
     /// Strands by material index, in order of first use.
     strands: Vec<(usize, StrandSet)>,
     camera_to_world: Option<DMat4>,
+    /// `Camera "orthographic"`: parallel rays through a screen window measured in camera
+    /// space units, rather than a perspective camera's `fov`.
+    orthographic: bool,
     fov: f64,
     /// Half the width and height of the camera's screen window when the file sets one
     /// (`screenwindow`, `frameaspectratio`), in units of the tangent of half `fov`; else
@@ -396,6 +401,7 @@ impl Parser {
             materials: vec![Material::Diffuse { color: Vec3::splat(0.5) }],
             strands: Vec::new(),
             camera_to_world: None,
+            orthographic: false,
             fov: 90.0,
             screen: None,
             image_scale: 1.0,
@@ -566,12 +572,16 @@ impl Parser {
                     return Err((line, "the camera's position is beyond single precision".into()));
                 }
                 self.camera_to_world = Some(c2w);
-                if kind != "perspective" {
+                self.orthographic = kind == "orthographic";
+                if !self.orthographic && kind != "perspective" {
                     self.warnings.insert(format!("camera \"{kind}\" is rendered as a perspective camera"));
                 }
-                self.fov = p.float("fov", 90.0)?;
-                if !(self.fov > 0.0 && self.fov < 180.0) {
-                    return Err((line, format!("fov {} is not between 0 and 180", self.fov)));
+                // An orthographic camera has no `fov`: one given is reported unused, as pbrt does.
+                if !self.orthographic {
+                    self.fov = p.float("fov", 90.0)?;
+                    if !(self.fov > 0.0 && self.fov < 180.0) {
+                        return Err((line, format!("fov {} is not between 0 and 180", self.fov)));
+                    }
                 }
                 self.screen = self.screen_window(&p)?;
                 if !self.aperture().iter().all(|a| a.is_finite() && *a > 0.0) {
@@ -729,17 +739,24 @@ impl Parser {
         }
     }
 
-    /// The camera's film aperture (width, height) in units of its distance.
+    /// The camera's film aperture (width, height): for a perspective camera in units of
+    /// its distance, for an orthographic one in scene units.
     ///
-    /// pbrt maps its screen window onto the image, and `fov` spans the window's extent of 2
-    /// (Pharr et al. 4th ed. §5.2): by default [-1, 1] on the shorter image side, the
-    /// longer side following the image's aspect. As a film, that is an aperture of
-    /// 2 tan(fov / 2) times the window, overscanned: the shorter side fits, for the file's
-    /// image size and one given later alike.
+    /// pbrt maps its screen window onto the image (Pharr et al. 4th ed. §5.2): by default
+    /// [-1, 1] on the shorter image side, the longer side following the image's aspect. A
+    /// perspective camera's `fov` spans the window's extent of 2, so its film is an
+    /// aperture of 2 tan(fov / 2) times the window; an orthographic camera's window is
+    /// measured in camera space (§5.2.1), whose units are the lengths of the camera's axes
+    /// in the scene (a `Scale` before `Camera` changes them). Either is overscanned: the
+    /// shorter side fits, for the file's image size and one given later alike.
     fn aperture(&self) -> [f32; 2] {
-        let t = (0.5 * self.fov.to_radians()).tan();
         let [sx, sy] = self.screen.unwrap_or([1.0, 1.0]);
-        [(2.0 * sx * t) as f32, (2.0 * sy * t) as f32]
+        let [kx, ky] = match (self.orthographic, self.camera_to_world) {
+            (true, Some(c2w)) => [c2w.transform_vector3(DVec3::X).length(), c2w.transform_vector3(DVec3::Y).length()],
+            (true, None) => [1.0, 1.0],
+            (false, _) => [(0.5 * self.fov.to_radians()).tan(); 2],
+        };
+        [(2.0 * sx * kx) as f32, (2.0 * sy * ky) as f32]
     }
 
     /// The imaging ratio scales the lights in single precision: one past f32's range (or
@@ -1114,11 +1131,16 @@ impl Parser {
             let right = c2w.transform_vector3(DVec3::X).normalize_or(DVec3::X);
             let [w, h] = self.out.resolution.unwrap_or([1280, 720]);
             let film = Film { aperture: self.aperture(), fit: FilmFit::Overscan };
+            let projection = match self.orthographic {
+                true => CameraProjection::Orthographic { height: film.fitted_height(w, h) },
+                false => CameraProjection::Perspective,
+            };
             self.out.camera = Some(CameraDesc {
                 eye: eye.as_vec3(),
                 target: (eye + forward).as_vec3(),
                 up: up.as_vec3(),
                 vfov: film.vfov(w, h),
+                projection,
                 film: Some(film),
                 ..Default::default()
             });

@@ -15,13 +15,15 @@ pub use maps::{read_map_images, MAX_MAP_SIDE};
 
 use crate::accel::lod::LodParams;
 use crate::accel::{Accel, Shape, Visibility};
-use crate::camera::{Camera, Projection};
+use crate::camera::{Camera, CameraError, Projection};
 use crate::error::{LoadError, PrepareError};
 use crate::geometry::StrandSet;
 use crate::hair_system::{self, Guides};
 use crate::io;
 use crate::light::Light;
-use crate::scene::{Description, GuideSource, HairSource, LightSource, MaterialSource, MeshSource, RoughnessSource};
+use crate::scene::{
+    CameraDesc, Description, GuideSource, HairSource, LightSource, MaterialSource, MeshSource, RoughnessSource,
+};
 use crate::shading::{Material, Roughness, Textured};
 use crate::world::World;
 use images::{Encoding, Textures};
@@ -268,15 +270,21 @@ pub fn prepare_owned(mut desc: Description) -> Result<(World, PrepareTimes), Pre
     prepare_taking(&desc, &mut taken)
 }
 
+/// The camera a scene's camera description gives on a film of `width` x `height`
+/// pixels: its projection (orthographic when the description has an orthographic height,
+/// else perspective with the vertical field of view the film's aspect ratio gives) and its
+/// clipping range.
+pub fn camera(c: &CameraDesc, width: u32, height: u32) -> Result<Camera, CameraError> {
+    let projection = match c.ortho_height_for(width, height) {
+        Some(height) => Projection::Orthographic { height },
+        None => Projection::Perspective { vfov_deg: c.vfov_for(width, height) },
+    };
+    Camera::new(c.eye, c.target, c.up, projection, width, height)?.clipped(c.clip[0], c.clip[1])
+}
+
 fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result<(World, PrepareTimes), PrepareError> {
     desc.validate()?;
-    let c = &desc.camera;
-    let (w, h) = (desc.settings.width, desc.settings.height);
-    let projection = match c.ortho_height_for(w, h) {
-        Some(height) => Projection::Orthographic { height },
-        None => Projection::Perspective { vfov_deg: c.vfov_for(w, h) },
-    };
-    let camera = Camera::new(c.eye, c.target, c.up, projection, w, h)?.clipped(c.clip[0], c.clip[1])?;
+    let camera = camera(&desc.camera, desc.settings.width, desc.settings.height)?;
     let start = Instant::now();
     let LoadedGeometry { shapes, materials, lods, visibility, mut warnings } = load_geometry_taking(desc, taken)?;
     let lights = lights(desc, &mut warnings)?;
@@ -284,7 +292,7 @@ fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result
     let (start, cpu) = (Instant::now(), crate::stats::process_cpu_time());
     // The global switch drops every strand set's level of detail.
     let lod = |p: Option<LodParams>| p.filter(|_| desc.settings.lod);
-    let lod_camera = crate::accel::lod::LodCamera { eye: c.eye, cone: camera.pixel_cone() };
+    let lod_camera = crate::accel::lod::LodCamera { eye: desc.camera.eye, cone: camera.pixel_cone() };
     let mut accel = Accel::build_with_lod_for(
         shapes.into_iter().zip(lods).map(|((s, m), l)| (in_spatial_order(s, lod(l)), m, lod(l))).collect(),
         Some(lod_camera),

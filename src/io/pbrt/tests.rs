@@ -513,6 +513,39 @@ fn the_field_of_view_spans_the_shorter_side_of_any_image_size() {
     }
 }
 
+/// pbrt's orthographic camera looks through the same screen window as the perspective
+/// one, measured in camera space (Pharr et al. 4th ed. §5.2.1): [-1, 1] on the shorter
+/// image side by default, so a window 2 units high at 2:1 and 1:1 and 4 at 1:2; a window
+/// of its own is its size; a `Scale` before `Camera` shrinks camera space units in the
+/// scene, so the window it sees grows by the inverse. `fov` means nothing to it.
+#[test]
+fn an_orthographic_camera_sees_its_screen_window_in_camera_space_units() {
+    let camera = |transform: &str, params: &str| {
+        let text = format!(
+            "{transform}Camera \"orthographic\" {params}\nFilm \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100\nWorldBegin\n"
+        );
+        read(&text).unwrap()
+    };
+    let height = |c: &crate::scene::CameraDesc, w, h| c.ortho_height_for(w, h).unwrap();
+    let s = camera("", "");
+    let c = s.camera.unwrap();
+    for ([w, h], want) in [([200, 100], 2.0), ([100, 100], 2.0), ([100, 200], 4.0)] {
+        assert!((height(&c, w, h) - want).abs() < 1e-5, "{w}x{h}: {}", height(&c, w, h));
+    }
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    let c = camera("", "\"float screenwindow\" [-3 3 -1.5 1.5]").camera.unwrap();
+    assert!((height(&c, 200, 100) - 3.0).abs() < 1e-5, "{}", height(&c, 200, 100));
+    let c = camera("Scale 0.5 0.5 1\n", "").camera.unwrap();
+    assert!((height(&c, 200, 100) - 4.0).abs() < 1e-5, "{}", height(&c, 200, 100));
+    let w = camera("", "\"float fov\" 30").warnings;
+    assert!(w.iter().any(|w| w.contains("fov")), "{w:?}");
+    // A projection tress does not have is drawn in perspective, and said.
+    let text = "Camera \"spherical\"\nWorldBegin\n";
+    let s = read(text).unwrap();
+    assert_eq!(s.camera.unwrap().projection, crate::scene::CameraProjection::Perspective);
+    assert!(s.warnings.iter().any(|w| w.contains("spherical")), "{:?}", s.warnings);
+}
+
 #[test]
 fn trianglemesh_normals_and_uvs_beyond_single_precision_are_errors_naming_them() {
     let mesh = |extra: &str| {

@@ -20,12 +20,7 @@ pub fn check(bytes: &[u8]) -> bool {
         let c = &desc.camera;
         assert!(c.eye.is_finite() && c.target.is_finite() && c.up.is_finite() && c.vfov.is_finite());
         // Either a camera or a clear error; never a panic.
-        let (w, h) = (desc.settings.width, desc.settings.height);
-        let projection = match c.ortho_height_for(w, h) {
-            Some(height) => tress::camera::Projection::Orthographic { height },
-            None => tress::camera::Projection::Perspective { vfov_deg: c.vfov_for(w, h) },
-        };
-        let _ = tress::camera::Camera::new(c.eye, c.target, c.up, projection, w, h);
+        let _ = tress::prepare::camera(c, desc.settings.width, desc.settings.height);
         // Reads only headers of the files the scene names (which mostly do not exist here).
         let _ = tress::prepare::estimate_memory(&desc);
         accepted = true;
