@@ -56,6 +56,9 @@ pub enum Light {
         edge_v: Vec3,
         /// Emitted radiance.
         radiance: Color,
+        /// Weight camera rays see it with (Arnold's `camera`; 0, Arnold's default for area
+        /// lights, lets them pass through it); every other ray sees it whole.
+        camera_visibility: f32,
     },
     /// A sphere emitting uniformly from its surface.
     Sphere {
@@ -65,6 +68,8 @@ pub enum Light {
         radius: f32,
         /// Emitted radiance.
         radiance: Color,
+        /// Weight camera rays see it with, as for [`Light::Quad`].
+        camera_visibility: f32,
     },
     /// A distant light of finite angular size (the sun as a disk), for soft shadows:
     /// uniform radiance over the cone of directions within its angular radius.
@@ -127,7 +132,7 @@ impl Light {
                 let falloff = smoothstep(cos_outer, cos_inner, cos);
                 LightSample { dir, dist, value: intensity * falloff / dist.powi(i32::from(decay)) }
             }
-            Light::Quad { corner, edge_u, edge_v, radiance } => {
+            Light::Quad { corner, edge_u, edge_v, radiance, .. } => {
                 let q = corner + edge_u * u + edge_v * v;
                 let (dir, dist) = towards(p, q)?;
                 let n = edge_u.cross(edge_v);
@@ -139,7 +144,7 @@ impl Light {
                 // Uniform on the area: pdf_solid_angle = dist^2 / (area * cos_light).
                 LightSample { dir, dist, value: radiance * (area * cos_light / (dist * dist)) }
             }
-            Light::Sphere { center, radius, radiance } => {
+            Light::Sphere { center, radius, radiance, .. } => {
                 let (axis, dc) = towards(p, center)?;
                 if dc <= radius {
                     return None;
@@ -191,7 +196,7 @@ impl Light {
     /// with the distance of that point; only area lights can be seen this way.
     pub fn emitted(&self, origin: Vec3, dir: Vec3, tmax: f32) -> Option<(f32, Color)> {
         match *self {
-            Light::Quad { corner, edge_u, edge_v, radiance } => {
+            Light::Quad { corner, edge_u, edge_v, radiance, .. } => {
                 let n = edge_u.cross(edge_v);
                 let denom = dir.dot(n);
                 if denom >= 0.0 {
@@ -212,7 +217,7 @@ impl Light {
                 };
                 ((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) && t > 0.0 && t < tmax).then_some((t, radiance))
             }
-            Light::Sphere { center, radius, radiance } => {
+            Light::Sphere { center, radius, radiance, .. } => {
                 let oc = origin - center;
                 let b = oc.dot(dir);
                 let c = oc.length_squared() - radius * radius;
@@ -287,11 +292,13 @@ impl Light {
         }
     }
 
-    /// Weight camera rays see this light with where they meet it: an environment's own
-    /// (constant or mapped), 1 for every other light.
+    /// Weight camera rays see this light with where they meet it: an environment's or an
+    /// area light's own, 1 for every other light.
     pub fn camera_visibility(&self) -> f32 {
         match *self {
-            Light::Environment { camera_visibility, .. } => camera_visibility,
+            Light::Environment { camera_visibility, .. }
+            | Light::Quad { camera_visibility, .. }
+            | Light::Sphere { camera_visibility, .. } => camera_visibility,
             Light::EnvironmentMap(ref map) => map.camera_visibility(),
             _ => 1.0,
         }
@@ -353,7 +360,12 @@ mod tests {
     #[test]
     fn sphere_light_irradiance_matches_closed_form() {
         // A sphere of radiance L seen straight on gives E = pi L sin^2(theta_max).
-        let light = Light::Sphere { center: Vec3::new(0.0, 0.0, 4.0), radius: 1.0, radiance: Color::ONE };
+        let light = Light::Sphere {
+            center: Vec3::new(0.0, 0.0, 4.0),
+            radius: 1.0,
+            radiance: Color::ONE,
+            camera_visibility: 1.0,
+        };
         let e = irradiance(&light, Vec3::ZERO, Vec3::Z, 64).x;
         let expected = PI * (1.0f32 / 16.0);
         assert!((e - expected).abs() < 0.01 * expected, "{e} vs {expected}");
@@ -369,6 +381,7 @@ mod tests {
             edge_u: Vec3::new(0.0, 2.0, 0.0),
             edge_v: Vec3::new(2.0, 0.0, 0.0),
             radiance: Color::ONE,
+            camera_visibility: 1.0,
         };
         let e = irradiance(&light, Vec3::ZERO, Vec3::Z, 128).x;
         let s = 1.0 / (1.0 + h * h).sqrt();
@@ -403,8 +416,14 @@ mod tests {
                 edge_u: Vec3::new(0.0, 1.5, 0.3),
                 edge_v: Vec3::new(2.0, 0.0, 0.0),
                 radiance: Color::ONE,
+                camera_visibility: 1.0,
             },
-            Light::Sphere { center: Vec3::new(0.5, 0.0, 3.0), radius: 0.7, radiance: Color::ONE },
+            Light::Sphere {
+                center: Vec3::new(0.5, 0.0, 3.0),
+                radius: 0.7,
+                radiance: Color::ONE,
+                camera_visibility: 1.0,
+            },
         ];
         for light in &lights {
             for (u, v) in [(0.1, 0.2), (0.7, 0.9), (0.5, 0.5), (0.95, 0.05)] {
@@ -451,10 +470,16 @@ mod tests {
             edge_u: Vec3::new(0.0, 2.0, 0.0),
             edge_v: Vec3::new(2.0, 0.0, 0.0),
             radiance: Color::ONE,
+            camera_visibility: 1.0,
         };
         assert_eq!(quad.emitted(Vec3::ZERO, Vec3::Z, 10.0).map(|h| h.0), Some(2.0));
         assert!(quad.emitted(Vec3::ZERO, Vec3::Z, 1.0).is_none());
-        let sphere = Light::Sphere { center: Vec3::new(0.0, 0.0, 5.0), radius: 1.0, radiance: Color::ONE };
+        let sphere = Light::Sphere {
+            center: Vec3::new(0.0, 0.0, 5.0),
+            radius: 1.0,
+            radiance: Color::ONE,
+            camera_visibility: 1.0,
+        };
         assert_eq!(sphere.emitted(Vec3::ZERO, Vec3::Z, 10.0).map(|h| h.0), Some(4.0));
     }
 }

@@ -172,8 +172,14 @@ fn lit_scene(integrator: Integrator, spp: u32, max_depth: u32, environment: bool
             edge_u: Vec3::new(1.0, 0.0, 0.0),
             edge_v: Vec3::new(0.0, 0.0, 1.0),
             radiance: Color::splat(4.0),
+            camera_visibility: 1.0,
         },
-        Light::Sphere { center: Vec3::new(1.5, 1.0, 1.0), radius: 0.3, radiance: Color::new(3.0, 2.0, 1.0) },
+        Light::Sphere {
+            center: Vec3::new(1.5, 1.0, 1.0),
+            radius: 0.3,
+            radiance: Color::new(3.0, 2.0, 1.0),
+            camera_visibility: 1.0,
+        },
         Light::distant(Vec3::new(-0.5, 1.0, 0.3).normalize(), Color::splat(1.0), 0.1),
     ];
     if environment {
@@ -585,6 +591,7 @@ fn an_unlit_plane_is_its_colour_with_and_without_lights() {
             edge_u: Vec3::new(1.0, 0.0, 0.0),
             edge_v: Vec3::new(0.0, 0.0, 1.0),
             radiance: Color::splat(4.0),
+            camera_visibility: 1.0,
         },
         Light::distant(Vec3::new(-0.5, 1.0, 0.3).normalize(), Color::splat(3.0), 0.1),
         Light::Environment { radiance: Color::splat(0.5), camera_visibility: 1.0 },
@@ -605,6 +612,47 @@ fn an_unlit_plane_is_its_colour_with_and_without_lights() {
                 let what = format!("{:?}, lit {lit}", desc.settings.integrator);
                 assert!((p.color - color).abs().max_element() < 1e-6, "{what}: {}", p.color);
             }
+        }
+    }
+}
+
+#[test]
+fn a_rect_light_hidden_from_the_camera_lights_the_floor_the_same() {
+    // A quad light of radiance 4 facing the camera, filling the image's centre, over a
+    // diffuse floor it lights; nothing behind it. Camera visibility 1 shows it, 0 lets the
+    // camera see through it to the black behind; the floor is lit alike either way.
+    let scene = |camera_visibility: f32, settings: RenderSettings| Description {
+        camera: CameraDesc {
+            eye: Vec3::new(0.0, 0.7, 3.0),
+            target: Vec3::new(0.0, 0.7, -1.0),
+            up: Vec3::Y,
+            vfov: 40.0,
+            ..Default::default()
+        },
+        settings,
+        contents: Contents {
+            lights: vec![Light::Quad {
+                corner: Vec3::new(-0.5, 0.3, -1.0),
+                edge_u: Vec3::X,
+                edge_v: Vec3::Y,
+                radiance: Color::splat(4.0),
+                camera_visibility,
+            }
+            .into()],
+            meshes: vec![mesh(TriangleMesh::plane(8.0), Material::Diffuse { color: Color::ONE }, Affine3A::IDENTITY)],
+            ..Default::default()
+        },
+    };
+    for settings in every_integrator(4, 2) {
+        let what = format!("{:?} {:?}", settings.integrator, settings.irradiance_cache);
+        let (shown, hidden) = (render(&scene(1.0, settings.clone()), 2), render(&scene(0.0, settings), 2));
+        let (w, h) = (shown.width as usize, shown.height as usize);
+        let centre = (h / 2) * w + w / 2;
+        assert!((shown.pixels[centre].color - Color::splat(4.0)).abs().max_element() < 1e-5, "{what}");
+        assert_eq!(hidden.pixels[centre].color, Color::ZERO, "{what}");
+        for x in 0..w {
+            let (a, b) = (shown.pixels[(h - 1) * w + x].color, hidden.pixels[(h - 1) * w + x].color);
+            assert!(a.min_element() > 0.01 && (a - b).abs().max_element() <= 1e-4 * a.max_element(), "{what}: {a} {b}");
         }
     }
 }

@@ -249,7 +249,12 @@ fn a_sample_clamp_bounds_every_sample_whatever_the_thread_count() {
         let mut desc = tress::demo::description(2000, 1);
         let s = &mut desc.settings;
         (s.width, s.height, s.spp, s.max_sample_value) = (64, 48, 4, max_sample_value);
-        let bulb = Light::Sphere { center: glam::Vec3::new(0.3, 0.6, 0.5), radius: 0.05, radiance: Color::splat(2e4) };
+        let bulb = Light::Sphere {
+            center: glam::Vec3::new(0.3, 0.6, 0.5),
+            radius: 0.05,
+            radiance: Color::splat(2e4),
+            camera_visibility: 1.0,
+        };
         desc.contents.lights.push(bulb.into());
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
         pool.install(|| tress::render::render(&prepare(&desc).unwrap().0, None).0)

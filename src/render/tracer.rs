@@ -84,12 +84,18 @@ impl<'w> Tracer<'w> {
     }
 
     /// The nearest light `ray` meets before distance `tmax` (area lights are not in the
-    /// BVH): its distance, the radiance it sends back along the ray, and the light.
+    /// BVH): its distance, the radiance it sends back along the ray, and the light. A
+    /// camera ray sees each light times its [`Light::camera_visibility`] and passes
+    /// through one of weight 0, as Arnold's camera rays pass through its area lights.
     pub(super) fn light_along(&self, ray: &Ray, tmax: f32) -> Option<(f32, Color, &'w Light)> {
         self.world
             .lights
             .iter()
-            .filter_map(|l| l.emitted(ray.origin, ray.dir, tmax).map(|(t, le)| (t, le, l)))
+            .filter_map(|l| {
+                let seen = if ray.camera { l.camera_visibility() } else { 1.0 };
+                let (t, le) = l.emitted(ray.origin, ray.dir, tmax).filter(|_| seen > 0.0)?;
+                Some((t, le * seen, l))
+            })
             .min_by(|a, b| a.0.total_cmp(&b.0))
     }
 

@@ -180,14 +180,15 @@ fn transform_light(l: &Light, m: &Affine3A) -> Light {
             cos_outer,
             decay,
         },
-        Light::Quad { corner, edge_u, edge_v, radiance } => Light::Quad {
+        Light::Quad { corner, edge_u, edge_v, radiance, camera_visibility } => Light::Quad {
             corner: m.transform_point3(corner),
             edge_u: m.transform_vector3(edge_u),
             edge_v: m.transform_vector3(edge_v),
             radiance,
+            camera_visibility,
         },
-        Light::Sphere { center, radius, radiance } => {
-            Light::Sphere { center: m.transform_point3(center), radius, radiance }
+        Light::Sphere { center, radius, radiance, camera_visibility } => {
+            Light::Sphere { center: m.transform_point3(center), radius, radiance, camera_visibility }
         }
         Light::Environment { radiance, camera_visibility } => Light::Environment { radiance, camera_visibility },
         // Infinitely far: only the transform's orthogonal part turns it, its rotation and,

@@ -1623,6 +1623,17 @@ impl<'g> Reader<'g> {
             let position = m.transform_point3(DVec3::ZERO).as_vec3();
             // Maya lights shine along their local −Z.
             let along = m.transform_vector3(DVec3::NEG_Z).as_vec3().normalize_or(Vec3::NEG_Y);
+            // Arnold's weight for camera rays on the lights they can meet: the sky dome's
+            // `camera` (1 by default), an area light's `ai_camera` (0 by default, as Arnold
+            // leaves its area lights out of the camera's view).
+            let camera_weight = |names: &[&str], default: f64| -> Res<f32> {
+                let w = scalar(g, n, names, default)? as f32;
+                if !(w.is_finite() && w >= 0.0) {
+                    let what = format!("light {}: `{}` {w} must be finite and not negative", node.name, names[0]);
+                    return Err((node.line, what));
+                }
+                Ok(w)
+            };
             let light = match kind {
                 "directionalLight" => Light::Distant { direction: -along, irradiance: power * shading },
                 "ambientLight" => Light::Environment { radiance: power, camera_visibility: 1.0 },
@@ -1635,17 +1646,7 @@ impl<'g> Reader<'g> {
                             node.name
                         ));
                     }
-                    let camera_visibility = scalar(g, n, &["camera"], 1.0)? as f32;
-                    if !(camera_visibility.is_finite() && camera_visibility >= 0.0) {
-                        return Err((
-                            node.line,
-                            format!(
-                                "light {}: `camera` {camera_visibility} must be finite and not negative",
-                                node.name
-                            ),
-                        ));
-                    }
-                    Light::Environment { radiance: power, camera_visibility }
+                    Light::Environment { radiance: power, camera_visibility: camera_weight(&["camera"], 1.0)? }
                 }
                 "pointLight" | "spotLight" => {
                     // Maya's decay rate 0 (No Decay, its default), 1 linear, 2 quadratic, 3
@@ -1705,7 +1706,13 @@ impl<'g> Reader<'g> {
                         _ => power,
                     };
                     // The quad emits towards edge_u × edge_v; Maya's area light towards −Z.
-                    Light::Quad { corner: corner + edge_v, edge_u, edge_v: -edge_v, radiance }
+                    Light::Quad {
+                        corner: corner + edge_v,
+                        edge_u,
+                        edge_v: -edge_v,
+                        radiance,
+                        camera_visibility: camera_weight(&["ai_camera", "aiCamera"], 0.0)?,
+                    }
                 }
             };
             // The factors after the check above (π for Maya's renderer, the decay's unit, an

@@ -595,15 +595,19 @@ fn lights_of_a_file_arnold_renders_light_as_arnold_does() {
              createNode aiAreaLight -n qs -p q;\n\tsetAttr \".sc\" -type \"float3\" 1 0.5 0;\n\tsetAttr \".intensity\" 8;\n{attrs}"
         ))
         .unwrap();
-        let LightSource::Inline(Light::Quad { edge_u, edge_v, radiance, .. }) = s.contents.lights[0] else {
+        let LightSource::Inline(Light::Quad { edge_u, edge_v, radiance, camera_visibility, .. }) = s.contents.lights[0]
+        else {
             panic!("{:?}", s.contents.lights)
         };
         assert!((edge_u.cross(edge_v).length() - 8.0).abs() < 1e-5);
-        radiance
+        (radiance, camera_visibility)
     };
     let area_cm2 = 8.0 * 100.0 * 100.0;
-    assert!((quad("\tsetAttr \".ai_exposure\" 1;\n") - Vec3::new(16.0, 8.0, 0.0) / area_cm2).length() < 1e-9);
-    assert_eq!(quad("\tsetAttr \".ai_normalize\" 0;\n"), Vec3::new(8.0, 4.0, 0.0));
+    let (radiance, seen) = quad("\tsetAttr \".ai_exposure\" 1;\n");
+    assert!((radiance - Vec3::new(16.0, 8.0, 0.0) / area_cm2).length() < 1e-9);
+    assert_eq!(quad("\tsetAttr \".ai_normalize\" 0;\n").0, Vec3::new(8.0, 4.0, 0.0));
+    // Hidden from the camera, as Arnold's area lights are, unless `ai_camera` shows it.
+    assert_eq!((seen, quad("\tsetAttr \".ai_camera\" 1;\n").1), (0.0, 1.0));
 }
 
 #[test]

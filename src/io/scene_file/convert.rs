@@ -304,9 +304,10 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
                 decay: 2,
             }
         }
-        LightToml::Quad { corner, edge_u, edge_v, radiance } => {
+        LightToml::Quad { corner, edge_u, edge_v, radiance, camera_visibility } => {
             check("corner and edges", &[corner, edge_u, edge_v].concat(), ANY)?;
             check("radiance", &radiance, 0.0)?;
+            check("camera_visibility", &[camera_visibility], 0.0)?;
             if Vec3::from(edge_u).cross(edge_v.into()).length_squared() == 0.0 {
                 return Err("quad edges are parallel or zero".into());
             }
@@ -315,13 +316,15 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
                 edge_u: edge_u.into(),
                 edge_v: edge_v.into(),
                 radiance: radiance.into(),
+                camera_visibility,
             }
         }
-        LightToml::Sphere { center, radius, radiance } => {
+        LightToml::Sphere { center, radius, radiance, camera_visibility } => {
             check("center", &center, ANY)?;
             check("radius", &[radius], 0.0)?;
             check("radiance", &radiance, 0.0)?;
-            Light::Sphere { center: center.into(), radius, radiance: radiance.into() }
+            check("camera_visibility", &[camera_visibility], 0.0)?;
+            Light::Sphere { center: center.into(), radius, radiance: radiance.into(), camera_visibility }
         }
         LightToml::Environment { radiance, ref file, rotation, intensity, exposure, camera_visibility } => {
             check("rotation", &[rotation], ANY)?;

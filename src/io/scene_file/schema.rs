@@ -269,6 +269,9 @@ pub(super) enum LightToml {
         edge_v: V3,
         #[serde(deserialize_with = "exact")]
         radiance: V3,
+        /// Weight camera rays see it with.
+        #[serde(default = "one")]
+        camera_visibility: f32,
     },
     Sphere {
         #[serde(deserialize_with = "exact")]
@@ -276,6 +279,9 @@ pub(super) enum LightToml {
         radius: f32,
         #[serde(deserialize_with = "exact")]
         radiance: V3,
+        /// Weight camera rays see it with.
+        #[serde(default = "one")]
+        camera_visibility: f32,
     },
     /// Exactly one of `radiance` (constant) and `file` (an equirectangular map).
     Environment {

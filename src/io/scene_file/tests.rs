@@ -81,6 +81,25 @@ fn wrong_type_and_missing_field_are_errors() {
     assert!(e.contains("laser"), "{e}");
 }
 
+/// Quad and sphere lights take a `camera_visibility` too (1 when not given).
+#[test]
+fn area_lights_take_a_camera_visibility() {
+    let light = |body: &str| {
+        let d = parse(&format!("[[light]]\n{body}\n"));
+        d.map(|d| match &d.contents.lights[..] {
+            [LightSource::Inline(l)] => l.camera_visibility(),
+            other => panic!("{other:?}"),
+        })
+    };
+    let quad = "type = \"quad\"\ncorner = [0, 1, 0]\nedge_u = [1, 0, 0]\nedge_v = [0, 0, 1]\nradiance = [1, 1, 1]";
+    let sphere = "type = \"sphere\"\ncenter = [0, 1, 0]\nradius = 0.5\nradiance = [1, 1, 1]";
+    assert_eq!(light(quad).unwrap(), 1.0);
+    assert_eq!(light(&format!("{quad}\ncamera_visibility = 0")).unwrap(), 0.0);
+    assert_eq!(light(&format!("{sphere}\ncamera_visibility = 0.5")).unwrap(), 0.5);
+    let e = light(&format!("{sphere}\ncamera_visibility = -1")).unwrap_err().to_string();
+    assert!(e.contains("light 1") && e.contains("camera_visibility"), "{e}");
+}
+
 /// `camera_visibility` weighs what camera rays see of an environment light, constant or
 /// mapped (1 when not given); a negative weight is an error naming the key.
 #[test]

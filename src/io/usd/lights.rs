@@ -21,13 +21,15 @@
 //! +π and its right edge −π, longitude 0 along +Z and π/2 along +X. That is tress's map
 //! layout turned 180° about +Y. `DomeLight_1` first turns its pole from +Y to its
 //! `poleAxis` (`"Z"`, or `"scene"` on a Z-up stage); the dome's own transform turns it
-//! after that. Arnold-USD's `primvars:arnold:camera` on a dome is the weight camera rays
-//! see it with (0 hides it from the camera; it still lights).
+//! after that. Arnold-USD's `primvars:arnold:camera` is the weight camera rays see a
+//! light with (0 hides it from the camera; it still lights); Arnold's default is 1 on a
+//! dome and 0 on its area lights (sphere, rect, disk, cylinder), which the camera then
+//! sees through.
 //!
 //! Arnold-USD hands a light's other `primvars:arnold:` primvars to its Arnold light node
 //! (`ReadArnoldParameters` in its `read_light.cpp`): the per-ray weights `diffuse`,
-//! `specular`, `transmission`, `sss`, `indirect`, `volume` (and `camera` on the lights
-//! drawn for camera rays), and `cast_shadows`. tress's lights reach every ray in full and
+//! `specular`, `transmission`, `sss`, `indirect`, `volume`, and `cast_shadows`. tress's
+//! lights reach every other ray in full and
 //! always cast shadows, so a weight other than 1 or shadows turned off is reported, once per
 //! attribute with a count and the first prim. Ray visibility primvars
 //! (`primvars:arnold:visibility`, `...:visibility:camera`, ...) are Arnold's shape
@@ -46,8 +48,7 @@ use openusd::usd::{Prim, TimeCode};
 pub const LIGHT_TYPES: [&str; 7] =
     ["DistantLight", "SphereLight", "RectLight", "DiskLight", "CylinderLight", "DomeLight", "DomeLight_1"];
 
-/// Arnold's per-ray weights of its light nodes (1 by default) that tress has no switch for;
-/// `camera` on a light that camera rays see (a dome's is honoured).
+/// Arnold's per-ray weights of its light nodes (1 by default) that tress has no switch for.
 const ARNOLD_RAY_WEIGHTS: [&str; 6] = ["diffuse", "specular", "transmission", "sss", "indirect", "volume"];
 
 /// Most spheres a cylinder light is drawn with (a cylinder longer than this many diameters
@@ -66,17 +67,15 @@ fn input(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<openusd::sdf::Va
 /// Reports the Arnold primvars of light `prim` (of type `kind`) that tress does not apply
 /// (see the module's documentation). A value that is not a number or a flag is not one
 /// Arnold-USD converts either, and is passed over.
-fn note_arnold_light_parameters(prim: &Prim, kind: &str, time: TimeCode, notes: &mut Notes) {
+fn note_arnold_light_parameters(prim: &Prim, time: TimeCode, notes: &mut Notes) {
     let get = |name: &str| value(prim, &format!("primvars:arnold:{name}"), time).ok().flatten();
-    let drawn = matches!(kind, "SphereLight" | "RectLight" | "DiskLight" | "CylinderLight");
-    let weights = ARNOLD_RAY_WEIGHTS.iter().copied().chain(drawn.then_some("camera"));
-    for name in weights {
+    for name in ARNOLD_RAY_WEIGHTS {
         if let Some(w) = get(name).and_then(|v| number(Some(v), name).ok().flatten()) {
             if w != 1.0 {
                 notes.note(
                     format!(
                         "Arnold light weight `primvars:arnold:{name}` other than 1: not applied (tress's lights \
-                         reach every ray in full)"
+                         reach every ray but camera rays in full)"
                     ),
                     prim,
                 );
@@ -97,6 +96,15 @@ fn note_arnold_light_parameters(prim: &Prim, kind: &str, time: TimeCode, notes: 
             &format!("primvars:arnold:{name}"),
         );
     }
+}
+
+/// Arnold-USD's `primvars:arnold:camera` on `prim`, the weight camera rays see a light with
+/// (`default` when not authored).
+fn camera_weight(prim: &Prim, time: TimeCode, default: f32) -> Res<f32> {
+    let w =
+        number(value(prim, "primvars:arnold:camera", time)?, "primvars:arnold:camera")?.map_or(default, |x| x as f32);
+    anyhow::ensure!(w.is_finite() && w >= 0.0, "`primvars:arnold:camera` must be finite and not negative");
+    Ok(w)
 }
 
 /// The light `prim` of type `kind`, placed by `transform` (local to world), as the lights
@@ -131,7 +139,9 @@ pub fn read_light(
     {
         notes.note("light shaping (cones, focus, IES profiles): not applied".into(), prim);
     }
-    note_arnold_light_parameters(prim, kind, time, notes);
+    note_arnold_light_parameters(prim, time, notes);
+    // Arnold's default `camera` weight: 1 on a sky dome, 0 on its area lights.
+    let camera_visibility = camera_weight(prim, time, if kind.starts_with("DomeLight") { 1.0 } else { 0.0 })?;
     let scale = transform.matrix3.determinant().abs().cbrt();
     let size = |name: &str, d: f32| -> Res<f32> {
         let x = num(name, d)?;
@@ -140,7 +150,7 @@ pub fn read_light(
     };
     if kind == "CylinderLight" {
         let (length, radius) = (size("length", 1.0)?, size("radius", 0.5)?);
-        return Ok(cylinder_spheres(transform, length, radius, emission, normalize));
+        return Ok(cylinder_spheres(transform, length, radius, emission, normalize, camera_visibility));
     }
     Ok(vec![LightSource::Inline(match kind {
         "DistantLight" => {
@@ -167,13 +177,6 @@ pub fn read_light(
                 };
             // +Y to +Z: 90° about +X.
             let pole = if pole_z { Mat3::from_rotation_x(0.5 * std::f32::consts::PI) } else { Mat3::IDENTITY };
-            // Arnold's weight for camera rays (`camera` on its sky dome), as Arnold-USD writes it.
-            let camera_visibility = number(value(prim, "primvars:arnold:camera", time)?, "primvars:arnold:camera")?
-                .map_or(1.0, |x| x as f32);
-            anyhow::ensure!(
-                camera_visibility.is_finite() && camera_visibility >= 0.0,
-                "`primvars:arnold:camera` must be finite and not negative"
-            );
             match dome_texture(prim, time, emission, notes)? {
                 Some(mut map) => {
                     map.placement = map
@@ -189,7 +192,7 @@ pub fn read_light(
             let radius = size("radius", 0.5)? * scale;
             let area = 4.0 * std::f32::consts::PI * radius * radius;
             let radiance = if normalize && area > 0.0 { emission / area } else { emission };
-            Light::Sphere { center: transform.transform_point3(Vec3::ZERO), radius, radiance }
+            Light::Sphere { center: transform.transform_point3(Vec3::ZERO), radius, radiance, camera_visibility }
         }
         _ => {
             let (w, h) = if kind == "RectLight" {
@@ -207,20 +210,22 @@ pub fn read_light(
             let edge_v = transform.transform_vector3(Vec3::new(w, 0.0, 0.0));
             let area = edge_u.cross(edge_v).length();
             let radiance = if normalize && area > 0.0 { emission / area } else { emission };
-            Light::Quad { corner, edge_u, edge_v, radiance }
+            Light::Quad { corner, edge_u, edge_v, radiance, camera_visibility }
         }
     })])
 }
 
 /// A cylinder light (`length` along its local X, `radius`, centred on its origin, emitting
 /// `emission` from its side, per unit area when `normalize`) as a row of spheres along its
-/// placed axis with the side's area and power (the module docs).
+/// placed axis with the side's area and power (the module docs), seen by camera rays with
+/// weight `camera_visibility`.
 fn cylinder_spheres(
     transform: &Affine3A,
     length: f32,
     radius: f32,
     emission: Vec3,
     normalize: bool,
+    camera_visibility: f32,
 ) -> Vec<LightSource> {
     let axis = transform.transform_vector3(Vec3::X);
     let length = length * axis.length();
@@ -241,7 +246,7 @@ fn cylinder_spheres(
     (0..n)
         .map(|k| {
             let center = centre + step * (k as f32 + 0.5 - 0.5 * n as f32);
-            LightSource::Inline(Light::Sphere { center, radius: r, radiance })
+            LightSource::Inline(Light::Sphere { center, radius: r, radiance, camera_visibility })
         })
         .collect()
 }

@@ -511,7 +511,7 @@ def DomeLight "Backdrop" { float inputs:intensity = 2 double primvars:arnold:cam
 "#;
     let s = read_body(body);
     assert_eq!(s.contents.lights.len(), 7);
-    let LightSource::Inline(Light::Quad { corner, edge_u, edge_v, radiance }) = s.contents.lights[0] else {
+    let LightSource::Inline(Light::Quad { corner, edge_u, edge_v, radiance, .. }) = s.contents.lights[0] else {
         panic!("{:?}", s.contents.lights[0])
     };
     // Normalized: the emission over the area (2); turned to face down from y = 5.
@@ -542,7 +542,7 @@ def DomeLight "Backdrop" { float inputs:intensity = 2 double primvars:arnold:cam
 #[test]
 fn arnold_light_primvars_tress_cannot_apply_are_said_once_per_attribute() {
     let body = r#"
-def RectLight "Rect" { float primvars:arnold:diffuse = 0  float primvars:arnold:camera = 0 }
+def RectLight "Rect" { float primvars:arnold:diffuse = 0  float primvars:arnold:camera = 0.5 }
 def SphereLight "Bulb" {
     float primvars:arnold:diffuse = 0.5
     bool primvars:arnold:cast_shadows = 0
@@ -559,10 +559,14 @@ def DistantLight "Sun" { float primvars:arnold:camera = 0  uchar primvars:arnold
     let diffuse = has("`primvars:arnold:diffuse` other than 1: not applied");
     assert_eq!(diffuse.len(), 1, "{:?}", s.warnings);
     assert!(diffuse[0].ends_with("(2; first: /Rect)"), "{diffuse:?}");
-    // Camera rays see a rect light whole; a dome's weight is honoured, a distant light is
-    // not drawn, and a specular weight of 1 is what tress does.
-    let camera = has("`primvars:arnold:camera` other than 1");
-    assert!(camera.len() == 1 && camera[0].ends_with("(1; first: /Rect)"), "{:?}", s.warnings);
+    // Camera weights are honoured (an area light's by default 0, as Arnold's), and a
+    // specular weight of 1 is what tress does.
+    assert!(has("`primvars:arnold:camera` other than 1").is_empty(), "{:?}", s.warnings);
+    let seen = |i: usize| match &s.contents.lights[i] {
+        LightSource::Inline(l) => l.camera_visibility(),
+        other => panic!("{other:?}"),
+    };
+    assert_eq!((seen(0), seen(1), seen(3)), (0.5, 0.0, 1.0));
     assert!(has("primvars:arnold:specular").is_empty(), "{:?}", s.warnings);
     assert_eq!(has("`primvars:arnold:cast_shadows` off: their shadows are cast (1; first: /Bulb)").len(), 1);
     let rays = has("Arnold ray visibility primvars on lights: not applied");
@@ -589,7 +593,7 @@ def CylinderLight "Stub" { float inputs:length = 1.5 float inputs:radius = 0.5 }
         s.contents.lights[range]
             .iter()
             .map(|l| match l {
-                LightSource::Inline(Light::Sphere { center, radius, radiance }) => (*center, *radius, *radiance),
+                LightSource::Inline(Light::Sphere { center, radius, radiance, .. }) => (*center, *radius, *radiance),
                 other => panic!("{other:?}"),
             })
             .collect()
