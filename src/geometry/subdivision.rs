@@ -54,6 +54,56 @@ pub struct Subdivided {
     pub asked: u32,
 }
 
+/// Most iterations Arnold's `subdiv_iterations` holds (a byte); readers refuse a count past
+/// it ([`arnold_iterations`]).
+pub const MAX_ITERATIONS: u32 = 255;
+
+/// Faces one subdivided mesh may have: an iteration past it is not applied (Arnold applies
+/// `subdiv_iterations` uniformly, 4 times the faces per iteration).
+pub const MAX_FACES_PER_MESH: usize = 2_000_000;
+
+/// Faces the subdivision of all of a file's meshes may make together: a few lines of text
+/// asking for many iterations on many meshes must not exhaust memory.
+pub const MAX_FACES_PER_FILE: usize = 8_000_000;
+
+/// An authored iteration count as Arnold holds it: `None` when it is not 0 to
+/// [`MAX_ITERATIONS`].
+pub fn arnold_iterations(authored: impl TryInto<u32>) -> Option<u32> {
+    authored.try_into().ok().filter(|&i| i <= MAX_ITERATIONS)
+}
+
+/// The faces the subdivision of one file's meshes has made so far, which
+/// [`MAX_FACES_PER_FILE`] bounds; each mesh is also bounded by [`MAX_FACES_PER_MESH`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FaceBudget {
+    /// Faces made so far.
+    pub used: usize,
+}
+
+impl FaceBudget {
+    /// [`PolygonMesh::subdivide`] within the budget, counting the faces it makes.
+    pub fn subdivide(&mut self, mesh: &PolygonMesh, iterations: u32) -> (PolygonMesh, Subdivided) {
+        let left = MAX_FACES_PER_FILE.saturating_sub(self.used);
+        let (refined, done) = mesh.subdivide(iterations, MAX_FACES_PER_MESH.min(left));
+        if done.iterations > 0 {
+            self.used += refined.counts.len();
+        }
+        (refined, done)
+    }
+}
+
+impl Subdivided {
+    /// What a reader says of a mesh the budget stopped short of its iterations, if it did.
+    pub fn stopped(&self) -> Option<String> {
+        (self.iterations < self.asked).then(|| {
+            format!(
+                "subdivision stopped before an iteration past {MAX_FACES_PER_MESH} faces per mesh or \
+                 {MAX_FACES_PER_FILE} per file"
+            )
+        })
+    }
+}
+
 impl PolygonMesh {
     /// Checks that the counts cover the indices, every index is a vertex, every face has
     /// at least three vertices and the UVs (if any) are one per corner.

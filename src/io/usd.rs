@@ -48,6 +48,7 @@ pub use export::{usda_text, write_usd};
 use super::imported::Imported;
 use super::ImportOptions;
 use crate::error::LoadError;
+use crate::geometry::subdivision::FaceBudget;
 use crate::scene::{Contents, HairEntry, HairSource, MaterialSource, MeshEntry, MeshSource};
 use crate::shading::Material;
 use glam::{Affine3A, DMat4, Vec3};
@@ -83,13 +84,9 @@ const STRUCTURE: [&str; 15] = [
 
 /// What reading one file gathers as it goes: warnings counted by kind (each kind is
 /// reported once, with how many prims it concerns and the first of them), and the faces
-/// subdivision has made so far, which [`MAX_SUBDIVIDED_FACES_PER_FILE`] bounds.
+/// subdivision has made so far.
 #[derive(Default)]
-pub struct Notes(BTreeMap<String, (usize, String)>, pub usize);
-
-/// Faces the subdivision of all of a file's meshes may make together: a few lines of text
-/// asking for many iterations on many meshes must not exhaust memory.
-pub const MAX_SUBDIVIDED_FACES_PER_FILE: usize = 8_000_000;
+pub struct Notes(BTreeMap<String, (usize, String)>, pub FaceBudget);
 
 impl Notes {
     /// Counts one prim under `what`.

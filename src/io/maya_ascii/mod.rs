@@ -5,8 +5,10 @@
 //! into an [`Imported`] scene:
 //!
 //! - **mesh**: vertices (`.vt`, plus tweaks `.pt`), edges (`.ed`), faces (`.fc`, as edge
-//!   loops) and UV set 0 (`.uvst[0].uvsp`, per face corner), triangulated as fans and
-//!   placed by its DAG transforms (translate, rotate with its order, scale, pivots, rotate
+//!   loops) and UV set 0 (`.uvst[0].uvsp`, per face corner), as a [`PolygonMesh`]
+//!   (Catmull-Clark subdivided when MtoA's `aiSubdivType` is 1, `aiSubdivIterations`
+//!   times, Arnold's default 1) triangulated as
+//!   fans, and placed by its DAG transforms (translate, rotate with its order, scale, pivots, rotate
 //!   axis). A mesh built by a `polySphere`, `polyPlane`, `polyTorus`, `polyCube` or
 //!   `polyCylinder` node is rebuilt from that node's attributes (spheres, cubes and
 //!   cylinders with Maya's vertex numbers, so
@@ -81,6 +83,7 @@ use super::arnold_surface::{Flat, StandardSurface};
 use super::imported::{relative_width, Imported, RELATIVE_WIDTH};
 use crate::error::LoadError;
 use crate::geometry::curve::Nurbs;
+use crate::geometry::subdivision::{self, arnold_iterations, FaceBudget, PolygonMesh};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::hair_system::{
     follicles::follicles_at_uvs, Guides, HairColors, HairSystem, Interp, NoiseMethod, Ramp, RampKey,
@@ -262,6 +265,10 @@ struct Reader<'g> {
     saved_pose: Option<&'g Graph>,
     /// The material of each `aiStandardSurface` or `aiFlat` met on meshes (its warning said once).
     surface_shaders: HashMap<usize, Material>,
+    /// The faces subdivision has made in this file.
+    budget: FaceBudget,
+    /// Warnings counted by kind ([`Reader::note`]): how many nodes, and the first.
+    notes: BTreeMap<String, (usize, String)>,
 }
 
 impl<'g> Reader<'g> {
@@ -282,6 +289,8 @@ impl<'g> Reader<'g> {
             dir: None,
             saved_pose: None,
             surface_shaders: HashMap::new(),
+            budget: FaceBudget::default(),
+            notes: BTreeMap::new(),
         }
     }
 
@@ -302,6 +311,9 @@ impl<'g> Reader<'g> {
         }
         for n in self.of_kind("mesh").collect::<Vec<_>>() {
             self.mesh(n)?;
+        }
+        for (what, (count, first)) in std::mem::take(&mut self.notes) {
+            self.out.warnings.push(format!("{what} ({count}; first: {first})"));
         }
         for n in self.of_kind("follicle").collect::<Vec<_>>() {
             self.place_follicle(n)?;
@@ -602,7 +614,7 @@ impl<'g> Reader<'g> {
             r.kind(m) == "mesh" && r.g.nodes[m].attrs.iter().any(|a| a.name.starts_with("vt"))
                 || PROCEDURAL_MESHES.contains(&r.kind(m))
         };
-        let (mesh, faces) = match history.first() {
+        let (poly, ptex) = match history.first() {
             Some(&src) if !stores(self, n) => {
                 // Built by a primitive node, or deformed from a shape upstream through a
                 // chain of nodes: `transformGeometry` and `deleteComponent` ones are applied,
@@ -647,21 +659,21 @@ impl<'g> Reader<'g> {
                         self.kind(src)
                     ));
                 }
-                let (mesh, faces) = built.finish();
-                if mesh.indices.is_empty() {
+                let (poly, ptex) = built.finish();
+                if poly.polygons.is_empty() {
                     self.out
                         .warnings
                         .push(format!("mesh {}: its history deletes every face: nothing to draw", node.name));
                     return Ok(());
                 }
-                (mesh, faces)
+                (poly, ptex)
             }
             _ => match stored_mesh(g, n)? {
                 Some(m) => Built::Poly(m).finish(),
                 None => return Ok(()),
             },
         };
-        mesh.validate().map_err(|e| (node.line, format!("mesh {}: {e}", node.name)))?;
+        let (cage, mesh, faces) = self.triangles(n, poly, ptex)?;
         let world = self.world(n)?;
         let material = match self.mesh_shader(n) {
             Some(shader) if matches!(self.kind(shader), "aiStandardSurface" | "aiFlat") => {
@@ -680,7 +692,7 @@ impl<'g> Reader<'g> {
             }
             _ => Material::Diffuse { color: self.mesh_color(n)? },
         };
-        let mut placed = mesh.clone();
+        let mut placed = cage;
         let transform = finite_affine(g, n, &world)?;
         placed.transform(&transform);
         self.meshes.insert(n, (self.out.contents.meshes.len(), placed, faces));
@@ -691,6 +703,74 @@ impl<'g> Reader<'g> {
             visibility: shape_visibility(g, n)?,
         });
         Ok(())
+    }
+
+    /// A mesh's polygons as triangles ([`PolygonMesh::triangulate`]): the cage as Maya has it
+    /// (where follicles and XGen grooms are placed; with the Ptex faces of its triangles, or
+    /// `ptex` of them when tress does not number its faces as Maya does), and the mesh drawn:
+    /// the cage, or its Catmull-Clark subdivision as Arnold subdivides it
+    /// ([`Reader::subdivision`]) within the file's [`FaceBudget`], smooth shaded.
+    fn triangles(&mut self, n: usize, poly: PolyMesh, ptex: Option<u32>) -> Res<(TriangleMesh, TriangleMesh, Faces)> {
+        let node = &self.g.nodes[n];
+        let polygons = poly.polygon_mesh();
+        polygons.validate().map_err(|e| (node.line, format!("mesh {}: {e}", node.name)))?;
+        let (cage, _) = polygons.triangulate(poly.smooth);
+        let drawn = match self.subdivision(n)? {
+            Some(iterations) => {
+                let (refined, done) = self.budget.subdivide(&polygons, iterations);
+                if let Some(stopped) = done.stopped() {
+                    self.note(stopped, n, "");
+                }
+                refined.triangulate(true).0
+            }
+            None => cage.clone(),
+        };
+        drawn.validate().map_err(|e| (node.line, format!("mesh {}: {e}", node.name)))?;
+        let faces = match ptex {
+            Some(count) => Faces::Count(count),
+            None => Faces::Of(poly.ptex_faces()),
+        };
+        Ok((cage, drawn, faces))
+    }
+
+    /// The Catmull-Clark iterations Arnold applies to mesh `n`, from the attributes MtoA adds
+    /// to meshes: `aiSubdivType` (0 none, its default; 1 `catclark`; 2 `linear`) and
+    /// `aiSubdivIterations` (1 unless set; 0 to [`subdivision::MAX_ITERATIONS`], else not
+    /// subdivided). `None`: drawn as stored. Linear subdivision, which tress does not apply,
+    /// is drawn as the cage: the same surface but where a polygon is not flat.
+    fn subdivision(&mut self, n: usize) -> Res<Option<u32>> {
+        let g = self.g;
+        match scalar(g, n, &["ai_subdiv_type", "aiSubdivType"], 0.0)? {
+            0.0 => return Ok(None),
+            1.0 => {}
+            2.0 => {
+                self.note("`aiSubdivType` linear, which tress does not apply: drawn as the cage".into(), n, "");
+                return Ok(None);
+            }
+            other => {
+                let what = "`aiSubdivType` other than 0, 1 or 2: not subdivided";
+                self.note(what.into(), n, &other.to_string());
+                return Ok(None);
+            }
+        }
+        let authored = scalar(g, n, &["ai_subdiv_iterations", "aiSubdivIterations"], 1.0)?;
+        let held = (authored.fract() == 0.0 && authored.abs() < 1e18).then(|| arnold_iterations(authored as i64));
+        match held.flatten() {
+            Some(0) => Ok(None),
+            Some(iterations) => Ok(Some(iterations)),
+            None => {
+                let what = format!("`aiSubdivIterations` not 0 to {}: not subdivided", subdivision::MAX_ITERATIONS);
+                self.note(what, n, &authored.to_string());
+                Ok(None)
+            }
+        }
+    }
+
+    /// Counts node `n` under the warning `what`, the first named (with `why`, if any).
+    fn note(&mut self, what: String, n: usize, why: &str) {
+        let name = &self.g.nodes[n].name;
+        let first = if why.is_empty() { name.clone() } else { format!("{name}: {why}") };
+        self.notes.entry(what).or_insert((0, first)).0 += 1;
     }
 
     /// The mesh a primitive node builds, from that node's attributes (Maya's defaults when
@@ -710,15 +790,13 @@ impl<'g> Reader<'g> {
             "polySphere" => {
                 let (sa, sh) =
                     (divisions(&["sa", "subdivisionsAxis"], 20.0)?, divisions(&["sh", "subdivisionsHeight"], 20.0)?);
-                let (mut m, ids) = poly_sphere(check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?, sa, sh);
-                m.transform(&primitive_axis(g, src)?);
+                let sphere = poly_sphere(check(scalar(g, src, &["r", "radius"], 1.0)?, "radius")?, sa, sh);
                 // Quads between the rings and a triangle (three Ptex faces) per column at
                 // each pole.
-                Some(Built::Tri(Primitive {
-                    mesh: m,
-                    faces: Faces::Count(sa * (sh - 2) + 6 * sa),
-                    maya_ids: Some(ids),
-                }))
+                let mut built =
+                    Built::Primitive(Primitive { mesh: sphere, faces: sa * (sh - 2) + 6 * sa, numbered: true });
+                built.transform(&primitive_axis(g, src)?);
+                Some(built)
             }
             "polyCube" => {
                 let size = Vec3::new(
@@ -752,11 +830,10 @@ impl<'g> Reader<'g> {
                     // Caps of more rings have the same shape; their numbering is not known
                     // here, so they are drawn as triangles no tweak or deletion refers to.
                     _ => {
-                        let (mesh, _) = polygon_mesh(&cylinder.positions, &cylinder.uvs, &cylinder.polygons, true);
                         // Ptex faces: the side's quads, each cap's inner triangles (3 each)
                         // and its rings of quads.
-                        let faces = Faces::Count(sa * sh + 2 * (3 * sa + (sc - 1) * sa));
-                        Built::Tri(Primitive { mesh, faces, maya_ids: None })
+                        let faces = sa * sh + 2 * (3 * sa + (sc - 1) * sa);
+                        Built::Primitive(Primitive { mesh: cylinder, faces, numbered: false })
                     }
                 };
                 built.transform(&primitive_axis(g, src)?);
@@ -771,17 +848,36 @@ impl<'g> Reader<'g> {
                     sa,
                     sh,
                 );
-                Some(Built::Tri(Primitive { mesh: m, faces: Faces::Count(sa * sh), maya_ids: None }))
+                // Its quads over one vertex per place: the torus's grid repeats its first
+                // row and column (at UV 1) for the UVs only.
+                let (rows, row) = (sa, sh + 1);
+                let at = |i: u32, j: u32| (i % rows) * row + j % sh;
+                let polygons = (0..rows)
+                    .flat_map(|i| (0..sh).map(move |j| [(i, j), (i, j + 1), (i + 1, j + 1), (i + 1, j)]))
+                    .map(|q| (q.map(|(i, j)| at(i, j)).to_vec(), Some(q.map(|(i, j)| (i * row + j) as i64).to_vec())))
+                    .collect();
+                let torus = PolyMesh { positions: m.positions, uvs: m.uvs.unwrap_or_default(), polygons, smooth: true };
+                Some(Built::Primitive(Primitive { mesh: torus, faces: sa * sh, numbered: false }))
             }
             "polyPlane" => {
                 let w = check(scalar(g, src, &["w", "width"], 1.0)?, "width")?;
                 let h = check(scalar(g, src, &["h", "height"], 1.0)?, "height")?;
-                let mut m = TriangleMesh::plane(1.0);
-                m.transform(&Affine3A::from_scale(Vec3::new(w, 1.0, h)));
-                // Drawn as one quad; Maya divides it into a grid of faces (10 × 10 unless set).
+                let m = TriangleMesh::plane(1.0);
+                // Drawn as one quad (facing +Y); Maya divides it into a grid of faces (10 ×
+                // 10 unless set).
+                let quad = vec![0, 3, 2, 1];
+                let uvs = m.uvs.unwrap_or_default();
+                let plane = PolyMesh {
+                    positions: m.positions,
+                    polygons: vec![(quad.clone(), (!uvs.is_empty()).then(|| quad.iter().map(|&i| i as i64).collect()))],
+                    uvs,
+                    smooth: false,
+                };
                 let grid = |names: &[&str]| -> Res<u32> { Ok(scalar(g, src, names, 10.0)?.clamp(1.0, 1000.0) as u32) };
                 let faces = grid(&["sw", "subdivisionsWidth"])? * grid(&["sh", "subdivisionsHeight"])?;
-                Some(Built::Tri(Primitive { mesh: m, faces: Faces::Count(faces), maya_ids: None }))
+                let mut built = Built::Primitive(Primitive { mesh: plane, faces, numbered: false });
+                built.transform(&Affine3A::from_scale(Vec3::new(w, 1.0, h)));
+                Some(built)
             }
             _ => None,
         })
@@ -1763,58 +1859,54 @@ fn scalar(g: &Graph, n: usize, names: &[&str], default: f64) -> Res<f64> {
     }
 }
 
-/// Maya's `polySphere` as Maya builds it, so follicles find their UVs where Maya puts them:
-/// `sh − 1` rings of `sa` vertices from the −Y pole up (ring `i` at latitude
-/// `−90° + 180° i / sh`, vertex `j` at azimuth `360° (j + 1) / sa` turning from +X towards
-/// −Z), UV `(j / sa, i / sh)` with the seam column repeated at u = 1, and a triangle fan
-/// at each pole whose apex sits at the middle of its column, `v` 0 below and 1 above.
-/// With it, the Maya vertex each of its vertices is (what point tweaks are indexed by):
-/// Maya numbers the rings' vertices first, ring by ring from the bottom, then the −Y and
-/// the +Y pole.
-fn poly_sphere(radius: f32, sa: u32, sh: u32) -> (TriangleMesh, Vec<u32>) {
+/// Maya's `polySphere` as Maya builds it, so follicles find their UVs where Maya puts them
+/// and point tweaks move the vertices Maya moves: `sh − 1` rings of `sa` vertices from the
+/// −Y pole up (ring `i` at latitude `−90° + 180° i / sh`, vertex `j` at azimuth
+/// `360° (j + 1) / sa` turning from +X towards −Z), numbered ring by ring from the bottom,
+/// then the −Y and the +Y pole; quads between the rings and a triangle per column at each
+/// pole, wound outwards. UV `(j / sa, i / sh)` with the seam column repeated at u = 1, and
+/// at a pole the middle of its triangle's column, `v` 0 below and 1 above.
+fn poly_sphere(radius: f32, sa: u32, sh: u32) -> PolyMesh {
     use std::f32::consts::{FRAC_PI_2, PI, TAU};
-    let mut m = TriangleMesh::default();
-    let (mut normals, mut uvs, mut ids) = (Vec::new(), Vec::new(), Vec::new());
-    let mut push = |n: Vec3, uv: [f32; 2], id: u32, m: &mut TriangleMesh| {
-        m.positions.push(n * radius);
-        normals.push(n);
-        uvs.push(uv);
-        ids.push(id);
-        m.positions.len() as u32 - 1
-    };
-    // ring[i][j], i in 1..sh, j in 0..=sa (j = sa: the seam again at u = 1).
-    let mut ring = vec![Vec::new(); sh as usize + 1];
-    for (i, r) in ring.iter_mut().enumerate().take(sh as usize).skip(1) {
+    let mut positions = Vec::new();
+    let mut uvs = Vec::new();
+    for i in 1..sh {
         let lat = -FRAC_PI_2 + PI * i as f32 / sh as f32;
-        for j in 0..=sa {
-            let a = TAU * ((j % sa) + 1) as f32 / sa as f32;
-            let n = Vec3::new(lat.cos() * a.cos(), lat.sin(), -lat.cos() * a.sin());
-            let id = (i as u32 - 1) * sa + j % sa;
-            r.push(push(n, [j as f32 / sa as f32, i as f32 / sh as f32], id, &mut m));
+        positions.extend((0..sa).map(|j| {
+            let a = TAU * (j + 1) as f32 / sa as f32;
+            radius * Vec3::new(lat.cos() * a.cos(), lat.sin(), -lat.cos() * a.sin())
+        }));
+        uvs.extend((0..=sa).map(|j| [j as f32 / sa as f32, i as f32 / sh as f32]));
+    }
+    let (bottom, top) = (positions.len() as u32, positions.len() as u32 + 1);
+    positions.extend([-radius * Vec3::Y, radius * Vec3::Y]);
+    let poles = uvs.len();
+    for v in [0.0, 1.0] {
+        uvs.extend((0..sa).map(|j| [(j as f32 + 0.5) / sa as f32, v]));
+    }
+    // Vertex and UV of ring `i` (1 to sh − 1), column `j` (0 to sa).
+    let vertex = |i: u32, j: u32| (i - 1) * sa + j % sa;
+    let uv = |i: u32, j: u32| ((i - 1) * (sa + 1) + j) as i64;
+    let mut polygons: Vec<Polygon> = Vec::new();
+    for i in 1..sh - 1 {
+        for j in 0..sa {
+            let corners = [(i, j), (i, j + 1), (i + 1, j + 1), (i + 1, j)];
+            polygons.push((
+                corners.iter().map(|&(i, j)| vertex(i, j)).collect(),
+                Some(corners.iter().map(|&(i, j)| uv(i, j)).collect()),
+            ));
         }
     }
-    let tri = |t: [u32; 3], m: &mut TriangleMesh| {
-        // Wound to face outwards.
-        let [a, b, c] = t.map(|i| m.positions[i as usize]);
-        let outward = (b - a).cross(c - a).dot(a + b + c) >= 0.0;
-        m.indices.push(if outward { t } else { [t[0], t[2], t[1]] });
-    };
-    for j in 0..sa as usize {
-        let u = (j as f32 + 0.5) / sa as f32;
-        let bottom = push(Vec3::NEG_Y, [u, 0.0], (sh - 1) * sa, &mut m);
-        tri([bottom, ring[1][j], ring[1][j + 1]], &mut m);
-        let top = push(Vec3::Y, [u, 1.0], (sh - 1) * sa + 1, &mut m);
-        let last = &ring[sh as usize - 1];
-        tri([top, last[j + 1], last[j]], &mut m);
-        for i in 1..sh as usize - 1 {
-            let (lo, hi) = (&ring[i], &ring[i + 1]);
-            tri([lo[j], lo[j + 1], hi[j + 1]], &mut m);
-            tri([lo[j], hi[j + 1], hi[j]], &mut m);
-        }
+    for j in 0..sa {
+        let pole = (poles + j as usize) as i64;
+        polygons.push((vec![vertex(1, j + 1), vertex(1, j), bottom], Some(vec![uv(1, j + 1), uv(1, j), pole])));
     }
-    m.normals = Some(normals);
-    m.uvs = Some(uvs);
-    (m, ids)
+    for j in 0..sa {
+        let (last, pole) = (sh - 1, (poles + (sa + j) as usize) as i64);
+        polygons
+            .push((vec![vertex(last, j), vertex(last, j + 1), top], Some(vec![uv(last, j), uv(last, j + 1), pole])));
+    }
+    PolyMesh { positions, uvs, polygons, smooth: true }
 }
 
 /// The rotation a primitive node's `axis` (`.ax`, Maya's default +Y) gives what it
@@ -2326,53 +2418,10 @@ fn stored_mesh(g: &Graph, n: usize) -> Res<Option<PolyMesh>> {
 /// into the mesh's UVs, −1 for none).
 type Polygon = (Vec<u32>, Option<Vec<i64>>);
 
-/// Triangulates polygons over `positions` as fans, one mesh vertex per distinct (vertex,
-/// UV) corner, keeping their winding; with the Ptex faces of each triangle's polygon
-/// ([`Faces::Of`]). Vertices no polygon uses are left out. UV indices must be in range.
-/// `smooth`: vertex normals, the area-weighted sum of the normals of the triangles around
-/// each vertex of `positions`; else none (flat shading).
-fn polygon_mesh(
-    positions: &[Vec3],
-    uvs: &[[f32; 2]],
-    polygons: &[Polygon],
-    smooth: bool,
-) -> (TriangleMesh, Vec<[u32; 2]>) {
-    let mut mesh = TriangleMesh::default();
-    let mut uv_out: Vec<[f32; 2]> = Vec::new();
-    let mut original: Vec<u32> = Vec::new();
-    let mut corners: HashMap<(u32, i64), u32> = HashMap::new();
-    let (mut face_of, mut ptex) = (Vec::new(), 0u32);
-    for (loop_, face_uvs) in polygons {
-        let mut ids = Vec::with_capacity(loop_.len());
-        for (k, &v) in loop_.iter().enumerate() {
-            let uv = face_uvs.as_ref().map_or(-1, |u| u[k]);
-            let id = *corners.entry((v, uv)).or_insert_with(|| {
-                mesh.positions.push(positions[v as usize]);
-                uv_out.push(if uv >= 0 { uvs[uv as usize] } else { [0.0; 2] });
-                original.push(v);
-                (mesh.positions.len() - 1) as u32
-            });
-            ids.push(id);
-        }
-        let subfaces = if ids.len() == 4 { 1 } else { ids.len() as u32 };
-        for k in 1..ids.len().saturating_sub(1) {
-            mesh.indices.push([ids[0], ids[k], ids[k + 1]]);
-            face_of.push([ptex, subfaces]);
-        }
-        ptex += subfaces;
-    }
-    if !uvs.is_empty() {
-        mesh.uvs = Some(uv_out);
-    }
-    if smooth {
-        mesh.normals = Some(mesh.smooth_normals(&original, positions.len()));
-    }
-    (mesh, face_of)
-}
-
 /// A polygon mesh by Maya's numbers, as a stored mesh holds it or a primitive node builds
 /// it: what history edits (`transformGeometry` moves its vertices, `deleteComponent`
-/// removes faces) and point tweaks index, before it is triangulated ([`polygon_mesh`]).
+/// removes faces) and point tweaks index, before it is subdivided and triangulated
+/// ([`PolyMesh::polygon_mesh`]).
 struct PolyMesh {
     /// Vertex positions, by Maya vertex number.
     positions: Vec<Vec3>,
@@ -2384,66 +2433,89 @@ struct PolyMesh {
     smooth: bool,
 }
 
+impl PolyMesh {
+    /// Its polygons over all its vertices (those no face uses are left out when it is
+    /// triangulated), with the UV of each corner when the mesh has UVs ((0, 0) for a corner
+    /// without one): triangulated, a vertex splits where its corners' UVs differ.
+    fn polygon_mesh(&self) -> PolygonMesh {
+        let mut mesh = PolygonMesh { positions: self.positions.clone(), ..Default::default() };
+        let mut uvs = Vec::with_capacity(self.polygons.iter().map(|p| p.0.len()).sum());
+        for (loop_, face_uvs) in &self.polygons {
+            mesh.counts.push(loop_.len() as u32);
+            mesh.indices.extend(loop_);
+            for k in 0..loop_.len() {
+                let uv = face_uvs.as_ref().map_or(-1, |u| u[k]);
+                uvs.push(if uv >= 0 { self.uvs[uv as usize] } else { [0.0; 2] });
+            }
+        }
+        if !self.uvs.is_empty() {
+            mesh.uvs = Some(uvs);
+        }
+        mesh
+    }
+
+    /// For each triangle of its polygons triangulated as fans, its polygon's first Ptex face
+    /// and how many it has ([`Faces::Of`]).
+    fn ptex_faces(&self) -> Vec<[u32; 2]> {
+        let mut faces = Vec::new();
+        let mut ptex = 0u32;
+        for (loop_, _) in &self.polygons {
+            let subfaces = if loop_.len() == 4 { 1 } else { loop_.len() as u32 };
+            faces.extend(std::iter::repeat_n([ptex, subfaces], loop_.len().saturating_sub(2)));
+            ptex += subfaces;
+        }
+        faces
+    }
+}
+
 /// A mesh as construction history builds it, before it is drawn.
 enum Built {
     /// Polygons by Maya's numbers (stored meshes, `polyCube`, `polyCylinder`).
     Poly(PolyMesh),
-    /// Triangles (the primitives tress does not build face by face as Maya does).
-    Tri(Primitive),
+    /// Polygons whose faces tress does not number as Maya does (`polySphere`, `polyTorus`,
+    /// `polyPlane`, `polyCylinder` with caps of several rings).
+    Primitive(Primitive),
 }
 
 impl Built {
-    /// Moves its vertices (and normals) by `m`.
+    /// Moves its vertices by `m`.
     fn transform(&mut self, m: &Affine3A) {
-        match self {
-            Built::Poly(p) => p.positions.iter_mut().for_each(|q| *q = m.transform_point3(*q)),
-            Built::Tri(t) => t.mesh.transform(m),
-        }
+        let (Built::Poly(p) | Built::Primitive(Primitive { mesh: p, .. })) = self;
+        p.positions.iter_mut().for_each(|q| *q = m.transform_point3(*q));
     }
 
     /// Adds point tweaks by Maya vertex number; `false` (nothing moved) when tress does not
     /// know which of its vertices is which Maya vertex.
     fn tweak(&mut self, tweaks: &BTreeMap<usize, DVec3>) -> bool {
-        match self {
-            Built::Poly(p) => {
-                for (&i, d) in tweaks {
-                    if let Some(q) = p.positions.get_mut(i) {
-                        *q += d.as_vec3();
-                    }
-                }
-                true
+        let (Built::Poly(p) | Built::Primitive(Primitive { mesh: p, numbered: true, .. })) = self else {
+            return false;
+        };
+        for (&i, d) in tweaks {
+            if let Some(q) = p.positions.get_mut(i) {
+                *q += d.as_vec3();
             }
-            Built::Tri(Primitive { mesh, maya_ids: Some(ids), .. }) => {
-                for (p, &id) in mesh.positions.iter_mut().zip(ids.iter()) {
-                    *p += tweaks.get(&(id as usize)).copied().unwrap_or_default().as_vec3();
-                }
-                true
-            }
-            Built::Tri(_) => false,
         }
+        true
     }
 
-    /// Its triangles and their Maya faces.
-    fn finish(self) -> (TriangleMesh, Faces) {
+    /// Its polygons, with how many (Ptex) faces Maya gives it when tress does not number
+    /// them as Maya does.
+    fn finish(self) -> (PolyMesh, Option<u32>) {
         match self {
-            Built::Poly(p) => {
-                let (m, faces) = polygon_mesh(&p.positions, &p.uvs, &p.polygons, p.smooth);
-                (m, Faces::Of(faces))
-            }
-            Built::Tri(t) => (t.mesh, t.faces),
+            Built::Poly(p) => (p, None),
+            Built::Primitive(p) => (p.mesh, Some(p.faces)),
         }
     }
 }
 
-/// A mesh of triangles a primitive node (`polySphere`, ...) builds.
+/// The polygons of a primitive node whose faces tress does not number as Maya does.
 struct Primitive {
-    /// Its triangles.
-    mesh: TriangleMesh,
-    /// Its triangles' Maya faces, or how many (Ptex) faces Maya gives it.
-    faces: Faces,
-    /// The Maya vertex number of each of its vertices (what point tweaks are indexed by),
-    /// when tress builds Maya's vertices.
-    maya_ids: Option<Vec<u32>>,
+    /// Its polygons.
+    mesh: PolyMesh,
+    /// How many (Ptex) faces Maya gives it.
+    faces: u32,
+    /// Whether its vertices are numbered as Maya's (what point tweaks are indexed by).
+    numbered: bool,
 }
 
 /// How a drawn mesh's triangles relate to the faces an XGen patch lists. XGen numbers

@@ -420,7 +420,7 @@ fn cameras_clip_at_their_near_and_far_planes_in_the_files_unit() {
 #[test]
 fn poly_spheres_have_mayas_uv_layout_so_every_follicle_finds_its_place() {
     use crate::hair_system::follicles::follicles_at_uvs;
-    let (m, _) = poly_sphere(2.0, 20, 20);
+    let m = poly_sphere(2.0, 20, 20).polygon_mesh().triangulate(true).0;
     assert!(m.positions.iter().all(|p| (p.length() - 2.0).abs() < 1e-5));
     // Between the pole fans' triangles the layout has gaps, as Maya's has: a follicle
     // there (the MtoA hair tests put one at (0.09375, 0.03125)) takes the nearest UV, on
@@ -2001,4 +2001,159 @@ fn an_orthographic_camera_renders_when_it_is_the_renderable_one() {
     // A renderable perspective camera is preferred to it.
     let both = text.replace("\tsetAttr \".rnd\" no;\n", "");
     assert_eq!(read(&both).unwrap().camera.unwrap().ortho_height_for(640, 480), None);
+}
+
+/// UV values and the UV index of each face corner, face by face.
+type FaceUvs<'a> = (&'a [[f32; 2]], &'a [&'a [u32]]);
+
+/// A stored mesh `ms` under transform `m`, as Maya writes one: its vertices, its edges (each
+/// once, in the order the faces meet them) and its faces as signed edge loops, with a UV
+/// index per face corner when `uvs` are given; `attrs` set on the shape.
+fn stored_mesh_text(positions: &[[f32; 3]], faces: &[&[u32]], uvs: Option<FaceUvs>, attrs: &str) -> String {
+    let mut edges: Vec<[u32; 2]> = Vec::new();
+    let mut loops = String::new();
+    for (f, face) in faces.iter().enumerate() {
+        let signed: Vec<String> = (0..face.len())
+            .map(|k| {
+                let (a, b) = (face[k], face[(k + 1) % face.len()]);
+                match edges.iter().position(|e| *e == [a, b] || *e == [b, a]) {
+                    Some(e) if edges[e] == [a, b] => e.to_string(),
+                    Some(e) => (-(e as i64) - 1).to_string(),
+                    None => {
+                        edges.push([a, b]);
+                        (edges.len() - 1).to_string()
+                    }
+                }
+            })
+            .collect();
+        loops += &format!("\n\t\tf {} {}", face.len(), signed.join(" "));
+        if let Some((_, ids)) = uvs {
+            let ids: Vec<String> = ids[f].iter().map(u32::to_string).collect();
+            loops += &format!("\n\t\tmu 0 {} {}", ids.len(), ids.join(" "));
+        }
+    }
+    let join = |v: Vec<String>| v.join(" ");
+    let vt = join(positions.iter().flatten().map(f32::to_string).collect());
+    let ed = join(edges.iter().map(|[a, b]| format!("{a} {b} 0")).collect());
+    let uv = match uvs {
+        Some((values, _)) => format!(
+            "\tsetAttr \".uvst[0].uvsp[0:{}]\" -type \"float2\" {};\n",
+            values.len() - 1,
+            join(values.iter().flatten().map(f32::to_string).collect())
+        ),
+        None => String::new(),
+    };
+    format!(
+        "createNode transform -n m;\ncreateNode mesh -n ms -p m;\n{uv}\tsetAttr \".vt[0:{}]\" {vt};\n\
+         \tsetAttr \".ed[0:{}]\" {ed};\n\tsetAttr \".fc[0:{}]\" -type \"polyFaces\"{loops};\n{attrs}",
+        positions.len() - 1,
+        edges.len() - 1,
+        faces.len() - 1
+    )
+}
+
+/// The cube [−0.5, 0.5]³ as a stored mesh, faces wound outwards, with `attrs`.
+fn cube_text(attrs: &str) -> String {
+    let positions: Vec<[f32; 3]> =
+        (0..8).map(|i| [(i & 1) as f32 - 0.5, ((i >> 1) & 1) as f32 - 0.5, ((i >> 2) & 1) as f32 - 0.5]).collect();
+    let faces: [&[u32]; 6] = [&[0, 2, 3, 1], &[4, 5, 7, 6], &[0, 1, 5, 4], &[2, 6, 7, 3], &[0, 4, 6, 2], &[1, 3, 7, 5]];
+    stored_mesh_text(&positions, &faces, None, attrs)
+}
+
+fn inline_mesh(s: &Imported) -> &TriangleMesh {
+    match &s.contents.meshes[0].source {
+        MeshSource::Inline(m) => m,
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn arnold_subdivision_attributes_subdivide_maya_meshes() {
+    // Without `aiSubdivType` (or with 0): the cage, 6 quads, flat.
+    for attrs in ["", "\tsetAttr \".ai_subdiv_type\" 0;\n\tsetAttr \".ai_subdiv_iterations\" 3;\n"] {
+        let s = read(&cube_text(attrs)).unwrap();
+        assert_eq!(inline_mesh(&s).indices.len(), 12, "{attrs}");
+        assert!(inline_mesh(&s).normals.is_none());
+    }
+    // Catmull-Clark, 2 iterations: 6 × 4² quads inside the cage, smooth shaded; every corner
+    // pulled in past the 5/18-per-axis point of the first iteration.
+    let s = read(&cube_text("\tsetAttr \".ai_subdiv_type\" 1;\n\tsetAttr \".aiSubdivIterations\" 2;\n")).unwrap();
+    let m = inline_mesh(&s);
+    assert_eq!(m.indices.len(), 2 * 6 * 16);
+    assert!(m.normals.is_some());
+    let extent = m.positions.iter().fold(0.0f32, |e, p| e.max(p.abs().max_element()));
+    assert!(extent < 0.5 && extent > 0.4, "{extent}");
+    let corner = m.positions.iter().map(|p| p.x + p.y + p.z).fold(f32::MIN, f32::max);
+    assert!(corner < 3.0 * 5.0 / 18.0, "{corner}");
+    assert!(s.warnings.iter().all(|w| !w.contains("ubdiv")), "{:?}", s.warnings);
+    // Arnold's default of one iteration when only the type is set: 24 quads.
+    let once = read(&cube_text("\tsetAttr \".ai_subdiv_type\" 1;\n")).unwrap();
+    assert_eq!(inline_mesh(&once).indices.len(), 2 * 24);
+    // A mesh a primitive node builds is subdivided too: polyCube's 6 faces, once.
+    let built = "createNode transform -n c;\ncreateNode mesh -n cs -p c;\n\tsetAttr \".ai_subdiv_type\" 1;\n\
+                 createNode polyCube -n pc;\nconnectAttr \"pc.out\" \"cs.i\";\n";
+    let s = read(built).unwrap();
+    assert_eq!(inline_mesh(&s).indices.len(), 2 * 24);
+    // Linear subdivision is drawn as the cage, said once with a count.
+    let linear = format!(
+        "{}{}",
+        cube_text("\tsetAttr \".ai_subdiv_type\" 2;\n"),
+        cube_text("\tsetAttr \".ai_subdiv_type\" 2;\n")
+            .replace("-n m;", "-n m2;")
+            .replace("-n ms -p m;", "-n ms2 -p m2;")
+    );
+    let s = read(&linear).unwrap();
+    assert_eq!(s.contents.meshes.len(), 2);
+    assert!(s.contents.meshes.iter().all(|e| matches!(&e.source, MeshSource::Inline(m) if m.indices.len() == 12)));
+    let said: Vec<&String> = s.warnings.iter().filter(|w| w.contains("linear")).collect();
+    assert!(said.len() == 1 && said[0].contains("(2; first: ms)"), "{:?}", s.warnings);
+}
+
+#[test]
+fn absurd_subdivision_iterations_are_capped_with_a_warning() {
+    // More than Arnold's byte holds: not subdivided, said with the value.
+    let s = read(&cube_text("\tsetAttr \".ai_subdiv_type\" 1;\n\tsetAttr \".ai_subdiv_iterations\" 300;\n")).unwrap();
+    assert_eq!(inline_mesh(&s).indices.len(), 12);
+    assert!(s.warnings.iter().any(|w| w.contains("not 0 to 255") && w.contains("ms: 300")), "{:?}", s.warnings);
+    // Arnold's largest count stops at the face budget shared with the USD reader, said
+    // once: 6 × 4⁹ quads, as a tenth iteration would make 6 × 4¹⁰, past 2,000,000.
+    let s = read(&cube_text("\tsetAttr \".ai_subdiv_type\" 1;\n\tsetAttr \".ai_subdiv_iterations\" 255;\n")).unwrap();
+    assert_eq!(inline_mesh(&s).indices.len(), 2 * 6 * 4usize.pow(9));
+    let said: Vec<&String> = s.warnings.iter().filter(|w| w.contains("subdivision stopped")).collect();
+    assert!(said.len() == 1 && said[0].contains("2000000 faces per mesh"), "{:?}", s.warnings);
+}
+
+#[test]
+fn per_face_vertex_uvs_are_kept_and_split_vertices_where_they_differ() {
+    // Two quads side by side sharing the edge 1-4; the right quad's UVs are a separate
+    // island (u + 2) so its corners on the shared edge have other UVs than the left's.
+    let positions =
+        [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 0.0, -1.0], [1.0, 0.0, -1.0], [2.0, 0.0, -1.0]];
+    let faces: [&[u32]; 2] = [&[0, 1, 4, 3], &[1, 2, 5, 4]];
+    let uv_values = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [2.0, 0.0], [3.0, 0.0], [3.0, 1.0], [2.0, 1.0]];
+    let uv_ids: [&[u32]; 2] = [&[0, 1, 2, 3], &[4, 5, 6, 7]];
+    let s = read(&stored_mesh_text(&positions, &faces, Some((&uv_values, &uv_ids)), "")).unwrap();
+    let m = inline_mesh(&s);
+    // 6 positions, 2 of them with two UVs each: 8 vertices, each keeping its corner's UV.
+    assert_eq!((m.positions.len(), m.indices.len()), (8, 4));
+    let uvs = m.uvs.as_ref().unwrap();
+    for (p, uv) in m.positions.iter().zip(uvs) {
+        let right = uv[0] >= 2.0;
+        let expected = [p.x + if right { 1.0 } else { 0.0 }, -p.z];
+        assert_eq!(*uv, expected, "{p}");
+    }
+    // The same UV values under other indices are one corner: no split.
+    let shared: [&[u32]; 2] = [&[0, 1, 2, 3], &[4, 5, 6, 7]];
+    let same = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]];
+    let s = read(&stored_mesh_text(&positions, &faces, Some((&same, &shared)), "")).unwrap();
+    assert_eq!(inline_mesh(&s).positions.len(), 6);
+    // Subdivided, the UVs follow each face linearly: the left island stays in u 0 to 1.
+    let s =
+        read(&stored_mesh_text(&positions, &faces, Some((&uv_values, &uv_ids)), "\tsetAttr \".ai_subdiv_type\" 1;\n"))
+            .unwrap();
+    let m = inline_mesh(&s);
+    assert_eq!(m.indices.len(), 2 * 8);
+    let uvs = m.uvs.as_ref().unwrap();
+    assert!(uvs.iter().all(|uv| (0.0..=1.0).contains(&uv[0]) || (2.0..=3.0).contains(&uv[0])), "{uvs:?}");
+    assert!(uvs.contains(&[0.5, 0.5]) && uvs.contains(&[2.5, 0.5]), "{uvs:?}");
 }

@@ -8,8 +8,8 @@ use super::values::{
     boolean, floats, interpolation, ints, number, short, token, value, vec3, vec3s, Interpolation, Res,
 };
 use super::visibility::{inherited, integer};
-use super::{Notes, MAX_SUBDIVIDED_FACES_PER_FILE};
-use crate::geometry::subdivision::PolygonMesh;
+use super::Notes;
+use crate::geometry::subdivision::{arnold_iterations, PolygonMesh, MAX_ITERATIONS};
 use crate::geometry::TriangleMesh;
 use crate::io::arnold_hair::{ArnoldShader, Param, StandardHair};
 use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
@@ -99,18 +99,9 @@ pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &m
     let mesh = match subdivision(prim, time, notes)? {
         Some(iterations) => {
             (polygons.creases, polygons.corners) = creases(prim, time, n)?;
-            let left = MAX_SUBDIVIDED_FACES_PER_FILE.saturating_sub(notes.1);
-            let (refined, done) = polygons.subdivide(iterations, MAX_SUBDIVIDED_FACES.min(left));
-            if done.iterations < done.asked {
-                notes.note(
-                    format!(
-                        "subdivision stopped before an iteration past {MAX_SUBDIVIDED_FACES} faces per mesh or {MAX_SUBDIVIDED_FACES_PER_FILE} per file"
-                    ),
-                    prim,
-                );
-            }
-            if done.iterations > 0 {
-                notes.1 += refined.counts.len();
+            let (refined, done) = notes.1.subdivide(&polygons, iterations);
+            if let Some(stopped) = done.stopped() {
+                notes.note(stopped, prim);
             }
             refined.triangulate(true).0
         }
@@ -126,10 +117,6 @@ pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &m
     Ok(mesh)
 }
 
-/// Faces a subdivided mesh may have: iterations past it are not applied (Arnold applies
-/// `subdiv_iterations` uniformly, 4 times the faces per iteration).
-const MAX_SUBDIVIDED_FACES: usize = 2_000_000;
-
 /// The Catmull-Clark iterations Arnold applies to a `Mesh` prim, as Arnold-USD's reader
 /// decides them (`ReadMesh` in its `read_geometry.cpp`): `primvars:arnold:subdiv_iterations`
 /// (on the prim or inherited as a constant primvar; 0, no subdivision, when not authored),
@@ -142,12 +129,12 @@ fn subdivision(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<u32
     let scheme = token(value(prim, "subdivisionScheme", time)?, "catmullClark");
     let iterations = match inherited(prim, "primvars:arnold:subdiv_iterations", time)? {
         None => 0,
-        Some(v) => match integer(&v) {
-            Some(i) if (0..=255).contains(&i) => i as u32,
+        Some(v) => match integer(&v).map(|i| (i, arnold_iterations(i))) {
+            Some((_, Some(iterations))) => iterations,
             other => {
-                let shown = other.map_or_else(|| short(&v), |i| i.to_string());
+                let shown = other.map_or_else(|| short(&v), |(i, _)| i.to_string());
                 notes.note_why(
-                    "`primvars:arnold:subdiv_iterations` that are not 0 to 255: not subdivided".into(),
+                    format!("`primvars:arnold:subdiv_iterations` that are not 0 to {MAX_ITERATIONS}: not subdivided"),
                     prim,
                     &shown,
                 );

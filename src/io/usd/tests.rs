@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::accel::Shape;
+use crate::geometry::subdivision::MAX_FACES_PER_FILE;
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::io::arnold_hair::StandardHair;
 use crate::io::ImportOptions;
@@ -1795,10 +1796,10 @@ fn bad_subdivision_attributes_are_named() {
         .unwrap();
     let stage = Stage::open(path.to_str().unwrap()).unwrap();
     let prim = stage.prim(sdf::path("/Parent/Cube").unwrap());
-    let mut notes = Notes(Default::default(), MAX_SUBDIVIDED_FACES_PER_FILE - 100);
+    let mut notes = Notes(Default::default(), FaceBudget { used: MAX_FACES_PER_FILE - 100 });
     let m = shapes::read_mesh(&prim, TimeCode::new(0.0), None, &mut notes).unwrap();
     assert_eq!(m.indices.len(), 2 * 96);
-    assert_eq!(notes.1, MAX_SUBDIVIDED_FACES_PER_FILE - 4);
+    assert_eq!(notes.1.used, MAX_FACES_PER_FILE - 4);
     assert!(notes.lines().iter().any(|w| w.contains("per file")));
 }
 
