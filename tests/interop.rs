@@ -211,3 +211,55 @@ fn the_command_line_reports_bad_foreign_files_without_panicking() {
     let (ok, err) = tress(&["export", "-o", "x.obj", "--demo-strands", "10"], d);
     assert!(!ok && err.contains(".usda"), "{err}");
 }
+
+/// A quad with UVs under Arnold's `flat` shader whose colour is a checkerboard (two cells
+/// along u): each half of the quad is its cell's colour, exactly (unlit), and with a
+/// `u_offset` of one cell the colours swap.
+#[test]
+fn usd_checkerboards_colour_their_cells_by_uv() {
+    let usda = |u_offset: f32| {
+        format!(
+            r#"#usda 1.0
+def Mesh "Quad" (apiSchemas = ["MaterialBindingAPI"]) {{
+    int[] faceVertexCounts = [4]
+    int[] faceVertexIndices = [0, 1, 2, 3]
+    point3f[] points = [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]
+    texCoord2f[] primvars:st = [(0, 0), (1, 0), (1, 1), (0, 1)] (interpolation = "vertex")
+    rel material:binding = </Looks/Checked>
+}}
+def Scope "Looks" {{
+    def Material "Checked" {{
+        token outputs:arnold:surface.connect = </Looks/Checked/flat.outputs:surface>
+        def Shader "flat" {{
+            uniform token info:id = "arnold:flat"
+            color3f inputs:color.connect = </Looks/Checked/checker.outputs:out>
+            token outputs:surface
+        }}
+        def Shader "checker" {{
+            uniform token info:id = "arnold:checkerboard"
+            color3f inputs:color1 = (1, 0, 0)
+            color3f inputs:color2 = (0, 0, 1)
+            float inputs:u_frequency = 2
+            float inputs:u_offset = {u_offset}
+            color3f outputs:out
+        }}
+    }}
+}}
+"#
+        )
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (red, blue) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 1.0));
+    for (offset, left, right) in [(0.0, red, blue), (1.0, blue, red)] {
+        let path = dir.path().join("checker.usda");
+        std::fs::write(&path, usda(offset)).unwrap();
+        let (mut desc, _) = read_imported(&path).unwrap().into_description();
+        (desc.settings.width, desc.settings.height, desc.settings.spp) = (64, 48, 4);
+        let film = render(&desc);
+        for (p, want) in [(Vec3::new(-0.5, 0.0, 0.0), left), (Vec3::new(0.5, 0.0, 0.0), right)] {
+            let (x, y) = project(&desc, p);
+            let got = film.pixels[y as usize * 64 + x as usize].color;
+            assert!((got - want).abs().max_element() < 1e-3, "offset {offset}, at {p}: {got}, want {want}");
+        }
+    }
+}

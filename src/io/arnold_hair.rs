@@ -117,6 +117,9 @@ impl Default for StandardHair {
 pub trait ArnoldShader: Default {
     /// The names of the parameters read, as Arnold spells them.
     const NAMES: &'static [&'static str];
+    /// The parameters a colour map (a checkerboard) may drive, and what they colour
+    /// ([`crate::io::arnold_surface::textured`]).
+    const MAPS: &'static [(&'static str, crate::io::arnold_surface::Slot)] = &[];
     /// The parameter named `name` (one of [`ArnoldShader::NAMES`]).
     fn param(&mut self, name: &str) -> Option<Param<'_>>;
     /// The material standing in for the shader, and the warning naming what it leaves out

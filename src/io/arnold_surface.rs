@@ -15,7 +15,13 @@
 //!   no diffuse;
 //! - else the dielectric: Lambert of `base × base_color` plus, unless `specular` is 0, a
 //!   `phong` lobe of reflectance `specular × specular_color × F0`, F0 = ((η − 1)/(η + 1))²
-//!   the coating's Fresnel reflectance at normal incidence (η = `specular_IOR`).
+//!   the coating's Fresnel reflectance at normal incidence (η = `specular_IOR`); a
+//!   dielectric that reflects nothing (base and specular 0) but emits is `unlit` of
+//!   `emission × emission_color`, the radiance Arnold adds.
+//!
+//! A checkerboard on `base_color` or `base` (or `Kd_color`, `Kd` of `lambert`) makes the
+//! Lambert or Phong surface [`Material::Textured`]; on `emission_color` or `emission` of
+//! an emitting surface, or on flat's `color`, [`Material::UnlitTextured`] ([`textured`]).
 //!
 //! The glossy lobe's exponent is [`crate::shading::phong_exponent`] of the microfacet
 //! roughness α = `specular_roughness`², Standard Surface's remapping of its roughness
@@ -34,7 +40,43 @@
 
 use super::arnold_hair::{fmt_color, ArnoldShader, Param};
 use crate::math::Color;
-use crate::shading::{phong_exponent, Material};
+use crate::shading::texture::ColorMap;
+use crate::shading::{phong_exponent, Material, Roughness, Textured};
+
+/// What a shader parameter driven by a colour map colours: the diffuse reflectance of a
+/// lit surface, or the radiance of an unlit one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Slot {
+    /// A factor on the diffuse colour (`base`, `base_color`, `Kd`, `Kd_color`).
+    Diffuse,
+    /// A factor on the radiance (`emission`, `emission_color`, flat's `color`).
+    Radiance,
+}
+
+/// `material`, made with the mapped parameter at 1, with that parameter's `map` applied:
+/// a Lambert or Phong surface becomes [`Material::Textured`] (its diffuse colour the tint,
+/// its Phong exponent given back as the equivalent roughness), an unlit one
+/// [`Material::UnlitTextured`]. `None` when the map cannot colour what the material draws
+/// (a metal's or glass's reflectance, an emission on a lit surface).
+pub fn textured(material: &Material, slot: Slot, map: ColorMap) -> Option<Material> {
+    Some(match (slot, material) {
+        (Slot::Diffuse, Material::Diffuse { color }) => {
+            Material::Textured(Textured { color: map, tint: *color, roughness: None, specular: Color::ZERO })
+        }
+        (Slot::Diffuse, Material::Phong { diffuse, specular, exponent }) if *diffuse != Color::ZERO => {
+            // The inverse of `phong_exponent`: r = sqrt(2 / (n + 2)).
+            let r = (2.0 / (exponent + 2.0)).sqrt();
+            Material::Textured(Textured {
+                color: map,
+                tint: *diffuse,
+                roughness: Some(Roughness::Constant(r)),
+                specular: *specular,
+            })
+        }
+        (Slot::Radiance, Material::Unlit { color }) => Material::UnlitTextured { color: map, tint: *color },
+        _ => return None,
+    })
+}
 
 /// Smallest `specular_roughness` drawn as a glossy lobe (below it the exponent grows
 /// past what sampling resolves): a metal rougher than 0 but below this is a `phong` of
@@ -109,6 +151,12 @@ impl Default for StandardSurface {
 }
 
 impl ArnoldShader for StandardSurface {
+    const MAPS: &'static [(&'static str, Slot)] = &[
+        ("base_color", Slot::Diffuse),
+        ("base", Slot::Diffuse),
+        ("emission_color", Slot::Radiance),
+        ("emission", Slot::Radiance),
+    ];
     const NAMES: &'static [&'static str] = &[
         "base",
         "base_color",
@@ -167,6 +215,8 @@ impl ArnoldShader for StandardSurface {
         let roughness = unit(self.specular_roughness);
         let exponent = || phong_exponent(roughness.max(MIN_ROUGHNESS).powi(2));
         let base = rgb(self.base_color * unit(self.base));
+        let finite = |c: Color| Color::from_array(c.to_array().map(|x| if x.is_finite() { x.max(0.0) } else { 0.0 }));
+        let emitted = finite(self.emission_color * self.emission.max(0.0));
         let material = if transmission >= 0.5 {
             if transmission < 1.0 {
                 left_out.push(format!("transmission {transmission} (drawn as glass)"));
@@ -193,9 +243,11 @@ impl ArnoldShader for StandardSurface {
                 }
                 let f0 = ((ior - 1.0) / (ior + 1.0)).powi(2);
                 let specular = rgb(self.specular_color * unit(self.specular) * f0);
-                match specular == Color::ZERO {
-                    true => Material::Diffuse { color: base },
-                    false => Material::Phong { diffuse: base, specular, exponent: exponent() },
+                match (specular == Color::ZERO, base == Color::ZERO && emitted != Color::ZERO) {
+                    // Nothing reflected: the emission is all Arnold draws, an unlit colour.
+                    (true, true) => Material::Unlit { color: emitted },
+                    (true, false) => Material::Diffuse { color: base },
+                    (false, _) => Material::Phong { diffuse: base, specular, exponent: exponent() },
                 }
             }
         };
@@ -210,7 +262,7 @@ impl ArnoldShader for StandardSurface {
                 left_out.push(format!("{name} {v}"));
             }
         }
-        if self.emission != 0.0 && self.emission_color != Color::ZERO {
+        if self.emission != 0.0 && self.emission_color != Color::ZERO && !matches!(material, Material::Unlit { .. }) {
             left_out.push(format!("emission {} of colour {}", self.emission, fmt_color(self.emission_color)));
         }
         if self.opacity != Color::ONE {
@@ -266,6 +318,7 @@ impl Default for Lambert {
 }
 
 impl ArnoldShader for Lambert {
+    const MAPS: &'static [(&'static str, Slot)] = &[("Kd_color", Slot::Diffuse), ("Kd", Slot::Diffuse)];
     const NAMES: &'static [&'static str] = &["Kd", "Kd_color", "opacity"];
 
     fn param(&mut self, name: &str) -> Option<Param<'_>> {
@@ -302,6 +355,7 @@ impl Default for Flat {
 }
 
 impl ArnoldShader for Flat {
+    const MAPS: &'static [(&'static str, Slot)] = &[("color", Slot::Radiance)];
     const NAMES: &'static [&'static str] = &["color", "opacity"];
 
     fn param(&mut self, name: &str) -> Option<Param<'_>> {

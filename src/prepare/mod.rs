@@ -24,6 +24,7 @@ use crate::light::Light;
 use crate::scene::{
     CameraDesc, Description, GuideSource, HairSource, LightSource, MaterialSource, MeshSource, RoughnessSource,
 };
+use crate::shading::texture::ColorMap;
 use crate::shading::{Material, Roughness, Textured};
 use crate::world::World;
 use images::{Encoding, Textures};
@@ -196,7 +197,7 @@ fn material(source: &MaterialSource, textures: &mut Textures) -> Result<Material
     Ok(match source {
         MaterialSource::Inline(m) => m.clone(),
         MaterialSource::Textured(t) => Material::Textured(Textured {
-            color: textures.get(&t.color, Encoding::Srgb)?,
+            color: ColorMap::Image(textures.get(&t.color, Encoding::Srgb)?),
             tint: t.tint,
             roughness: match &t.roughness {
                 None => None,

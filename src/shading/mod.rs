@@ -4,7 +4,8 @@
 //! radiance leaving towards `wo` per unit of light arriving from `wi` (a BRDF times the
 //! cosine for surfaces; the tube model or the physical hair BSDF times its cosine for
 //! hair). Mirror and glass answer through [`Material::specular`] instead, which the
-//! integrator follows recursively. An unlit surface ([`Material::Unlit`]) answers neither:
+//! integrator follows recursively. An unlit surface ([`Material::Unlit`],
+//! [`Material::UnlitTextured`]) answers neither:
 //! it shows its colour whatever the light ([`Material::unlit_radiance`]), and the
 //! integrators draw it without sampling lights at it or scattering from it.
 
@@ -54,8 +55,8 @@ pub enum Material {
     Physical(hair_bsdf::PhysicalHair),
     /// The thesis' fur shading (section 2.1.8, eq. 2.4 to 2.7), root-to-tip colours.
     Fur(fur_tube::Fur),
-    /// A surface whose diffuse colour, and optionally its glossiness, comes from image
-    /// textures by UV ([`Textured`]).
+    /// A surface whose diffuse colour comes from a colour map by UV (an image or a
+    /// checkerboard), and optionally its glossiness from an image ([`Textured`]).
     Textured(Textured),
     /// An unlit surface, as Arnold's `flat` shader draws one (Arnold user guide, "Flat"):
     /// the radiance leaving it in every direction is `color` (the geometry's colour where it has
@@ -69,16 +70,26 @@ pub enum Material {
         /// The outgoing radiance (linear RGB, may exceed 1).
         color: Color,
     },
+    /// An unlit surface ([`Material::Unlit`]) whose radiance is `tint` times a colour map
+    /// by UV (the map's mean where the mesh has no UVs), as Arnold's `flat` shader draws a
+    /// texture on its colour. The geometry's colour does not replace it (as for
+    /// [`Material::Textured`]).
+    UnlitTextured {
+        /// The radiance by UV.
+        color: texture::ColorMap,
+        /// Factor on the map's colour.
+        tint: Color,
+    },
 }
 
-/// A textured surface: Lambert with the colour `tint` times the `color` texture, plus,
+/// A textured surface: Lambert with the colour `tint` times the `color` map, plus,
 /// with a roughness, a normalised Phong lobe of reflectance `specular` whose exponent
 /// the roughness gives (`2 / r^2 - 2`, the Phong exponent equivalent to a Beckmann
 /// roughness r; Walter et al. 2007, "Microfacet Models for Refraction", section 5.2).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Textured {
     /// Diffuse colour by UV.
-    pub color: texture::Texture,
+    pub color: texture::ColorMap,
     /// Factor on the texture's colour.
     pub tint: Color,
     /// Roughness in (0, 1]: a constant or a texture's red channel; `None` is matte.
@@ -97,14 +108,10 @@ pub enum Roughness {
 }
 
 impl Textured {
-    /// The diffuse albedo at a shading point: the texture at its UV filtered by the ray's
-    /// footprint (the texture's mean where the mesh has no UVs).
+    /// The diffuse albedo at a shading point: the map at its UV filtered by the ray's
+    /// footprint (the map's mean where the mesh has no UVs).
     pub fn albedo(&self, sp: &ShadingPoint) -> Color {
-        self.tint
-            * match sp.uv {
-                Some(t) => self.color.lookup(t.uv, t.width),
-                None => self.color.average(),
-            }
+        self.tint * map_at(&self.color, sp)
     }
 
     fn response(&self, sp: &ShadingPoint, wo: Vec3, wi: Vec3) -> Color {
@@ -119,6 +126,15 @@ impl Textured {
         };
         let r = roughness.clamp(0.02, 1.0);
         surface::phong(kd, self.specular, phong_exponent(r), sp.normal, wo, wi)
+    }
+}
+
+/// A colour map at a shading point: at its UV filtered by the ray's footprint, the map's
+/// mean without UVs.
+fn map_at(map: &texture::ColorMap, sp: &ShadingPoint) -> Color {
+    match sp.uv {
+        Some(t) => map.lookup(t.uv, t.width),
+        None => map.average(),
     }
 }
 
@@ -187,7 +203,10 @@ impl Material {
             Material::Phong { diffuse, specular, exponent } => {
                 surface::phong(sp.color.unwrap_or(*diffuse), *specular, *exponent, sp.normal, wo, wi)
             }
-            Material::Mirror { .. } | Material::Glass { .. } | Material::Unlit { .. } => Color::ZERO,
+            Material::Mirror { .. }
+            | Material::Glass { .. }
+            | Material::Unlit { .. }
+            | Material::UnlitTextured { .. } => Color::ZERO,
             Material::Tube(t) => match sp.tangent {
                 Some(tangent) => t.response(sp.color, tangent, wo, wi),
                 // Tube shading on a surface: fall back to Lambert with the diffuse colour.
@@ -207,13 +226,14 @@ impl Material {
         }
     }
 
-    /// The radiance an unlit surface ([`Material::Unlit`]) sends towards every direction
-    /// at `sp`: its colour, or the geometry's colour there when it has one (as it replaces
-    /// every material's base colour). `None` for every other material, which reflects
-    /// light instead.
+    /// The radiance an unlit surface ([`Material::Unlit`], [`Material::UnlitTextured`])
+    /// sends towards every direction at `sp`: its colour, or the geometry's colour there
+    /// when it has one (as it replaces every untextured material's base colour), or its map
+    /// at `sp`. `None` for every other material, which reflects light instead.
     pub fn unlit_radiance(&self, sp: &ShadingPoint) -> Option<Color> {
         match self {
             Material::Unlit { color } => Some(sp.color.unwrap_or(*color)),
+            Material::UnlitTextured { color, tint } => Some(*tint * map_at(color, sp)),
             _ => None,
         }
     }

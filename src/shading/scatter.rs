@@ -37,7 +37,7 @@ impl Material {
     /// sampler dimensions.
     pub fn sample_scatter(&self, sp: &ShadingPoint, wo: Vec3, sampler: &mut PixelSampler) -> Option<Scatter> {
         match self {
-            Material::Unlit { .. } => None,
+            Material::Unlit { .. } | Material::UnlitTextured { .. } => None,
             Material::Mirror { .. } | Material::Glass { .. } => {
                 let rays = self.specular(sp, wo);
                 let lum = |c: Color| c.x + c.y + c.z;
@@ -86,7 +86,13 @@ impl Material {
     /// draw none).
     pub fn scatter_pdf(&self, sp: &ShadingPoint, wo: Vec3, wi: Vec3) -> f32 {
         match (self, sp.tangent) {
-            (Material::Mirror { .. } | Material::Glass { .. } | Material::Unlit { .. }, _) => 0.0,
+            (
+                Material::Mirror { .. }
+                | Material::Glass { .. }
+                | Material::Unlit { .. }
+                | Material::UnlitTextured { .. },
+                _,
+            ) => 0.0,
             (Material::Physical(h), Some(t)) => h.pdf(sp.color, t, sp.normal, wo, wi),
             (_, Some(_)) => 1.0 / (4.0 * PI),
             (_, None) => sp.normal.dot(wi).max(0.0) / PI,

@@ -6,6 +6,9 @@
 //!
 //! UVs follow the OBJ convention: (0, 0) is the image's bottom-left corner, v runs up; the
 //! texture repeats outside [0, 1).
+//!
+//! A colour map ([`ColorMap`]) is such an image or a procedural checkerboard ([`Checker`],
+//! Arnold's `checkerboard` shader), box-filtered over the same footprint in closed form.
 
 use crate::math::Color;
 use std::sync::Arc;
@@ -140,6 +143,121 @@ impl Level {
     }
 }
 
+/// A colour by UV: an image ([`Texture`]) or a procedural checkerboard ([`Checker`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ColorMap {
+    /// An image, mip-mapped.
+    Image(Texture),
+    /// Two colours in alternating cells.
+    Checker(Checker),
+}
+
+impl ColorMap {
+    /// The colour at `uv`, filtered over a footprint `width` wide in UV units.
+    pub fn lookup(&self, uv: [f32; 2], width: f32) -> Color {
+        match self {
+            ColorMap::Image(t) => t.lookup(uv, width),
+            ColorMap::Checker(c) => c.lookup(uv, width),
+        }
+    }
+
+    /// The mean colour over the whole map (what a surface without UVs shows).
+    pub fn average(&self) -> Color {
+        match self {
+            ColorMap::Image(t) => t.average(),
+            ColorMap::Checker(c) => c.average(),
+        }
+    }
+}
+
+/// A checkerboard in UV space, as Arnold's `checkerboard` shader draws it (Arnold user
+/// guide, "Checkerboard"): the cell of `uv` is
+/// `(floor(u × u_frequency + u_offset), floor(v × v_frequency + v_offset))`, `color1` where
+/// the two cell numbers sum to an even number, `color2` where odd. `contrast` scales
+/// both colours' distance from their mean (1 keeps them, 0 draws the mean).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Checker {
+    /// Colour of the even cells (the cell at the UV origin).
+    pub color1: Color,
+    /// Colour of the odd cells.
+    pub color2: Color,
+    /// Cells per UV unit along u.
+    pub u_frequency: f32,
+    /// Cells per UV unit along v.
+    pub v_frequency: f32,
+    /// Shift along u, in cells.
+    pub u_offset: f32,
+    /// Shift along v, in cells.
+    pub v_offset: f32,
+    /// Contrast between the colours.
+    pub contrast: f32,
+}
+
+impl Default for Checker {
+    /// Arnold's defaults: white and black cells, one of each per UV unit.
+    fn default() -> Self {
+        Checker {
+            color1: Color::ONE,
+            color2: Color::ZERO,
+            u_frequency: 1.0,
+            v_frequency: 1.0,
+            u_offset: 0.0,
+            v_offset: 0.0,
+            contrast: 1.0,
+        }
+    }
+}
+
+impl Checker {
+    /// The two colours after the contrast, about their mean.
+    fn colors(&self) -> (Color, Color) {
+        let mean = (self.color1 + self.color2) * 0.5;
+        (mean + (self.color1 - mean) * self.contrast, mean + (self.color2 - mean) * self.contrast)
+    }
+
+    /// The mean of the two colours: what a footprint covering many cells sees.
+    pub fn average(&self) -> Color {
+        let (a, b) = self.colors();
+        (a + b) * 0.5
+    }
+
+    /// The checkerboard at `uv`, box-filtered over a square footprint `width` wide in UV
+    /// units. The filter is exact and separable: the box mean of the odd cells along one
+    /// axis is the difference of the running integral of the 0/1 square wave across the
+    /// box over its width; the odd cells of the board are those odd along
+    /// exactly one axis, so with independent fractions `a` and `b` along u and v their
+    /// share is `a + b − 2ab`. A zero width reads the cell itself.
+    pub fn lookup(&self, [u, v]: [f32; 2], width: f32) -> Color {
+        let (a, b) = (
+            odd_fraction(u * self.u_frequency + self.u_offset, width * self.u_frequency.abs()),
+            odd_fraction(v * self.v_frequency + self.v_offset, width * self.v_frequency.abs()),
+        );
+        let odd = a + b - 2.0 * a * b;
+        let (c1, c2) = self.colors();
+        c1 * (1.0 - odd) + c2 * odd
+    }
+}
+
+/// The share of odd cells (`floor(x)` odd) in a box `width` cells wide centred on `x`: 0
+/// or 1 for a zero width, 1/2 for a wide one. Computed in f64: the running integral grows
+/// with `x`, and in single precision its difference would lose the fraction far from
+/// the origin.
+fn odd_fraction(x: f32, width: f32) -> f32 {
+    if !(x.is_finite() && width.is_finite()) {
+        return 0.5;
+    }
+    let x = x as f64;
+    // A footprint far below a cell (or none) reads the cell.
+    if width <= 1e-6 {
+        return x.floor().rem_euclid(2.0) as f32;
+    }
+    // The integral of the odd-cell indicator from 0 to t: one per two cells, plus the
+    // part of an odd cell t is in.
+    let integral = |t: f64| (t / 2.0).floor() + (2.0 * (t / 2.0 - (t / 2.0).floor()) - 1.0).max(0.0);
+    let w = width as f64;
+    ((integral(x + w / 2.0) - integral(x - w / 2.0)) / w).clamp(0.0, 1.0) as f32
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -180,6 +298,37 @@ mod tests {
         // Between levels the lookup blends: a footprint of 1.5 texels is not the sharp value.
         let mid = t.lookup([0.5 / 64.0, 0.5 / 64.0], 1.5 / 64.0).x;
         assert!(mid > 0.05 && mid < 0.95, "{mid}");
+    }
+
+    /// The cell of `floor(u f_u + o_u) + floor(v f_v + o_v)`: even cells `color1`, odd ones
+    /// `color2`; offsets and frequencies move the cells; contrast pulls both to their mean;
+    /// a footprint covering many cells reads the mean, and half a cell across an edge reads
+    /// the two halves' mean.
+    #[test]
+    fn checker_cells_follow_frequency_and_offset() {
+        let (red, blue) = (Color::new(1.0, 0.0, 0.0), Color::new(0.0, 0.0, 1.0));
+        let c = Checker { color1: red, color2: blue, u_frequency: 4.0, v_frequency: 2.0, ..Default::default() };
+        assert_eq!(c.lookup([0.1, 0.1], 0.0), red); // cell (0, 0)
+        assert_eq!(c.lookup([0.3, 0.1], 0.0), blue); // (1, 0)
+        assert_eq!(c.lookup([0.3, 0.6], 0.0), red); // (1, 1)
+        assert_eq!(c.lookup([0.1, 0.6], 0.0), blue); // (0, 1)
+        assert_eq!(c.lookup([-0.1, 0.1], 0.0), blue); // (-1, 0)
+        let shifted = Checker { u_offset: 1.0, ..c.clone() };
+        assert_eq!(shifted.lookup([0.1, 0.1], 0.0), blue);
+        let half = Checker { v_offset: 0.5, ..c.clone() };
+        assert_eq!(c.lookup([0.1, 0.3], 0.0), red); // v 0.3 × 2 = 0.6: cell 0
+        assert_eq!(half.lookup([0.1, 0.3], 0.0), blue); // 0.6 + 0.5 = 1.1: cell 1
+        let grey = Checker { contrast: 0.0, ..c.clone() };
+        assert_eq!(grey.lookup([0.1, 0.1], 0.0), Color::new(0.5, 0.0, 0.5));
+        assert_eq!(c.average(), Color::new(0.5, 0.0, 0.5));
+        for uv in [[0.13, 0.71], [0.5, 0.5], [-3.2, 7.9]] {
+            assert!((c.lookup(uv, 10.0) - c.average()).abs().max_element() < 0.02, "{uv:?}");
+        }
+        // Centred on the edge u = 0.25, a quarter cell wide along u (1/16 UV), well inside v.
+        let edge = c.lookup([0.25, 0.1], 1.0 / 16.0 / 4.0);
+        assert!((edge - Color::new(0.5, 0.0, 0.5)).abs().max_element() < 1e-4, "{edge}");
+        // Through the colour map.
+        assert_eq!(ColorMap::Checker(c).lookup([0.3, 0.1], 0.0), blue);
     }
 
     #[test]

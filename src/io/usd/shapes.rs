@@ -12,7 +12,9 @@ use super::Notes;
 use crate::geometry::subdivision::{arnold_iterations, PolygonMesh, MAX_ITERATIONS};
 use crate::geometry::TriangleMesh;
 use crate::io::arnold_hair::{ArnoldShader, Param, StandardHair};
-use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
+use crate::io::arnold_surface::{textured, Flat, Lambert, StandardSurface};
+use crate::math::Color;
+use crate::shading::texture::{Checker, ColorMap};
 use crate::shading::Material;
 use glam::{Mat3, Vec3};
 use openusd::sdf;
@@ -53,7 +55,13 @@ pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &m
         skin.normals(normals)?;
     }
     // UVs: vertex (one per point) or face-varying (one per face corner), optionally indexed.
-    let st_attr = prim.attribute("primvars:st");
+    // Arnold-USD takes `primvars:st`, else `primvars:uv` (what Arnold's own USD writer
+    // names them), as the mesh's UVs.
+    let uv_name = match value(prim, "primvars:st", time)?.is_some() || value(prim, "primvars:uv", time)?.is_none() {
+        true => "primvars:st",
+        false => "primvars:uv",
+    };
+    let st_attr = prim.attribute(uv_name);
     let st: Option<Vec<[f32; 2]>> = match st_attr.get_at::<sdf::Value>(time)? {
         None => None,
         Some(sdf::Value::Vec2fVec(v)) => Some(v.iter().map(|p| [p.x, p.y]).collect()),
@@ -65,7 +73,7 @@ pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &m
     anyhow::ensure!(normals.iter().flatten().all(|n| n.is_finite()), "`normals` must be finite");
     // An empty index array indexes nothing: the values are read in order.
     let st_indices =
-        ints(value(prim, "primvars:st:indices", time)?, "primvars:st:indices")?.filter(|ix| !ix.is_empty());
+        ints(value(prim, &format!("{uv_name}:indices"), time)?, "primvars:st:indices")?.filter(|ix| !ix.is_empty());
     interpolation(&st_attr, Interpolation::Vertex)?;
     let face_varying = matches!(st_attr.get_metadata::<sdf::Value>("interpolation")?, Some(sdf::Value::Token(t)) if t.as_str() == "faceVarying");
     // The UV of corner `k` (running over all faces) of point `p`.
@@ -354,11 +362,15 @@ pub fn bound_standard_hair(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Re
 /// `arnold:lambert` or `arnold:flat`), as [`bound_standard_hair`] finds and reads it
 /// ([`crate::io::arnold_surface`]).
 pub fn bound_arnold_surface(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Material>> {
-    const IDS: [&str; 3] = ["arnold:standard_surface", "arnold:lambert", "arnold:flat"];
+    const IDS: [&str; 4] = ["arnold:standard_surface", "arnold:lambert", "arnold:flat", "arnold:checkerboard"];
     Ok(match bound_arnold_shader(prim, &IDS, time)? {
         Some((shader, 0)) => Some(arnold_material::<StandardSurface>(&shader, time, notes)?),
         Some((shader, 1)) => Some(arnold_material::<Lambert>(&shader, time, notes)?),
-        Some((shader, _)) => Some(arnold_material::<Flat>(&shader, time, notes)?),
+        Some((shader, 2)) => Some(arnold_material::<Flat>(&shader, time, notes)?),
+        // A texture as the surface shader: Arnold draws its colour unlit, as `flat` would.
+        Some((shader, _)) => {
+            Some(Material::UnlitTextured { color: ColorMap::Checker(checker(&shader, time, notes)?), tint: Vec3::ONE })
+        }
         None => None,
     })
 }
@@ -406,8 +418,42 @@ fn arnold_material<S: ArnoldShader>(shader: &Prim, time: TimeCode, notes: &mut N
         }
         anyhow::ensure!(!params.param(name).is_some_and(|p| p.is_infinite()), "`{what}` is beyond single precision");
     }
+    // The first mapped parameter driven by a checkerboard is drawn with it: the material
+    // is made with that parameter at 1 and the map applied; where the map cannot colour the
+    // material, the parameter takes the map's mean instead.
+    let mut map = None;
+    for &(name, slot) in S::MAPS {
+        let Some(at) = connected.iter().position(|c| c == name) else { continue };
+        let Some((checker, channel)) = connected_checker(shader, name, time, notes)? else { continue };
+        connected.remove(at);
+        map = Some((name, slot, checker, channel));
+        break;
+    }
     let path = shader.path().to_string();
-    let (material, left_out) = params.material(&path, &connected);
+    let material = |params: &S, connected: &[String]| params.material(&path, connected);
+    let (material, left_out) = match map {
+        None => material(&params, &connected),
+        Some((name, slot, checker, channel)) => {
+            set_param(&mut params, name, Color::ONE);
+            let (neutral, left_out) = material(&params, &connected);
+            match textured(&neutral, slot, ColorMap::Checker(checker.clone())) {
+                Some(m) => (m, left_out),
+                None => {
+                    notes.note(format!("checkerboards on `{name}` of a material they cannot colour (metal, glass, an emission on a lit surface): drawn in their mean colour"), shader);
+                    let mean = checker.average();
+                    set_param(
+                        &mut params,
+                        name,
+                        match channel {
+                            Some(k) => Color::splat(mean[k]),
+                            None => mean,
+                        },
+                    );
+                    material(&params, &connected)
+                }
+            }
+        }
+    };
     if let Some(left_out) = left_out {
         // Counted by what is left out, the first shader named: copies of one material
         // (per instance, per asset) give one warning, not one each.
@@ -415,6 +461,83 @@ fn arnold_material<S: ArnoldShader>(shader: &Prim, time: TimeCode, notes: &mut N
         notes.note(what.to_string(), shader);
     }
     Ok(material)
+}
+
+/// Sets parameter `name` of `params` to `c` (a number to its red channel).
+fn set_param<S: ArnoldShader>(params: &mut S, name: &str, c: Color) {
+    match params.param(name) {
+        Some(Param::Float(f)) => *f = c.x,
+        Some(Param::Color(v)) => *v = c,
+        _ => {}
+    }
+}
+
+/// The checkerboard input `name` of `shader` is connected to, when its source is an
+/// `arnold:checkerboard` shader, with the channel its output reads (`outputs:r`, `g`,
+/// `b`: that channel, as a grey checkerboard; any other output: the colour). A number
+/// parameter connected to the whole colour reads its red channel, as Arnold does.
+fn connected_checker(
+    shader: &Prim,
+    name: &str,
+    time: TimeCode,
+    notes: &mut Notes,
+) -> Res<Option<(Checker, Option<usize>)>> {
+    let Some(target) = shader.attribute(format!("inputs:{name}")).connections()?.into_iter().next() else {
+        return Ok(None);
+    };
+    let source = shader.stage().prim(target.prim_path());
+    if token(value(&source, "info:id", time)?, "") != "arnold:checkerboard" {
+        return Ok(None);
+    }
+    let mut c = checker(&source, time, notes)?;
+    let output = target.to_string();
+    let channel = ["r", "g", "b"].iter().position(|k| output.ends_with(&format!("outputs:{k}")));
+    if let Some(k) = channel {
+        (c.color1, c.color2) = (Color::splat(c.color1[k]), Color::splat(c.color2[k]));
+    }
+    Ok(Some((c, channel)))
+}
+
+/// An `arnold:checkerboard` shader's inputs, Arnold's defaults for those not written.
+/// Its antialiasing controls are not read (tress filters it over the ray's footprint),
+/// nor other UV sets than the mesh's own, nor shading networks on its inputs: each said
+/// in one note.
+fn checker(shader: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Checker> {
+    let mut c = Checker::default();
+    for (name, slot) in [("color1", &mut c.color1), ("color2", &mut c.color2)] {
+        let what = format!("{}.inputs:{name}", shader.path());
+        *slot = vec3(value(shader, &format!("inputs:{name}"), time)?, &what)?.unwrap_or(*slot);
+        anyhow::ensure!(slot.is_finite(), "`{what}` must be finite");
+    }
+    for (name, slot) in [
+        ("u_frequency", &mut c.u_frequency),
+        ("v_frequency", &mut c.v_frequency),
+        ("u_offset", &mut c.u_offset),
+        ("v_offset", &mut c.v_offset),
+        ("contrast", &mut c.contrast),
+    ] {
+        let what = format!("{}.inputs:{name}", shader.path());
+        *slot = number(value(shader, &format!("inputs:{name}"), time)?, &what)?.map_or(*slot, |x| x as f32);
+        anyhow::ensure!(slot.is_finite(), "`{what}` must be finite");
+    }
+    let f = |name: &str, default: f64| -> Res<bool> {
+        Ok(number(value(shader, &format!("inputs:{name}"), time)?, name)?.is_some_and(|x| x != default))
+    };
+    if f("filter_strength", 1.0)? || f("filter_offset", 0.0)? {
+        notes.note(
+            "checkerboard `filter_strength` / `filter_offset`: filtered over the ray's footprint instead".into(),
+            shader,
+        );
+    }
+    if !token(value(shader, "inputs:uvset", time)?, "").is_empty() {
+        notes.note("checkerboard `uvset`: the mesh's own UVs used".into(), shader);
+    }
+    for name in ["color1", "color2", "u_frequency", "v_frequency", "u_offset", "v_offset", "contrast"] {
+        if shader.attribute(format!("inputs:{name}")).has_authored_connections()? {
+            notes.note("shading networks on checkerboard inputs: their own values used".into(), shader);
+        }
+    }
+    Ok(c)
 }
 
 /// The material `prim` is bound to (`material:binding`), if any.
