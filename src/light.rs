@@ -1,10 +1,13 @@
 //! Lights: distant (sharp, or a disk of finite angular size for soft shadows), point,
-//! spot, quad and sphere area lights, a constant environment and an environment map
-//! ([`EnvironmentMap`]).
+//! spot, quad and sphere area lights, emitting triangle meshes ([`MeshLight`]), a constant
+//! environment and an environment map ([`EnvironmentMap`]).
 
 mod environment;
+mod mesh;
 
 pub use environment::{luminance, EnvironmentMap, MapPlacement, MAX_PIXELS as MAX_ENVIRONMENT_PIXELS};
+
+pub use mesh::MeshLight;
 
 use crate::math::{frame, sampling, Color};
 use glam::Vec3;
@@ -71,6 +74,8 @@ pub enum Light {
         /// Weight camera rays see it with, as for [`Light::Quad`].
         camera_visibility: f32,
     },
+    /// Triangles emitting from their front faces (Arnold's mesh light).
+    Mesh(MeshLight),
     /// A distant light of finite angular size (the sun as a disk), for soft shadows:
     /// uniform radiance over the cone of directions within its angular radius.
     Sun {
@@ -160,6 +165,7 @@ impl Light {
                 let dist = b - (radius * radius - (dc * dc - b * b)).max(0.0).sqrt();
                 LightSample { dir, dist, value: radiance * (2.0 * PI * (1.0 - cos_max)) }
             }
+            Light::Mesh(ref mesh) => mesh.sample(p, (u, v))?,
             Light::Sun { direction, radiance, cos_max } => {
                 let local = sampling::uniform_cone(u, v, cos_max);
                 let (b1, b2) = frame(direction);
@@ -228,6 +234,7 @@ impl Light {
                 let t = -b - disc.sqrt();
                 (t > 0.0 && t < tmax).then_some((t, radiance))
             }
+            Light::Mesh(ref mesh) => mesh.emitted(origin, dir, tmax),
             // Infinitely far: seen only by a ray that meets nothing.
             Light::Sun { direction, radiance, cos_max } => {
                 (tmax == f32::INFINITY && dir.dot(direction) >= cos_max).then_some((f32::INFINITY, radiance))
@@ -243,6 +250,7 @@ impl Light {
     pub fn pdf(&self, p: Vec3, dir: Vec3) -> f32 {
         match *self {
             Light::EnvironmentMap(ref map) => map.pdf(dir),
+            Light::Mesh(ref mesh) => mesh.pdf(p, dir),
             Light::Quad { edge_u, edge_v, .. } => match self.emitted(p, dir, f32::INFINITY) {
                 Some((t, _)) => {
                     let n = edge_u.cross(edge_v);
@@ -300,6 +308,7 @@ impl Light {
             | Light::Quad { camera_visibility, .. }
             | Light::Sphere { camera_visibility, .. } => camera_visibility,
             Light::EnvironmentMap(ref map) => map.camera_visibility(),
+            Light::Mesh(ref mesh) => mesh.camera_visibility(),
             _ => 1.0,
         }
     }
@@ -369,6 +378,57 @@ mod tests {
         let e = irradiance(&light, Vec3::ZERO, Vec3::Z, 64).x;
         let expected = PI * (1.0f32 / 16.0);
         assert!((e - expected).abs() < 0.01 * expected, "{e} vs {expected}");
+    }
+
+    /// A square of side 2 at height `h` over the origin as two triangles wound to face
+    /// down (−Z), emitting radiance 1.
+    fn square_mesh(h: f32) -> MeshLight {
+        let c = |x: f32, y: f32| Vec3::new(x, y, h);
+        let tris = [[c(-1.0, -1.0), c(-1.0, 1.0), c(1.0, 1.0)], [c(-1.0, -1.0), c(1.0, 1.0), c(1.0, -1.0)]];
+        MeshLight::new(tris, Color::ONE, 1.0).unwrap()
+    }
+
+    #[test]
+    fn mesh_light_irradiance_matches_closed_form_on_its_front_only() {
+        // The quad's closed form (Lambert's formula for a rectangle) under the square.
+        let h = 1.5f32;
+        let light = Light::Mesh(square_mesh(h));
+        let e = irradiance(&light, Vec3::ZERO, Vec3::Z, 128).x;
+        let s = 1.0 / (1.0 + h * h).sqrt();
+        let expected = 4.0 * s * s.atan();
+        assert!((e - expected).abs() < 0.01 * expected, "{e} vs {expected}");
+        // One-sided: nothing reaches a point above it facing down.
+        assert_eq!(irradiance(&light, Vec3::new(0.0, 0.0, 2.0 * h), -Vec3::Z, 16), Color::ZERO);
+        // A small square far away: E ≈ L A cos / d^2.
+        let far = Light::Mesh(square_mesh(40.0));
+        let e = irradiance(&far, Vec3::ZERO, Vec3::Z, 32).x;
+        assert!((e - 4.0 / 1600.0).abs() < 0.01 * 4.0 / 1600.0, "{e}");
+    }
+
+    #[test]
+    fn mesh_light_is_seen_from_its_front_with_the_density_it_samples() {
+        let mesh = square_mesh(1.5);
+        let light = Light::Mesh(mesh.clone());
+        let up = Vec3::new(0.3, 0.2, 1.0).normalize();
+        let (t, l) = light.emitted(Vec3::ZERO, up, f32::INFINITY).unwrap();
+        assert!((t - 1.5 / up.z).abs() < 1e-4 && l == Color::ONE);
+        assert!(light.emitted(Vec3::new(0.0, 0.0, 3.0), -up, f32::INFINITY).is_none(), "back face");
+        assert!(light.emitted(Vec3::ZERO, up, 1.0).is_none(), "beyond tmax");
+        // pdf = d^2 / (A cos): area 4, cos = up.z.
+        let expected = t * t / (4.0 * up.z);
+        assert!((light.pdf(Vec3::ZERO, up) - expected).abs() < 1e-4 * expected);
+        // Mirrored, the same physical side stays lit: the square now under the origin at
+        // z = -1.5 faces it (up).
+        let flipped = Light::Mesh(mesh.transformed(&glam::Affine3A::from_scale(Vec3::new(1.0, 1.0, -1.0))));
+        assert!(flipped.emitted(Vec3::ZERO, -up, f32::INFINITY).is_some());
+        assert!(flipped.emitted(Vec3::new(0.0, 0.0, -3.0), up, f32::INFINITY).is_none());
+    }
+
+    #[test]
+    fn mesh_light_of_no_area_is_none() {
+        let p = Vec3::ONE;
+        assert!(MeshLight::new([[p, p, p], [p, Vec3::ZERO, 2.0 * p]], Color::ONE, 1.0).is_none());
+        assert!(MeshLight::new([[Vec3::ZERO, Vec3::X, Vec3::splat(f32::NAN)]], Color::ONE, 1.0).is_none());
     }
 
     #[test]

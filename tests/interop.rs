@@ -263,3 +263,56 @@ def Scope "Looks" {{
         }
     }
 }
+
+/// A plane facing a camera, a distant light of intensity 0 (so that no default light is
+/// added) and `light` (USDA lines) on a small square a unit over the plane wound to face
+/// it: the scene's mean pixel value and its warnings.
+fn usd_mesh_light_scene(light: &str) -> (f32, Vec<String>) {
+    let text = format!(
+        "#usda 1.0\n\
+         def Camera \"cam\" {{\n double3 xformOp:translate = (0, 0, 6)\n uniform token[] xformOpOrder = [\"xformOp:translate\"]\n\
+          float focalLength = 35\n float horizontalAperture = 36\n float verticalAperture = 24\n}}\n\
+         def DistantLight \"off\" {{\n float inputs:intensity = 0\n}}\n\
+         def Mesh \"plane\" {{\n int[] faceVertexCounts = [4]\n int[] faceVertexIndices = [0, 1, 2, 3]\n\
+          point3f[] points = [(-2, -2, 0), (2, -2, 0), (2, 2, 0), (-2, 2, 0)]\n}}\n\
+         def Mesh \"lamp\" {{\n int[] faceVertexCounts = [4]\n int[] faceVertexIndices = [0, 1, 2, 3]\n\
+          point3f[] points = [(-0.5, -0.5, 1), (-0.5, 0.5, 1), (0.5, 0.5, 1), (0.5, -0.5, 1)]\n {light}\n}}\n"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("lamp.usda");
+    std::fs::write(&path, text).unwrap();
+    let (mut desc, warnings) = read_imported(&path).unwrap().into_description();
+    (desc.settings.width, desc.settings.height, desc.settings.spp) = (32, 24, 4);
+    let film = render(&desc);
+    let mean = film.pixels.iter().map(|p| p.color.element_sum()).sum::<f32>() / (3.0 * film.pixels.len() as f32);
+    (mean, warnings)
+}
+
+#[test]
+fn usd_arnold_mesh_lights_light_the_plane_under_them() {
+    // Without the light the scene is unlit.
+    let (dark, _) = usd_mesh_light_scene("");
+    assert!(dark < 1e-4, "{dark}");
+    // As a light (normalized: 2^2 × 1 over its 1 unit² area) it lights the plane; from
+    // above, the camera sees only its unlit back, so the light is all on the plane.
+    let (lit, warnings) = usd_mesh_light_scene(
+        "bool primvars:arnold:light = 1\n float primvars:arnold:light:exposure = 2\n \
+         string primvars:arnold:light:shaders = \"/tex\"",
+    );
+    assert!(lit > 0.01, "{lit}");
+    assert!(
+        warnings.iter().any(|w| w.contains("primvars:arnold:light:shaders") && w.contains("/lamp")),
+        "{warnings:?}"
+    );
+    // Turned over (the other winding) and hidden from the camera by its Arnold visibility
+    // (every ray but camera rays), it lights only the empty space above.
+    let (away, _) = usd_mesh_light_scene(
+        "bool primvars:arnold:light = 1\n uniform token orientation = \"leftHanded\"\n \
+         uchar primvars:arnold:visibility = 254",
+    );
+    assert!(away < 1e-4, "{away}");
+    // A NaN intensity is reported naming the prim, and nothing is lit.
+    let (nan, warnings) =
+        usd_mesh_light_scene("bool primvars:arnold:light = 1\n float primvars:arnold:light:intensity = nan");
+    assert!(nan < 1e-4 && warnings.iter().any(|w| w.contains("/lamp") && w.contains("finite")), "{warnings:?}");
+}

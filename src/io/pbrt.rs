@@ -1189,6 +1189,7 @@ fn scale_emission(l: &mut Light, k: f32) {
         | Light::Sun { radiance: c, .. }
         | Light::Environment { radiance: c, .. } => *c *= k,
         Light::EnvironmentMap(map) => *map = map.scaled(k),
+        Light::Mesh(mesh) => *mesh = mesh.with_radiance(mesh.radiance() * k),
     }
 }
 

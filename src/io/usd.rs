@@ -396,6 +396,9 @@ fn read_drawable(
     notes: &mut Notes,
 ) -> Res<()> {
     let what = |e: anyhow::Error| e.context(format!("{}", prim.path()));
+    if kind == "Mesh" && lights::is_mesh_light(prim, time) {
+        return push_mesh_light(prim, transform, skin, time, contents, notes);
+    }
     let Some(visibility) = visibility::read(prim, time, notes).map_err(what)? else {
         return Ok(());
     };
@@ -460,6 +463,31 @@ fn read_drawable(
             };
             push_mesh(contents, mesh, surface_material(prim, time, notes).map_err(what)?, transform, visibility);
         }
+    }
+    Ok(())
+}
+
+/// The Arnold mesh light of the Mesh `prim` ([`lights::read_mesh_light`]) into `contents`
+/// in place of the mesh; inconsistent data skips it ([`skip`]).
+fn push_mesh_light(
+    prim: &Prim,
+    transform: Affine3A,
+    skin: Option<&skel::Skinning>,
+    time: TimeCode,
+    contents: &mut Contents,
+    notes: &mut Notes,
+) -> Res<()> {
+    let mesh = match shapes::read_mesh(prim, time, skin, notes) {
+        Ok(mesh) => mesh,
+        Err(e) => {
+            skip(notes, prim, e);
+            return Ok(());
+        }
+    };
+    let camera = visibility::read(prim, time, notes)?.is_some_and(|v| v.camera);
+    match lights::read_mesh_light(prim, &mesh, &transform, camera, time, notes) {
+        Ok(light) => contents.lights.extend(light),
+        Err(e) => skip(notes, prim, e),
     }
     Ok(())
 }

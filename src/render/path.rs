@@ -37,7 +37,10 @@ use crate::world::World;
 
 /// True for lights a material-sampled ray can hit, which MIS weighs.
 fn hittable(light: &Light) -> bool {
-    matches!(light, Light::Quad { .. } | Light::Sphere { .. } | Light::Sun { .. } | Light::EnvironmentMap(_))
+    matches!(
+        light,
+        Light::Quad { .. } | Light::Sphere { .. } | Light::Mesh(_) | Light::Sun { .. } | Light::EnvironmentMap(_)
+    )
 }
 
 /// What a ray that meets nothing brings back: the constant environment, and the maps

@@ -190,6 +190,7 @@ fn transform_light(l: &Light, m: &Affine3A) -> Light {
         Light::Sphere { center, radius, radiance, camera_visibility } => {
             Light::Sphere { center: m.transform_point3(center), radius, radiance, camera_visibility }
         }
+        Light::Mesh(ref mesh) => Light::Mesh(mesh.transformed(m)),
         Light::Environment { radiance, camera_visibility } => Light::Environment { radiance, camera_visibility },
         // Infinitely far: only the transform's orthogonal part turns it, its rotation and,
         // when the transform mirrors (its determinant is negative), that reflection.

@@ -35,10 +35,20 @@
 //! (`primvars:arnold:visibility`, `...:visibility:camera`, ...) are Arnold's shape
 //! parameters: Arnold-USD reads them on shapes only, so on a light they change nothing,
 //! here as in Arnold (reported, since they say the author meant to hide something).
+//!
+//! A `Mesh` with `primvars:arnold:light = 1` is Arnold-USD's mesh light: its triangles (as
+//! the mesh is drawn, subdivided and placed) emit `primvars:arnold:light:color ×
+//! :intensity × 2^:exposure` (white, 1, 0 by default) from their front faces (by the
+//! mesh's `orientation`), divided by
+//! the mesh's area when `primvars:arnold:light:normalize` (on by default, as in Arnold).
+//! The light replaces the mesh: camera rays see its emission unless the prim's Arnold
+//! visibility hides it from them, and it casts no shadow of its own. A texture on its
+//! emission (`primvars:arnold:light:shaders`) is reported, not applied.
 
 use super::values::{boolean, number, token, value, vec3, Res};
 use super::Notes;
-use crate::light::{Light, MapPlacement};
+use crate::geometry::TriangleMesh;
+use crate::light::{Light, MapPlacement, MeshLight};
 use crate::scene::{EnvironmentFile, LightSource, Projection};
 use glam::{Affine3A, Mat3, Vec3};
 use openusd::sdf;
@@ -278,4 +288,59 @@ fn dome_texture(prim: &Prim, time: TimeCode, emission: Vec3, notes: &mut Notes) 
         placement: MapPlacement::new(180.0, 1.0),
         fallback: Some(emission),
     }))
+}
+
+/// Whether the Mesh `prim` is an Arnold mesh light (`primvars:arnold:light` on).
+pub fn is_mesh_light(prim: &Prim, time: TimeCode) -> bool {
+    boolean(value(prim, "primvars:arnold:light", time).ok().flatten(), false)
+}
+
+/// The Arnold mesh light of the Mesh `prim` (the module docs), whose triangles `mesh`
+/// are placed by `transform`; seen by camera rays when `camera`. `None` (reported) when
+/// no triangle has an area.
+pub fn read_mesh_light(
+    prim: &Prim,
+    mesh: &TriangleMesh,
+    transform: &Affine3A,
+    camera: bool,
+    time: TimeCode,
+    notes: &mut Notes,
+) -> Res<Option<LightSource>> {
+    let get = |name: &str| value(prim, &format!("primvars:arnold:light:{name}"), time);
+    let num = |name: &str, d: f32| -> Res<f32> {
+        let what = format!("primvars:arnold:light:{name}");
+        let x = number(get(name)?, &what)?.map_or(d, |x| x as f32);
+        anyhow::ensure!(x.is_finite(), "`{what}` must be finite");
+        Ok(x)
+    };
+    let color = vec3(get("color")?, "primvars:arnold:light:color")?.unwrap_or(Vec3::ONE);
+    let emission = color * num("intensity", 1.0)? * num("exposure", 0.0)?.exp2();
+    anyhow::ensure!(
+        emission.is_finite() && emission.min_element() >= 0.0,
+        "mesh light colour × intensity must be finite and not negative"
+    );
+    if get("shaders")?.is_some() {
+        notes.note("Arnold mesh light textures (`primvars:arnold:light:shaders`): not applied".into(), prim);
+    }
+    // USD's front face winds counter-clockwise seen from the front, clockwise for a
+    // `leftHanded` mesh (UsdGeomGprim `orientation`).
+    let left = token(value(prim, "orientation", time)?, "rightHanded") == "leftHanded";
+    let triangles = (0..mesh.indices.len() as u32).map(|i| {
+        let [a, b, c] = mesh.corners(i).map(|p| transform.transform_point3(p));
+        if left {
+            [a, c, b]
+        } else {
+            [a, b, c]
+        }
+    });
+    let camera_visibility = if camera { 1.0 } else { 0.0 };
+    let Some(light) = MeshLight::new(triangles, emission, camera_visibility) else {
+        notes.note("Arnold mesh lights without a face of positive area: not lit".into(), prim);
+        return Ok(None);
+    };
+    let light = match boolean(get("normalize")?, true) {
+        true => light.with_radiance(emission / light.area()),
+        false => light,
+    };
+    Ok(Some(LightSource::Inline(Light::Mesh(light))))
 }
