@@ -212,9 +212,10 @@ fn the_command_line_reports_bad_foreign_files_without_panicking() {
     assert!(!ok && err.contains(".usda"), "{err}");
 }
 
-/// A quad with UVs under Arnold's `flat` shader whose colour is a checkerboard (two cells
-/// along u): each half of the quad is its cell's colour, exactly (unlit), and with a
-/// `u_offset` of one cell the colours swap.
+/// A quad with UVs under Arnold's `flat` shader whose colour is a checkerboard (Arnold's
+/// default frequency: 2 × 2 cells): each quarter of the quad is its cell's colour, exactly
+/// (unlit), `color2` at the UV origin, and with a `u_offset` of half a period (one cell)
+/// the colours swap.
 #[test]
 fn usd_checkerboards_colour_their_cells_by_uv() {
     let usda = |u_offset: f32| {
@@ -239,7 +240,6 @@ def Scope "Looks" {{
             uniform token info:id = "arnold:checkerboard"
             color3f inputs:color1 = (1, 0, 0)
             color3f inputs:color2 = (0, 0, 1)
-            float inputs:u_frequency = 2
             float inputs:u_offset = {u_offset}
             color3f outputs:out
         }}
@@ -250,13 +250,13 @@ def Scope "Looks" {{
     };
     let dir = tempfile::tempdir().unwrap();
     let (red, blue) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 1.0));
-    for (offset, left, right) in [(0.0, red, blue), (1.0, blue, red)] {
+    for (offset, left, right) in [(0.0, blue, red), (0.5, red, blue)] {
         let path = dir.path().join("checker.usda");
         std::fs::write(&path, usda(offset)).unwrap();
         let (mut desc, _) = read_imported(&path).unwrap().into_description();
         (desc.settings.width, desc.settings.height, desc.settings.spp) = (64, 48, 4);
         let film = render(&desc);
-        for (p, want) in [(Vec3::new(-0.5, 0.0, 0.0), left), (Vec3::new(0.5, 0.0, 0.0), right)] {
+        for (p, want) in [(Vec3::new(-0.5, -0.5, 0.0), left), (Vec3::new(0.5, -0.5, 0.0), right)] {
             let (x, y) = project(&desc, p);
             let got = film.pixels[y as usize * 64 + x as usize].color;
             assert!((got - want).abs().max_element() < 1e-3, "offset {offset}, at {p}: {got}, want {want}");

@@ -171,30 +171,33 @@ impl ColorMap {
 }
 
 /// A checkerboard in UV space, as Arnold's `checkerboard` shader draws it (Arnold user
-/// guide, "Checkerboard"): the cell of `uv` is
-/// `(floor(u × u_frequency + u_offset), floor(v × v_frequency + v_offset))`, `color1` where
-/// the two cell numbers sum to an even number, `color2` where odd. `contrast` scales
+/// guide, "Checkerboard"): `u_frequency` and `v_frequency` count periods of two cells per
+/// UV unit (Arnold's default of 1 draws 2 × 2 cells over the unit square), and the cell of
+/// `uv` is `(floor(2 (u × u_frequency + u_offset)), floor(2 (v × v_frequency + v_offset)))`,
+/// `color2` where the two cell numbers sum to an even number (the cell at the UV origin),
+/// `color1` where odd: so Arnold's reference renders of its test suite draw it (a plane
+/// with default frequencies shows four cells, `color1` at u < 1/2 < v). `contrast` scales
 /// both colours' distance from their mean (1 keeps them, 0 draws the mean).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Checker {
-    /// Colour of the even cells (the cell at the UV origin).
-    pub color1: Color,
     /// Colour of the odd cells.
+    pub color1: Color,
+    /// Colour of the even cells (the cell at the UV origin).
     pub color2: Color,
-    /// Cells per UV unit along u.
+    /// Periods (two cells) per UV unit along u.
     pub u_frequency: f32,
-    /// Cells per UV unit along v.
+    /// Periods (two cells) per UV unit along v.
     pub v_frequency: f32,
-    /// Shift along u, in cells.
+    /// Shift along u, in periods.
     pub u_offset: f32,
-    /// Shift along v, in cells.
+    /// Shift along v, in periods.
     pub v_offset: f32,
     /// Contrast between the colours.
     pub contrast: f32,
 }
 
 impl Default for Checker {
-    /// Arnold's defaults: white and black cells, one of each per UV unit.
+    /// Arnold's defaults: white and black cells, two of each over the unit square.
     fn default() -> Self {
         Checker {
             color1: Color::ONE,
@@ -229,12 +232,12 @@ impl Checker {
     /// share is `a + b − 2ab`. A zero width reads the cell itself.
     pub fn lookup(&self, [u, v]: [f32; 2], width: f32) -> Color {
         let (a, b) = (
-            odd_fraction(u * self.u_frequency + self.u_offset, width * self.u_frequency.abs()),
-            odd_fraction(v * self.v_frequency + self.v_offset, width * self.v_frequency.abs()),
+            odd_fraction(2.0 * (u * self.u_frequency + self.u_offset), 2.0 * width * self.u_frequency.abs()),
+            odd_fraction(2.0 * (v * self.v_frequency + self.v_offset), 2.0 * width * self.v_frequency.abs()),
         );
         let odd = a + b - 2.0 * a * b;
         let (c1, c2) = self.colors();
-        c1 * (1.0 - odd) + c2 * odd
+        c2 * (1.0 - odd) + c1 * odd
     }
 }
 
@@ -300,35 +303,37 @@ mod tests {
         assert!(mid > 0.05 && mid < 0.95, "{mid}");
     }
 
-    /// The cell of `floor(u f_u + o_u) + floor(v f_v + o_v)`: even cells `color1`, odd ones
-    /// `color2`; offsets and frequencies move the cells; contrast pulls both to their mean;
+    /// The cell of `floor(2 (u f_u + o_u)) + floor(2 (v f_v + o_v))`: even cells `color2`,
+    /// odd ones `color1`; offsets and frequencies move the cells; contrast pulls both to their mean;
     /// a footprint covering many cells reads the mean, and half a cell across an edge reads
     /// the two halves' mean.
     #[test]
     fn checker_cells_follow_frequency_and_offset() {
         let (red, blue) = (Color::new(1.0, 0.0, 0.0), Color::new(0.0, 0.0, 1.0));
         let c = Checker { color1: red, color2: blue, u_frequency: 4.0, v_frequency: 2.0, ..Default::default() };
-        assert_eq!(c.lookup([0.1, 0.1], 0.0), red); // cell (0, 0)
-        assert_eq!(c.lookup([0.3, 0.1], 0.0), blue); // (1, 0)
-        assert_eq!(c.lookup([0.3, 0.6], 0.0), red); // (1, 1)
-        assert_eq!(c.lookup([0.1, 0.6], 0.0), blue); // (0, 1)
-        assert_eq!(c.lookup([-0.1, 0.1], 0.0), blue); // (-1, 0)
-        let shifted = Checker { u_offset: 1.0, ..c.clone() };
-        assert_eq!(shifted.lookup([0.1, 0.1], 0.0), blue);
-        let half = Checker { v_offset: 0.5, ..c.clone() };
-        assert_eq!(c.lookup([0.1, 0.3], 0.0), red); // v 0.3 × 2 = 0.6: cell 0
-        assert_eq!(half.lookup([0.1, 0.3], 0.0), blue); // 0.6 + 0.5 = 1.1: cell 1
+        // Cells 1/8 wide along u, 1/4 along v.
+        assert_eq!(c.lookup([0.05, 0.1], 0.0), blue); // cell (0, 0)
+        assert_eq!(c.lookup([0.2, 0.1], 0.0), red); // (1, 0)
+        assert_eq!(c.lookup([0.2, 0.3], 0.0), blue); // (1, 1)
+        assert_eq!(c.lookup([0.05, 0.3], 0.0), red); // (0, 1)
+        assert_eq!(c.lookup([-0.05, 0.1], 0.0), red); // (-1, 0)
+                                                      // Half a period is one cell: the colours swap; a whole period changes nothing.
+        assert_eq!(Checker { u_offset: 0.5, ..c.clone() }.lookup([0.05, 0.1], 0.0), red);
+        assert_eq!(Checker { u_offset: 1.0, ..c.clone() }.lookup([0.05, 0.1], 0.0), blue);
+        let quarter = Checker { v_offset: 0.25, ..c.clone() };
+        assert_eq!(c.lookup([0.05, 0.15], 0.0), blue); // 2 × 0.15 × 2 = 0.6: cell 0
+        assert_eq!(quarter.lookup([0.05, 0.15], 0.0), red); // 2 × (0.3 + 0.25) = 1.1: cell 1
         let grey = Checker { contrast: 0.0, ..c.clone() };
         assert_eq!(grey.lookup([0.1, 0.1], 0.0), Color::new(0.5, 0.0, 0.5));
         assert_eq!(c.average(), Color::new(0.5, 0.0, 0.5));
         for uv in [[0.13, 0.71], [0.5, 0.5], [-3.2, 7.9]] {
             assert!((c.lookup(uv, 10.0) - c.average()).abs().max_element() < 0.02, "{uv:?}");
         }
-        // Centred on the edge u = 0.25, a quarter cell wide along u (1/16 UV), well inside v.
-        let edge = c.lookup([0.25, 0.1], 1.0 / 16.0 / 4.0);
+        // Centred on the edge u = 1/8, a quarter cell wide along u (1/32 UV), well inside v.
+        let edge = c.lookup([0.125, 0.1], 1.0 / 32.0);
         assert!((edge - Color::new(0.5, 0.0, 0.5)).abs().max_element() < 1e-4, "{edge}");
         // Through the colour map.
-        assert_eq!(ColorMap::Checker(c).lookup([0.3, 0.1], 0.0), blue);
+        assert_eq!(ColorMap::Checker(c).lookup([0.2, 0.1], 0.0), red);
     }
 
     #[test]
