@@ -351,6 +351,19 @@ fn mean(uvs: &[[f32; 2]]) -> [f32; 2] {
     [u / n, v / n]
 }
 
+/// Asserts that `m` is the unit cube [-0.5, 0.5]³ after two Catmull-Clark iterations, as
+/// the importers' tests read it: 6 × 4² quads, smooth shaded, inside the cage, every
+/// corner pulled in past the 5/18-per-axis point of the first iteration.
+#[cfg(test)]
+pub(crate) fn assert_cube_subdivided_twice(m: &TriangleMesh) {
+    assert_eq!(m.indices.len(), 2 * 6 * 16);
+    assert!(m.normals.is_some());
+    let extent = m.positions.iter().fold(0.0f32, |e, p| e.max(p.abs().max_element()));
+    assert!(extent < 0.5 && extent > 0.4, "{extent}");
+    let corner = m.positions.iter().map(|p| p.x + p.y + p.z).fold(f32::MIN, f32::max);
+    assert!(corner < 3.0 * 5.0 / 18.0, "{corner}");
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

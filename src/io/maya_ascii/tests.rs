@@ -2078,13 +2078,7 @@ fn arnold_subdivision_attributes_subdivide_maya_meshes() {
     // Catmull-Clark, 2 iterations: 6 × 4² quads inside the cage, smooth shaded; every corner
     // pulled in past the 5/18-per-axis point of the first iteration.
     let s = read(&cube_text("\tsetAttr \".ai_subdiv_type\" 1;\n\tsetAttr \".aiSubdivIterations\" 2;\n")).unwrap();
-    let m = inline_mesh(&s);
-    assert_eq!(m.indices.len(), 2 * 6 * 16);
-    assert!(m.normals.is_some());
-    let extent = m.positions.iter().fold(0.0f32, |e, p| e.max(p.abs().max_element()));
-    assert!(extent < 0.5 && extent > 0.4, "{extent}");
-    let corner = m.positions.iter().map(|p| p.x + p.y + p.z).fold(f32::MIN, f32::max);
-    assert!(corner < 3.0 * 5.0 / 18.0, "{corner}");
+    crate::geometry::subdivision::assert_cube_subdivided_twice(inline_mesh(&s));
     assert!(s.warnings.iter().all(|w| !w.contains("ubdiv")), "{:?}", s.warnings);
     // Arnold's default of one iteration when only the type is set: 24 quads.
     let once = read(&cube_text("\tsetAttr \".ai_subdiv_type\" 1;\n")).unwrap();

@@ -1714,13 +1714,7 @@ fn meshes_are_subdivided_as_arnold_subdivides_them() {
     // to the 5/18-per-axis point after the first iteration and further after the second.
     let iterations = "int primvars:arnold:subdiv_iterations = 2 (interpolation = \"constant\")";
     let smooth = read_body(&cube_stage(iterations, ""));
-    let m = mesh(&smooth);
-    assert_eq!(m.indices.len(), 2 * 6 * 16);
-    assert!(m.normals.is_some());
-    let extent = m.positions.iter().fold(0.0f32, |e, p| e.max(p.abs().max_element()));
-    assert!(extent < 0.5 && extent > 0.4, "{extent}");
-    let corner = m.positions.iter().map(|p| p.x + p.y + p.z).fold(f32::MIN, f32::max);
-    assert!(corner < 3.0 * 5.0 / 18.0, "{corner}");
+    crate::geometry::subdivision::assert_cube_subdivided_twice(&mesh(&smooth));
     assert!(smooth.warnings.iter().all(|w| !w.contains("subdiv")), "{:?}", smooth.warnings);
     // `subdiv_type` wins over the scheme: `linear` (or 2) and `none` (or 0) draw the cage,
     // and so does the scheme `none` or `bilinear` without a type.
