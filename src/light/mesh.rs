@@ -133,14 +133,15 @@ impl MeshLight {
             for &id in ids {
                 let i = id as usize;
                 let [a, b, c] = [self.a[i], self.b[i], self.c[i]];
-                let n = (b - a).cross(c - a).normalize();
-                let cos = -dir.dot(n);
-                if cos <= 0.0 {
+                // Back faces are skipped by the sign alone; the cosine (a normalisation)
+                // is only needed for the face hit.
+                let n = (b - a).cross(c - a);
+                if dir.dot(n) >= 0.0 {
                     continue;
                 }
                 if let Some(h) = intersect_triangle(origin, dir, 0.0, *limit, [a, b, c]) {
                     *limit = h.t;
-                    best = Some((h.t, cos));
+                    best = Some((h.t, -dir.dot(n.normalize())));
                 }
             }
             false

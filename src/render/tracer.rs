@@ -93,7 +93,10 @@ impl<'w> Tracer<'w> {
             .iter()
             .filter_map(|l| {
                 let seen = if ray.camera { l.camera_visibility() } else { 1.0 };
-                let (t, le) = l.emitted(ray.origin, ray.dir, tmax).filter(|_| seen > 0.0)?;
+                if seen <= 0.0 {
+                    return None;
+                }
+                let (t, le) = l.emitted(ray.origin, ray.dir, tmax)?;
                 Some((t, le * seen, l))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0))
