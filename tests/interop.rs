@@ -264,6 +264,75 @@ def Scope "Looks" {{
     }
 }
 
+/// Curves under an Arnold shader bound through `outputs:arnold:surface`: a `flat`
+/// checkerboard textures each curve by its `primvars:st` (one UV per curve, as Arnold's
+/// curve `uvs`), so the curve in the origin's cell is `color2` and the next `color1`,
+/// exactly (unlit); a `standard_surface` gives the curves its base colour.
+#[test]
+fn usd_curves_take_their_arnold_surface_shader_textured_by_their_uvs() {
+    let usda = |surface: &str| {
+        format!(
+            r#"#usda 1.0
+def BasisCurves "Hair" (apiSchemas = ["MaterialBindingAPI"]) {{
+    uniform token type = "linear"
+    int[] curveVertexCounts = [2, 2]
+    point3f[] points = [(-0.5, -1, 0), (-0.5, 1, 0), (0.5, -1, 0), (0.5, 1, 0)]
+    float[] widths = [0.4] (interpolation = "constant")
+    texCoord2f[] primvars:st = [(0.25, 0.25), (0.75, 0.25)] (interpolation = "uniform")
+    rel material:binding = </Looks/Hair>
+}}
+def Scope "Looks" {{
+    def Material "Hair" {{
+        token outputs:arnold:surface.connect = </Looks/Hair/surface.outputs:surface>
+        def Shader "surface" {{
+            {surface}
+            token outputs:surface
+        }}
+        def Shader "checker" {{
+            uniform token info:id = "arnold:checkerboard"
+            color3f inputs:color1 = (1, 0, 0)
+            color3f inputs:color2 = (0, 0, 1)
+            color3f outputs:out
+        }}
+    }}
+}}
+"#
+        )
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("curves.usda");
+    std::fs::write(
+        &path,
+        usda("uniform token info:id = \"arnold:flat\"\n            color3f inputs:color.connect = </Looks/Hair/checker.outputs:out>"),
+    )
+    .unwrap();
+    let (mut desc, _) = read_imported(&path).unwrap().into_description();
+    (desc.settings.width, desc.settings.height, desc.settings.spp) = (64, 48, 4);
+    let film = render(&desc);
+    for (p, want) in [(Vec3::new(-0.5, 0.0, 0.0), Vec3::new(0.0, 0.0, 1.0)), (Vec3::new(0.5, 0.0, 0.0), Vec3::X)] {
+        let (x, y) = project(&desc, p);
+        let got = film.pixels[y as usize * 64 + x as usize].color;
+        assert!((got - want).abs().max_element() < 1e-3, "at {p}: {got}, want {want}");
+    }
+
+    std::fs::write(
+        &path,
+        usda("uniform token info:id = \"arnold:standard_surface\"\n            color3f inputs:base_color = (0.2, 0.6, 0.3)\n            float inputs:specular = 0"),
+    )
+    .unwrap();
+    let (desc, _) = read_imported(&path).unwrap().into_description();
+    let material = match &desc.contents.hair[0].material {
+        tress::scene::MaterialSource::Inline(m) => m.clone(),
+        other => panic!("{other:?}"),
+    };
+    // Arnold's default `base` weight is 0.8.
+    let want = Vec3::new(0.2, 0.6, 0.3) * 0.8;
+    assert!(
+        matches!(material, tress::shading::Material::Diffuse { color } if (color - want).abs().max_element() < 1e-6),
+        "{material:?}"
+    );
+}
+
 /// A plane facing a camera, a distant light of intensity 0 (so that no default light is
 /// added) and `light` (USDA lines) on a small square a unit over the plane wound to face
 /// it: the scene's mean pixel value and its warnings.

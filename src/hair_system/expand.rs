@@ -66,8 +66,8 @@ pub enum HairColors {
 
 /// Expands `guides` into render hairs. Guides with fewer than two points or no length
 /// give no hairs. Strand `g × hairs_per_clump + h` is hair `h` of guide `g` (until a guide
-/// gives none); its [`StrandInfo`] clump is `g` and its root UV the guide's (`[-1, -1]`
-/// for guides without a surface).
+/// gives none); its [`StrandInfo`] clump is `g` and its root UV the guide's (none for
+/// guides without a surface).
 pub fn expand(system: &HairSystem, guides: &Guides, colors: HairColors, seed: u32) -> Result<StrandSet, String> {
     system.validate()?;
     let curves = &guides.curves;
@@ -244,7 +244,7 @@ fn expand_guide(
     let mut info = StrandInfo::default();
     let clump = if guide.len() >= 2 { Clump::new(system, &guide, &guide_colors) } else { None };
     if let Some(clump) = clump {
-        let root_uv = guides.root_uv.as_ref().map_or([-1.0, -1.0], |uv| uv[g as usize]);
+        let root_uv = guides.root_uv.as_ref().map(|uv| uv[g as usize]);
         let mut clump_rng = GenRng::seed_from_u64(hash_combine(&[seed, g, u32::MAX]) as u64);
         let clump_offset = [clump_rng.random::<f32>() * NOISE_PERIOD, clump_rng.random::<f32>() * NOISE_PERIOD];
         for h in 0..system.hairs_per_clump {
@@ -253,6 +253,8 @@ fn expand_guide(
             let noise_base = match system.noise_method {
                 NoiseMethod::Random => hair.noise_offset,
                 NoiseMethod::SurfaceUv => {
+                    // Checked above: surface-UV noise needs the guides' UVs.
+                    let root_uv = root_uv.unwrap_or_default();
                     [root_uv[0] * system.noise_frequency_u, root_uv[1] * system.noise_frequency_v]
                         .map(|x| x * system.noise_frequency * NOISE_FEATURES)
                 }
@@ -286,7 +288,9 @@ fn expand_guide(
                 o.extend(std::iter::repeat_n(system.opacity, points.len()));
             }
             out.push_strand(points);
-            info.root_uv.push(root_uv);
+            // Without the guides' UVs the strands have none (rather than a made-up one
+            // that would texture them).
+            info.root_uv.extend(root_uv);
             info.clump.push(g);
         }
     }

@@ -413,8 +413,11 @@ fn read_drawable(
                     return Ok(());
                 }
             };
-            // Arnold's hair shader, when bound, is what Arnold draws the curves with.
+            // Arnold's shader, when bound, is what Arnold draws the curves with: its hair
+            // shader, or a surface shader shading them as the tubes they are.
             if let Some(material) = shapes::bound_standard_hair(prim, time, notes)? {
+                entry.material = material.into();
+            } else if let Some(material) = shapes::bound_arnold_surface(prim, time, notes)? {
                 entry.material = material.into();
             } else if !has_display_color(prim, time) {
                 if let (Some(c), MaterialSource::Inline(Material::Tube(t))) =

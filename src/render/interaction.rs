@@ -92,7 +92,10 @@ impl<'w> Interaction<'w> {
                     color: object.lod_color(hit.level, strands.color(hit.prim, s)),
                     backface: false,
                     strand: Some((at.strand, at.along)),
-                    uv: None,
+                    // A strand is textured by its root's UV, as Arnold textures a curve by
+                    // its `uvs` and Maya a hair by its follicle's: one colour along it, so
+                    // the lookup is a point (no footprint across the map).
+                    uv: at.root_uv.map(|uv| TexCoord { uv, width: 0.0 }),
                 };
                 (sp, Some((axis_point, radius, axis)), normal, Some(at))
             }

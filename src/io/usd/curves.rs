@@ -4,7 +4,7 @@ use super::skel::Skinning;
 use super::values::{doubles, floats, held_value, interpolation, ints, value, vec3s, Interpolation, Res};
 use super::{Notes, PIECES_PER_SEGMENT};
 use crate::geometry::curve::{Blend, CubicBasis, Nurbs};
-use crate::geometry::StrandSet;
+use crate::geometry::{StrandInfo, StrandSet};
 use crate::scene::{HairEntry, HairSource};
 use crate::shading::{tube::Tube, Material};
 use glam::{Affine3A, Vec3};
@@ -117,12 +117,13 @@ fn per_curve<T: Blend>(
 /// A curves prim's shared attributes at the frame: control points and counts (read at one
 /// sample when the counts change between the samples around the frame, so points of
 /// different topologies are never blended), widths and colours with their
-/// interpolations.
+/// interpolations, and texture coordinates (of which each curve takes its root's).
 struct CurveData {
     points: Vec<Vec3>,
     counts: Vec<usize>,
     widths: Option<(Vec<f32>, Interpolation)>,
     colors: Option<(Vec<Vec3>, Interpolation)>,
+    uvs: Option<(Vec<[f32; 2]>, Interpolation)>,
 }
 
 fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut Notes) -> Res<CurveData> {
@@ -142,7 +143,7 @@ fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut 
         if !counts.is_empty() {
             notes.note("curves without `points`: skipped".into(), prim);
         }
-        return Ok(CurveData { points: Vec::new(), counts: Vec::new(), widths: None, colors: None });
+        return Ok(CurveData { points: Vec::new(), counts: Vec::new(), widths: None, colors: None, uvs: None });
     };
     anyhow::ensure!(counts.iter().all(|&n| n >= 0), "`curveVertexCounts` has a negative count");
     let total: i64 = counts.iter().sum();
@@ -182,7 +183,49 @@ fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut 
         Some(c) => Some((c, interpolation(&color_attr, Interpolation::Constant)?)),
         None => None,
     };
-    Ok(CurveData { points, counts: counts.iter().map(|&n| n as usize).collect(), widths, colors })
+    let uvs = match curve_uvs(prim, time) {
+        Ok(uvs) => uvs,
+        // The curves are still drawn: only their texturing is lost.
+        Err(e) => {
+            notes.note(format!("curves whose texture coordinates cannot be read: drawn untextured ({e})"), prim);
+            None
+        }
+    };
+    Ok(CurveData { points, counts: counts.iter().map(|&n| n as usize).collect(), widths, colors, uvs })
+}
+
+/// A curves prim's texture coordinates ([`super::shapes::uv_primvar`]), unindexed, with
+/// their interpolation.
+fn curve_uvs(prim: &Prim, time: TimeCode) -> Res<Option<(Vec<[f32; 2]>, Interpolation)>> {
+    Ok(match super::shapes::uv_primvar(prim, time)? {
+        (name, Some(mut uv)) => {
+            // An empty index array indexes nothing: the values are read in order.
+            let indices = ints(value(prim, &format!("{name}:indices"), time)?, name)?.filter(|ix| !ix.is_empty());
+            if let Some(ix) = indices {
+                uv = ix
+                    .iter()
+                    .map(|&i| uv.get(usize::try_from(i).unwrap_or(usize::MAX)).copied())
+                    .collect::<Option<_>>()
+                    .ok_or_else(|| anyhow::anyhow!("`{name}:indices` points past its {} values", uv.len()))?;
+            }
+            Some((uv, interpolation(&prim.attribute(name), Interpolation::Vertex)?))
+        }
+        (_, None) => None,
+    })
+}
+
+/// The texture coordinates of a curve's root, from `values` of `interp`: `offset` is the
+/// curve's first control point, `varying` its first segment end, `c` its index. Arnold
+/// textures a curve by the UV its `uvs` give it, one per curve; a varying or vertex
+/// primvar gives the root's.
+fn root_uv(values: &[[f32; 2]], interp: Interpolation, c: usize, offset: usize, varying: usize) -> [f32; 2] {
+    let k = match interp {
+        Interpolation::Constant => 0,
+        Interpolation::Uniform => c,
+        Interpolation::Vertex => offset,
+        Interpolation::Varying => varying,
+    };
+    values[k]
 }
 
 /// The entry of a strand set: a tube material of the constant colour (or the default
@@ -224,6 +267,7 @@ impl CurveData {
         ];
         fit(&mut self.widths, "widths", &expect, prim, notes);
         fit(&mut self.colors, "displayColor", &expect, prim, notes);
+        fit(&mut self.uvs, "texture coordinates", &expect, prim, notes);
         match &self.colors {
             Some((c, Interpolation::Constant)) => Some(c[0]),
             _ => None,
@@ -287,6 +331,7 @@ pub fn read_basis_curves(
     let constant_color = d.check_primvars(varying_total, prim, notes);
     let mut set = StrandSet::new();
     let mut point_colors = Vec::new();
+    let mut root_uvs = Vec::new();
     let (mut offset, mut varying, mut skipped) = (0usize, 0usize, 0usize);
     for (i, &n) in d.counts.iter().enumerate() {
         let cps = shape.wrap(&d.points[offset..offset + n]);
@@ -303,6 +348,9 @@ pub fn read_basis_curves(
                 point_colors.extend(per_curve(&shape, col, *interp, at, p.len())?.iter().map(|c| c.to_array()));
             }
             set.push_strand(p.into_iter().zip(w).map(|(q, w)| (q, 0.5 * w.max(0.0))));
+            if let Some((uv, interp)) = &d.uvs {
+                root_uvs.push(root_uv(uv, *interp, i, offset, varying));
+            }
         }
         offset += n;
         varying += shape.ends(n);
@@ -315,6 +363,9 @@ pub fn read_basis_curves(
     }
     if !point_colors.is_empty() {
         set.colors = Some(point_colors);
+    }
+    if d.uvs.is_some() {
+        set.strand_info = Some(StrandInfo { root_uv: root_uvs, clump: Vec::new() });
     }
     Ok(Some(entry(set, constant_color, transform)?))
 }
@@ -396,6 +447,7 @@ pub fn read_nurbs_curves(
     let constant_color = d.check_primvars(varying_total, prim, notes);
     let mut set = StrandSet::new();
     let mut point_colors = Vec::new();
+    let mut root_uvs = Vec::new();
     let (mut offset, mut knot_at, mut varying) = (0usize, 0usize, 0usize);
     for (i, (&n, &order)) in d.counts.iter().zip(&orders).enumerate() {
         let order = order as usize;
@@ -445,6 +497,9 @@ pub fn read_nurbs_curves(
             point_colors.extend((0..p.len()).map(|k| [r[k], g[k], b[k]]));
         }
         set.push_strand(p.into_iter().zip(widths).map(|(q, w)| (q, 0.5 * w.max(0.0))));
+        if let Some((uv, interp)) = &d.uvs {
+            root_uvs.push(root_uv(uv, *interp, i, offset, varying));
+        }
         offset += n;
         knot_at += n + order;
         varying += (n + 2).saturating_sub(order);
@@ -454,6 +509,9 @@ pub fn read_nurbs_curves(
     }
     if !point_colors.is_empty() {
         set.colors = Some(point_colors);
+    }
+    if d.uvs.is_some() {
+        set.strand_info = Some(StrandInfo { root_uv: root_uvs, clump: Vec::new() });
     }
     Ok(Some(entry(set, constant_color, transform)?))
 }

@@ -55,21 +55,8 @@ pub fn read_mesh(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &m
         skin.normals(normals)?;
     }
     // UVs: vertex (one per point) or face-varying (one per face corner), optionally indexed.
-    // Arnold-USD takes `primvars:st`, else `primvars:uv` (what Arnold's own USD writer
-    // names them), as the mesh's UVs.
-    let uv_name = match value(prim, "primvars:st", time)?.is_some() || value(prim, "primvars:uv", time)?.is_none() {
-        true => "primvars:st",
-        false => "primvars:uv",
-    };
+    let (uv_name, st) = uv_primvar(prim, time)?;
     let st_attr = prim.attribute(uv_name);
-    let st: Option<Vec<[f32; 2]>> = match st_attr.get_at::<sdf::Value>(time)? {
-        None => None,
-        Some(sdf::Value::Vec2fVec(v)) => Some(v.iter().map(|p| [p.x, p.y]).collect()),
-        Some(sdf::Value::Vec2dVec(v)) => Some(v.iter().map(|p| [p.x as f32, p.y as f32]).collect()),
-        Some(other) => anyhow::bail!("`primvars:st` is not an array of 2-vectors: {}", short(&other)),
-    };
-    // Finite in the file (1e39 as a double) is not always finite in single precision.
-    anyhow::ensure!(st.iter().flatten().flatten().all(|x| x.is_finite()), "`primvars:st` must be finite");
     anyhow::ensure!(normals.iter().flatten().all(|n| n.is_finite()), "`normals` must be finite");
     // An empty index array indexes nothing: the values are read in order.
     let st_indices =
@@ -328,6 +315,29 @@ fn revolve(profile: &[(f32, f32)]) -> TriangleMesh {
         }
     }
     mesh
+}
+
+/// A prim's texture coordinates as Arnold-USD reads them: `primvars:st`, else
+/// `primvars:uv` (what Arnold's own USD writer names them); the primvar's name and its
+/// values (the first two coordinates of 3-vectors), unindexed, when authored.
+pub fn uv_primvar(prim: &Prim, time: TimeCode) -> Res<(&'static str, Option<Vec<[f32; 2]>>)> {
+    let name = match value(prim, "primvars:st", time)?.is_some() || value(prim, "primvars:uv", time)?.is_none() {
+        true => "primvars:st",
+        false => "primvars:uv",
+    };
+    let st: Option<Vec<[f32; 2]>> = match value(prim, name, time)? {
+        None => None,
+        Some(sdf::Value::Vec2fVec(v)) => Some(v.iter().map(|p| [p.x, p.y]).collect()),
+        Some(sdf::Value::Vec2dVec(v)) => Some(v.iter().map(|p| [p.x as f32, p.y as f32]).collect()),
+        // Houdini and Arnold write UVs as 3-vectors too (`float3[] primvars:uv`): the
+        // third coordinate is unused.
+        Some(sdf::Value::Vec3fVec(v)) => Some(v.iter().map(|p| [p.x, p.y]).collect()),
+        Some(sdf::Value::Vec3dVec(v)) => Some(v.iter().map(|p| [p.x as f32, p.y as f32]).collect()),
+        Some(other) => anyhow::bail!("`{name}` is not an array of 2- or 3-vectors: {}", short(&other)),
+    };
+    // Finite in the file (1e39 as a double) is not always finite in single precision.
+    anyhow::ensure!(st.iter().flatten().flatten().all(|x| x.is_finite()), "`{name}` must be finite");
+    Ok((name, st))
 }
 
 /// The colour a prim is drawn in: the `diffuseColor` of the `UsdPreviewSurface` its bound
