@@ -385,3 +385,99 @@ fn usd_arnold_mesh_lights_light_the_plane_under_them() {
         usd_mesh_light_scene("bool primvars:arnold:light = 1\n float primvars:arnold:light:intensity = nan");
     assert!(nan < 1e-4 && warnings.iter().any(|w| w.contains("/lamp") && w.contains("finite")), "{warnings:?}");
 }
+
+/// A stage as Blender's USD exporter writes one: a camera 5 units over a 4 × 4 plane
+/// (Principled BSDF of base colour 0.5 as Blender's UsdPreviewSurface) looking straight
+/// down, its apertures and focal length in tenths of a unit as Blender writes them (36 mm
+/// sensor, 35 mm lens), and a sun of strength 3 shining straight down (written as
+/// Blender writes it: a quarter of its strength, half its diameter). `doc` is the layer's
+/// `doc` line. Rendered at 64 × 48: the film's linear values.
+fn blender_sun_scene(doc: &str) -> tress::film::Film {
+    let text = format!(
+        r#"#usda 1.0
+(
+    defaultPrim = "root"
+    {doc}
+    metersPerUnit = 1
+    upAxis = "Z"
+)
+def Xform "root"
+{{
+    def Xform "Camera"
+    {{
+        double3 xformOp:translate = (0, 0, 5)
+        float3 xformOp:rotateXYZ = (0, -0, 0)
+        uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateXYZ"]
+        def Camera "Camera"
+        {{
+            float2 clippingRange = (0.1, 100)
+            float focalLength = 0.35
+            float horizontalAperture = 0.36
+            token projection = "perspective"
+            float verticalAperture = 0.27
+        }}
+    }}
+    def Scope "_materials"
+    {{
+        def Material "Ground"
+        {{
+            token outputs:surface.connect = </root/_materials/Ground/Principled_BSDF.outputs:surface>
+            def Shader "Principled_BSDF"
+            {{
+                uniform token info:id = "UsdPreviewSurface"
+                color3f inputs:diffuseColor = (0.5, 0.5, 0.5)
+                float inputs:roughness = 0.5
+                float inputs:specular = 0.5
+                token outputs:surface
+            }}
+        }}
+    }}
+    def Xform "Plane"
+    {{
+        def Mesh "Plane" (prepend apiSchemas = ["MaterialBindingAPI"])
+        {{
+            int[] faceVertexCounts = [4]
+            int[] faceVertexIndices = [0, 1, 3, 2]
+            rel material:binding = </root/_materials/Ground>
+            point3f[] points = [(-2, -2, 0), (2, -2, 0), (-2, 2, 0), (2, 2, 0)]
+        }}
+    }}
+    def Xform "Sun"
+    {{
+        float3 xformOp:rotateXYZ = (0, -0, 0)
+        uniform token[] xformOpOrder = ["xformOp:rotateXYZ"]
+        def DistantLight "Sun"
+        {{
+            float inputs:angle = 1
+            bool inputs:enableColorTemperature = 1
+            float inputs:intensity = 0.75
+            bool inputs:normalize = 1
+        }}
+    }}
+}}
+"#
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("blender.usda");
+    std::fs::write(&path, text).unwrap();
+    let (mut desc, _) = read_imported(&path).unwrap().into_description();
+    (desc.settings.width, desc.settings.height, desc.settings.spp) = (64, 48, 4);
+    render(&desc)
+}
+
+#[test]
+fn a_blender_sun_lights_a_lambert_plane_with_its_strength_framed_by_its_sensor() {
+    let film = blender_sun_scene("doc = \"Blender v5.0.1\"");
+    let at = |x: usize, y: usize| film.pixels[y * 64 + x].color;
+    // Straight down on a Lambertian plane of albedo 0.5: radiance 0.5 × 3 / π.
+    let expected = 0.5 * 3.0 / std::f32::consts::PI;
+    let centre = at(32, 24);
+    assert!((centre - Vec3::splat(expected)).abs().max_element() < 0.02 * expected, "{centre} vs {expected}");
+    // The 36 mm sensor over the 35 mm lens sees 5 × 18 / 35 = 2.57 units either side at the
+    // plane: its edges (±2) fall at 32 ± 32 × 2 / 2.57 = 32 ± 24.9 pixels.
+    let lit = |x: usize| at(x, 24).x > 0.5 * expected;
+    assert!(!lit(5) && lit(9) && lit(54) && !lit(58), "{:?}", (0..64).map(|x| at(x, 24).x).collect::<Vec<_>>());
+    // Written by any other tool, the same sun is UsdLux's: its intensity is its irradiance.
+    let other = blender_sun_scene("doc = \"another tool\"").pixels[24 * 64 + 32].color;
+    assert!((other - Vec3::splat(expected / 4.0)).abs().max_element() < 0.02 * expected, "{other}");
+}

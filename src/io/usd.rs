@@ -30,6 +30,7 @@
 //! naming the chain ([`arcs::check_cycles`]).
 
 pub mod arcs;
+pub mod blender;
 pub mod camera;
 pub mod crate_file;
 pub mod curves;

@@ -124,9 +124,14 @@ struct CurveData {
     widths: Option<(Vec<f32>, Interpolation)>,
     colors: Option<(Vec<Vec3>, Interpolation)>,
     uvs: Option<(Vec<[f32; 2]>, Interpolation)>,
+    /// The width of curves without (usable) `widths`: [`FALLBACK_WIDTH`], or Blender's
+    /// default in a stage Blender wrote.
+    fallback_width: f32,
 }
 
 fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut Notes) -> Res<CurveData> {
+    let blender = super::blender::wrote(prim.stage());
+    let fallback_width = if blender { super::blender::CURVE_WIDTH } else { FALLBACK_WIDTH };
     let counts_attr = prim.attribute("curveVertexCounts");
     let counts = ints(counts_attr.get_at(time)?, "curveVertexCounts")?.unwrap_or_default();
     let around = counts_attr.bracketing_time_samples(time)?;
@@ -143,7 +148,14 @@ fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut 
         if !counts.is_empty() {
             notes.note("curves without `points`: skipped".into(), prim);
         }
-        return Ok(CurveData { points: Vec::new(), counts: Vec::new(), widths: None, colors: None, uvs: None });
+        return Ok(CurveData {
+            points: Vec::new(),
+            counts: Vec::new(),
+            widths: None,
+            colors: None,
+            uvs: None,
+            fallback_width,
+        });
     };
     anyhow::ensure!(counts.iter().all(|&n| n >= 0), "`curveVertexCounts` has a negative count");
     let total: i64 = counts.iter().sum();
@@ -164,7 +176,8 @@ fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut 
         }
         Some(w) => Some((w, interpolation(&widths_attr, Interpolation::Vertex)?)),
         None => {
-            notes.note(format!("curves without `widths`: drawn {FALLBACK_WIDTH} unit wide (USD's fallback)"), prim);
+            let why = if blender { "Blender's default curve radius" } else { "USD's fallback" };
+            notes.note(format!("curves without `widths`: drawn {fallback_width} unit wide ({why})"), prim);
             None
         }
     };
@@ -191,7 +204,7 @@ fn curve_data(prim: &Prim, time: TimeCode, skin: Option<&Skinning>, notes: &mut 
             None
         }
     };
-    Ok(CurveData { points, counts: counts.iter().map(|&n| n as usize).collect(), widths, colors, uvs })
+    Ok(CurveData { points, counts: counts.iter().map(|&n| n as usize).collect(), widths, colors, uvs, fallback_width })
 }
 
 /// A curves prim's texture coordinates ([`super::shapes::uv_primvar`]), unindexed, with
@@ -342,7 +355,7 @@ pub fn read_basis_curves(
             let at = (i, offset, n, varying);
             let w = match &d.widths {
                 Some((w, interp)) => per_curve(&shape, w, *interp, at, p.len())?,
-                None => vec![FALLBACK_WIDTH; p.len()],
+                None => vec![d.fallback_width; p.len()],
             };
             if let (Some((col, interp)), None) = (&d.colors, constant_color) {
                 point_colors.extend(per_curve(&shape, col, *interp, at, p.len())?.iter().map(|c| c.to_array()));
@@ -487,7 +500,7 @@ pub fn read_nurbs_curves(
         };
         let widths = match &d.widths {
             Some((w, interp)) => along(w, *interp),
-            None => vec![FALLBACK_WIDTH; p.len()],
+            None => vec![d.fallback_width; p.len()],
         };
         anyhow::ensure!(widths.len() == p.len(), "curve {i}: widths do not match its spans");
         if let (Some((col, interp)), None) = (&d.colors, constant_color) {

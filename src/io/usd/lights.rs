@@ -15,6 +15,10 @@
 //! whole number, their radius is set so their area (and so, at the cylinder's radiance,
 //! their power) is still the side's.
 //!
+//! A stage Blender wrote (its layer's `doc` says so) has its normalized lights read by
+//! Blender's conventions ([`super::blender`]): suns written with a quarter of their
+//! strength and half their diameter, and areas measured in square metres.
+//!
 //! A dome's `inputs:texture:file` (latitude-longitude, `texture:format` `automatic` or
 //! `latlong`) is an environment map times the emission (read when the scene is prepared), oriented as UsdLux specifies after
 //! OpenEXR's latitude-longitude maps: the top row is +Y, the image's left edge longitude
@@ -140,8 +144,15 @@ pub fn read_light(
         "light colour × intensity must be finite and not negative"
     );
     let normalize = boolean(input(prim, "normalize", time)?, false);
-    if boolean(input(prim, "enableColorTemperature", time)?, false) {
-        notes.note("light `colorTemperature`: not applied".into(), prim);
+    // Blender's conventions (the module docs) hold for the lights its exporter normalized.
+    let blender = normalize && super::blender::wrote(prim.stage());
+    // What a normalized light's emission is spread over, per unit of its area in the stage.
+    let unit_area = if blender { super::blender::square_metres_per_unit(prim.stage()) } else { 1.0 };
+    // The schema's default temperature, 6500 K, is D65: the white point of the sRGB primaries
+    // tress renders in, so no tint (Blender writes `enableColorTemperature` on every light,
+    // the temperature only when its light has one).
+    if boolean(input(prim, "enableColorTemperature", time)?, false) && num("colorTemperature", 6500.0)? != 6500.0 {
+        notes.note("light `colorTemperature` other than 6500 K: not applied".into(), prim);
     }
     if ["shaping:cone:angle", "shaping:focus", "shaping:ies:file"]
         .iter()
@@ -160,14 +171,19 @@ pub fn read_light(
     };
     if kind == "CylinderLight" {
         let (length, radius) = (size("length", 1.0)?, size("radius", 0.5)?);
-        return Ok(cylinder_spheres(transform, length, radius, emission, normalize, camera_visibility));
+        return Ok(cylinder_spheres(transform, length, radius, emission / unit_area, normalize, camera_visibility));
     }
     Ok(vec![LightSource::Inline(match kind {
         "DistantLight" => {
             let direction = transform.transform_vector3(Vec3::Z).normalize_or(Vec3::Y);
+            // Blender writes a quarter of its sun's strength and half its diameter.
+            let (emission, diameter) = match blender {
+                true => (emission * super::blender::SUN_STRENGTH_PER_INTENSITY, super::blender::SUN_DIAMETER_PER_ANGLE),
+                false => (emission, 1.0),
+            };
             // Irradiance is the emission whatever the angle (as USD's Storm and RenderMan
             // light it): an authored angle only widens the disk and softens the shadows.
-            match number(input(prim, "angle", time)?, "inputs:angle")?.map(|a| a as f32) {
+            match number(input(prim, "angle", time)?, "inputs:angle")?.map(|a| a as f32 * diameter) {
                 Some(angle) if angle > 0.0 => {
                     anyhow::ensure!(angle.is_finite(), "`inputs:angle` must be finite");
                     let cos_max = (0.5 * angle.min(179.0)).to_radians().cos();
@@ -201,7 +217,7 @@ pub fn read_light(
         "SphereLight" => {
             let radius = size("radius", 0.5)? * scale;
             let area = 4.0 * std::f32::consts::PI * radius * radius;
-            let radiance = if normalize && area > 0.0 { emission / area } else { emission };
+            let radiance = if normalize && area > 0.0 { emission / (area * unit_area) } else { emission };
             Light::Sphere { center: transform.transform_point3(Vec3::ZERO), radius, radiance, camera_visibility }
         }
         _ => {
@@ -219,7 +235,7 @@ pub fn read_light(
             let edge_u = transform.transform_vector3(Vec3::new(0.0, h, 0.0));
             let edge_v = transform.transform_vector3(Vec3::new(w, 0.0, 0.0));
             let area = edge_u.cross(edge_v).length();
-            let radiance = if normalize && area > 0.0 { emission / area } else { emission };
+            let radiance = if normalize && area > 0.0 { emission / (area * unit_area) } else { emission };
             Light::Quad { corner, edge_u, edge_v, radiance, camera_visibility }
         }
     })])

@@ -1838,3 +1838,114 @@ fn orthographic_cameras_take_arnolds_screen_window_or_the_apertures_in_tenths() 
     let e = read_with("", text, &ImportOptions::default()).unwrap_err().to_string();
     assert!(e.contains("fisheye"), "{e}");
 }
+
+/// A stage as Blender's USD exporter writes one (root layer `doc`, a Z-up root Xform,
+/// objects as Xforms over their data prims): a sun of strength 3 and 2° diameter, and a
+/// particle system's hair (linear curves, no widths); `doc` is its layer's `doc` line.
+fn blender_stage(doc: &str) -> String {
+    format!(
+        r#"#usda 1.0
+(
+    defaultPrim = "root"
+    {doc}
+    metersPerUnit = 1
+    upAxis = "Z"
+)
+
+def Xform "root"
+{{
+    def Xform "Head"
+    {{
+        def BasisCurves "hair"
+        {{
+            uniform token basis = "catmullRom"
+            int[] curveVertexCounts = [3, 3]
+            point3f[] points = [(0, 0, 0.5), (0, 0, 0.7), (0, 0, 0.9), (0.5, 0, 0), (0.7, 0, 0), (0.9, 0, 0)]
+            color3f[] primvars:displayColor = [(0.8, 0.8, 0.8)]
+            uniform token type = "linear"
+            uniform token wrap = "pinned"
+        }}
+    }}
+
+    def Xform "Sun"
+    {{
+        float3 xformOp:rotateXYZ = (0, -0, 0)
+        float3 xformOp:scale = (1, 1, 1)
+        double3 xformOp:translate = (0, 0, 0)
+        uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateXYZ", "xformOp:scale"]
+
+        def DistantLight "Sun"
+        {{
+            float inputs:angle = 1
+            bool inputs:enableColorTemperature = 1
+            float inputs:intensity = 0.75
+            bool inputs:normalize = 1
+        }}
+    }}
+}}
+"#
+    )
+}
+
+#[test]
+fn blender_stages_light_suns_and_draw_hair_without_widths_as_blender_does() {
+    let sun = |s: &Imported| {
+        let LightSource::Inline(Light::Sun { radiance, cos_max, .. }) = s.contents.lights[0] else {
+            panic!("{:?}", s.contents.lights)
+        };
+        // Irradiance is radiance × the disk's solid angle, 2π (1 − cos θ).
+        (radiance.x * std::f32::consts::TAU * (1.0 - cos_max), cos_max.acos().to_degrees())
+    };
+    let s = read_text(&blender_stage("doc = \"Blender v5.0.1\"")).unwrap();
+    // The sun's strength, 4 × the intensity written, over its diameter, 2 × the angle.
+    let (irradiance, half_angle) = sun(&s);
+    assert!((irradiance - 3.0).abs() < 1e-3 && (half_angle - 1.0).abs() < 1e-3, "{irradiance} {half_angle}");
+    // The two strands, Blender's default radius of 0.01 all along; said once.
+    let hair = strands(&s, 0);
+    assert_eq!(hair.strand_count(), 2);
+    assert!(hair.points.iter().all(|p| (p[3] - 0.01).abs() < 1e-7), "{:?}", hair.points);
+    assert!(
+        s.warnings.iter().any(|w| w.contains("0.02 unit wide (Blender's default curve radius)")),
+        "{:?}",
+        s.warnings
+    );
+    // Every Blender light enables the temperature, which is the default, white 6500 K.
+    assert!(s.warnings.iter().all(|w| !w.contains("colorTemperature")), "{:?}", s.warnings);
+    // The same prims from any other writer are read as UsdLux and UsdGeom say.
+    let s = read_text(&blender_stage("doc = \"Written by hand\"")).unwrap();
+    let (irradiance, half_angle) = sun(&s);
+    assert!((irradiance - 0.75).abs() < 1e-3 && (half_angle - 0.5).abs() < 1e-3, "{irradiance} {half_angle}");
+    assert!(strands(&s, 0).points.iter().all(|p| p[3] == 0.5));
+    // A temperature of its own is reported, not applied.
+    let warm =
+        blender_stage("").replace("bool inputs:enable", "float inputs:colorTemperature = 3000\n bool inputs:enable");
+    let s = read_text(&warm).unwrap();
+    assert!(s.warnings.iter().any(|w| w.contains("`colorTemperature` other than 6500 K")), "{:?}", s.warnings);
+}
+
+#[test]
+fn blender_stages_in_centimetres_keep_their_normalized_lights_power() {
+    // Blender's exporter converting to centimetres: metersPerUnit 0.01, a scale of 100 on
+    // the root, the power (π × intensity) of a 0.1 m bulb left as written.
+    let body = |doc: &str| {
+        let meta = format!("{doc}\nmetersPerUnit = 0.01\nupAxis = \"Z\"");
+        let body = r#"
+def Xform "root" {
+    float3 xformOp:scale = (100, 100, 100)
+    uniform token[] xformOpOrder = ["xformOp:scale"]
+    def SphereLight "Point" { float inputs:intensity = 10 bool inputs:normalize = 1 float inputs:radius = 0.1 }
+}"#;
+        let s = read_with(&meta, body, &ImportOptions::default()).unwrap();
+        let LightSource::Inline(Light::Sphere { radius, radiance, .. }) = s.contents.lights[0] else { panic!() };
+        (radius, radiance.x)
+    };
+    // Its 0.1 m radius is 10 of the stage's centimetres; its intensity is spread over 4π (0.1 m)².
+    let (radius, radiance) = body("doc = \"Blender v4.5.0\"");
+    assert!((radius - 10.0).abs() < 1e-4, "{radius}");
+    let expected = 10.0 / (4.0 * std::f32::consts::PI * 0.01);
+    assert!((radiance / expected - 1.0).abs() < 1e-4, "{radiance} vs {expected}");
+    // Any other writer's: over its area in the stage's units, as UsdLux's renderers spread it.
+    let (_, radiance) = body("");
+    let expected = 10.0 / (4.0 * std::f32::consts::PI * 100.0);
+    assert!((radiance / expected - 1.0).abs() < 1e-4, "{radiance} vs {expected}");
+}
