@@ -481,3 +481,73 @@ fn a_blender_sun_lights_a_lambert_plane_with_its_strength_framed_by_its_sensor()
     let other = blender_sun_scene("doc = \"another tool\"").pixels[24 * 64 + 32].color;
     assert!((other - Vec3::splat(expected / 4.0)).abs().max_element() < 0.02 * expected, "{other}");
 }
+
+/// An Arnold scene: a 2 × 2 Lambert quad (Kd 1) facing a camera 5 units away (horizontal
+/// fov 60°, 40 × 30 pixels), under a distant light of intensity 2 and exposure 1 tilted
+/// 60° from the quad's normal, and the lines `more`.
+fn ass_quad_scene(more: &str) -> String {
+    format!(
+        "options\n{{\n xres 40\n yres 30\n AA_samples 2\n camera \"cam\"\n}}\n\
+         persp_camera\n{{\n name cam\n fov 60\n matrix\n 1 0 0 0\n 0 1 0 0\n 0 0 1 0\n 0 0 5 1\n}}\n\
+         distant_light\n{{\n name sun\n intensity 2\n exposure 1\n matrix\n 1 0 0 0\n 0 0.5 -0.8660254 0\n 0 0.8660254 0.5 0\n 0 0 0 1\n}}\n\
+         lambert\n{{\n name white\n Kd 1\n}}\n\
+         polymesh\n{{\n name quad\n nsides 1 1 UINT 4\n vidxs 4 1 UINT 0 1 2 3\n\
+          vlist 4 1 VECTOR -1 -1 0 1 -1 0 1 1 0 -1 1 0\n shader \"white\"\n}}\n{more}"
+    )
+}
+
+#[test]
+fn an_arnold_scene_frames_its_quad_and_lights_it_as_arnold_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("quad.ass");
+    std::fs::write(&path, ass_quad_scene("")).unwrap();
+    let (desc, warnings) = read_imported(&path).unwrap().into_description();
+    assert!(!warnings.iter().any(|w| w.contains("no lights") || w.contains("no camera")), "{warnings:?}");
+    assert_eq!((desc.settings.width, desc.settings.height, desc.settings.spp), (40, 30, 4));
+    let film = render(&desc);
+    let at = |x: u32, y: u32| film.pixels[(y * film.width + x) as usize].color;
+    // The quad's edges at x = ±1 land at 20 ± 20 / (5 tan 30°) = 13.07 and 26.93 pixels,
+    // y = ±1 at 15 ∓ 15 / (5 tan 30° × 0.75) = 8.07 and 21.93.
+    for (x, y) in [(12, 15), (27, 15), (20, 7), (20, 22)] {
+        assert!(at(x, y).max_element() < 1e-6, "({x}, {y}) {}", at(x, y));
+    }
+    // Irradiance 2 × 2¹ × cos 60° = 2 on a white Lambert surface: radiance 2 / π.
+    let expected = 2.0 / std::f32::consts::PI;
+    for (x, y) in [(14, 15), (25, 15), (20, 9), (20, 20), (20, 15)] {
+        let c = at(x, y);
+        assert!((c - Vec3::splat(expected)).abs().max_element() < 1e-3, "({x}, {y}) {c} vs {expected}");
+    }
+    // The same file gzipped reads the same.
+    let gz = dir.path().join("quad.ass.gz");
+    let mut e = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
+    std::io::Write::write_all(&mut e, ass_quad_scene("").as_bytes()).unwrap();
+    std::fs::write(&gz, e.finish().unwrap()).unwrap();
+    let (packed, _) = read_imported(&gz).unwrap().into_description();
+    assert_eq!(format!("{:?}", packed.contents.meshes), format!("{:?}", desc.contents.meshes));
+    assert_eq!(packed.camera, desc.camera);
+}
+
+#[test]
+fn arnold_usd_procedurals_pull_in_their_file_placed_by_their_matrix_and_cycles_are_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("ball.usda"), "#usda 1.0\ndef Sphere \"ball\" {\n double radius = 0.5\n}\n")
+        .unwrap();
+    let path = dir.path().join("scene.ass");
+    std::fs::write(
+        &path,
+        ass_quad_scene("usd\n{\n name proc\n filename \"ball.usda\"\n matrix 1 0 0 0 0 1 0 0 0 0 1 0 3 0 0 1\n}\n"),
+    )
+    .unwrap();
+    let imported = read_imported(&path).unwrap();
+    assert_eq!(imported.contents.meshes.len(), 2);
+    let entry = &imported.contents.meshes[1];
+    let tress::scene::MeshSource::Inline(ball) = &entry.source else { panic!("not inline") };
+    let b = ball.bounds_under(&entry.transform);
+    let centre = Vec3::from(b.center());
+    assert!((centre - Vec3::new(3.0, 0.0, 0.0)).length() < 1e-3, "{centre}");
+    // An .ass procedural pulling in a file that pulls it back in.
+    std::fs::write(dir.path().join("a.ass"), "procedural\n{\n name pa\n filename \"b.ass\"\n}\n").unwrap();
+    std::fs::write(dir.path().join("b.ass"), "procedural\n{\n name pb\n filename \"a.ass\"\n}\n").unwrap();
+    let e = read_imported(&dir.path().join("a.ass")).unwrap_err().to_string();
+    assert!(e.contains("b.ass") && e.contains("already being read") && e.contains("a.ass"), "{e}");
+}

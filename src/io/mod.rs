@@ -6,7 +6,9 @@
 //! imports another.
 
 pub mod arnold_hair;
+pub mod arnold_light;
 pub mod arnold_surface;
+pub mod ass;
 pub mod cem_hair;
 pub mod gzip;
 pub mod imported;
@@ -35,7 +37,7 @@ pub fn read_mesh(path: &Path) -> Result<TriangleMesh, LoadError> {
 
 /// The formats [`read_imported`] reads, by extension: other tools' scenes, and raw
 /// geometry (`.hair` strands, `.ply` and `.obj` meshes or polyline strands).
-pub const IMPORTED_EXTENSIONS: [&str; 9] = ["ma", "pbrt", "usda", "usdc", "usdz", "usd", "hair", "ply", "obj"];
+pub const IMPORTED_EXTENSIONS: [&str; 10] = ["ma", "ass", "pbrt", "usda", "usdc", "usdz", "usd", "hair", "ply", "obj"];
 
 /// What to read of a file that holds more than one frame or camera.
 #[derive(Clone, Debug, Default)]
@@ -53,13 +55,18 @@ pub fn is_imported(path: &Path) -> bool {
     extension(path).is_some_and(|e| IMPORTED_EXTENSIONS.contains(&e.as_str()))
 }
 
-/// The file's extension, lowercase.
+/// The file's extension, lowercase; `ass` for a gzipped Arnold scene (`.ass.gz`).
 fn extension(path: &Path) -> Option<String> {
-    path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase)
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    let stem_ext = || Path::new(path.file_stem()?).extension()?.to_str().map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("gz") if stem_ext().as_deref() == Some("ass") => Some("ass".into()),
+        _ => ext,
+    }
 }
 
-/// Reads a Maya ASCII (`.ma`), pbrt (`.pbrt`) or USD (`.usda`, `.usdc`, `.usdz`, `.usd`)
-/// scene, or a raw geometry file (`.hair`, `.ply`, `.obj`) as a scene holding just that
+/// Reads a Maya ASCII (`.ma`), Arnold (`.ass`, `.ass.gz`), pbrt (`.pbrt`) or USD (`.usda`,
+/// `.usdc`, `.usdz`, `.usd`) scene, or a raw geometry file (`.hair`, `.ply`, `.obj`) as a scene holding just that
 /// geometry, choosing the reader by the file's extension. Strands without widths are given
 /// [`imported::RELATIVE_WIDTH`] of the scene's size, reported once.
 pub fn read_imported(path: &Path) -> Result<imported::Imported, LoadError> {
@@ -70,11 +77,12 @@ pub fn read_imported(path: &Path) -> Result<imported::Imported, LoadError> {
 pub fn read_imported_with(path: &Path, options: &ImportOptions) -> Result<imported::Imported, LoadError> {
     use imported::{raw_mesh, raw_strands};
     let ext = extension(path);
-    if options.camera.is_some() && !matches!(ext.as_deref(), Some("ma" | "usda" | "usdc" | "usdz" | "usd")) {
+    if options.camera.is_some() && !matches!(ext.as_deref(), Some("ma" | "ass" | "usda" | "usdc" | "usdz" | "usd")) {
         return Err(no_named_cameras(path));
     }
     let mut imported = match ext.as_deref() {
         Some("ma") => maya_ascii::read_maya(path, options.camera.as_deref(), options.frame)?,
+        Some("ass") => read_ass_tree(path, options, &mut vec![canonical(path)])?,
         Some("pbrt") => pbrt::read_pbrt(path)?,
         Some("usda" | "usdc" | "usdz" | "usd") => usd::read_usd(path, options)?,
         Some("hair") => raw_strands(cem_hair::read_hair(path)?),
@@ -89,12 +97,74 @@ pub fn read_imported_with(path: &Path, options: &ImportOptions) -> Result<import
         _ => {
             return Err(LoadError::format(
                 path,
-                "unknown scene format: expected a .ma, .pbrt, .usda, .usdc, .usdz, .usd, .hair, .ply or .obj file",
+                "unknown scene format: expected a .ma, .ass, .ass.gz, .pbrt, .usda, .usdc, .usdz, .usd, .hair, .ply or .obj file",
             ))
         }
     };
     imported.give_widths();
     Ok(imported)
+}
+
+/// Most `.ass` files pulled in inside each other by procedurals (an `.ass` whose procedural
+/// names an `.ass` whose procedural names another ...).
+const MAX_PROCEDURAL_DEPTH: usize = 16;
+
+/// The path as the file system resolves it (for finding cycles), else as given.
+fn canonical(path: &Path) -> std::path::PathBuf {
+    path.canonicalize().unwrap_or_else(|_| path.to_path_buf())
+}
+
+/// An Arnold scene with the files its procedurals pull in, each read by the reader of its
+/// format at the procedural's frame and placed by its matrix; `chain` holds the `.ass`
+/// files being read, outermost first, so that one pulling itself back in is an error.
+fn read_ass_tree(
+    path: &Path,
+    options: &ImportOptions,
+    chain: &mut Vec<std::path::PathBuf>,
+) -> Result<imported::Imported, LoadError> {
+    let scene = ass::read_ass(path, options.camera.as_deref())?;
+    let mut out = scene.imported;
+    for p in scene.procedurals {
+        if !p.path.exists() {
+            // Arnold reports a procedural it cannot load and renders the rest.
+            out.warnings.push(format!("procedural `{}`: {} is missing: not drawn", p.node, p.path.display()));
+            continue;
+        }
+        let options = ImportOptions { frame: p.frame.or(options.frame), camera: None };
+        let mut inner = match extension(&p.path).as_deref() {
+            Some("ass") => {
+                let file = canonical(&p.path);
+                if chain.contains(&file) {
+                    let names: Vec<String> = chain.iter().chain([&file]).map(|f| f.display().to_string()).collect();
+                    let message =
+                        format!("procedural `{}` pulls in a file already being read: {}", p.node, names.join(" -> "));
+                    return Err(LoadError::invalid(path, message));
+                }
+                if chain.len() >= MAX_PROCEDURAL_DEPTH {
+                    let message =
+                        format!("procedural `{}`: procedurals nest deeper than {MAX_PROCEDURAL_DEPTH} files", p.node);
+                    return Err(LoadError::invalid(path, message));
+                }
+                chain.push(file);
+                let inner = read_ass_tree(&p.path, &options, chain);
+                chain.pop();
+                inner?
+            }
+            Some("usda" | "usdc" | "usdz" | "usd") => usd::read_usd(&p.path, &options)?,
+            _ => {
+                let message =
+                    format!("procedurals of files tress does not read as procedurals: not drawn ({})", p.node);
+                out.warnings.push(format!("{message}: {}", p.path.display()));
+                continue;
+            }
+        };
+        inner.transform(&p.transform);
+        out.contents.append(inner.contents);
+        let name =
+            p.path.file_name().map_or_else(|| p.path.display().to_string(), |f| f.to_string_lossy().into_owned());
+        out.warnings.extend(inner.warnings.into_iter().map(|w| format!("{name}: {w}")));
+    }
+    Ok(out)
 }
 
 /// The bounds in world space of `contents`' meshes, strand sets and guides, those in memory
@@ -136,7 +206,7 @@ pub fn override_hair_width(contents: &mut Contents, width: f32) -> Result<(), Lo
 fn no_named_cameras(path: &Path) -> LoadError {
     LoadError::invalid(
         path,
-        "has no cameras to choose by name (--camera takes a USD camera's prim path or a Maya camera's name)",
+        "has no cameras to choose by name (--camera takes a USD camera's prim path or a Maya or Arnold camera's name)",
     )
 }
 

@@ -56,8 +56,8 @@ pub struct Overrides {
     /// width, or the wrong one).
     #[arg(long, value_name = "WIDTH", value_parser = parse_width)]
     pub hair_width: Option<f32>,
-    /// Render through this camera of the file: a USD camera's prim path (`/World/Cam`) or a
-    /// Maya camera's transform or shape name. Without it, the file's first camera.
+    /// Render through this camera of the file: a USD camera's prim path (`/World/Cam`), a
+    /// Maya camera's transform or shape name, or an Arnold camera node's name. Without it, the file's first camera.
     #[arg(long, value_name = "PATH")]
     pub camera: Option<String>,
 }
@@ -111,7 +111,7 @@ pub fn load_with_warnings(
     frame: Option<u32>,
 ) -> Result<(Description, Vec<String>)> {
     if o.camera.is_some() && scene.is_none() {
-        anyhow::bail!("--camera chooses among a scene file's cameras: give a USD or Maya file");
+        anyhow::bail!("--camera chooses among a scene file's cameras: give a USD, Maya or Arnold file");
     }
     let (mut desc, notes) = match scene {
         // A file or a reference scene directory of scripts/gen_scenes.py (scene.json);

@@ -113,19 +113,27 @@ pub fn read_camera(
 
 /// A perspective camera's film: the apertures over the focal length, or Arnold's `fov`.
 fn angle_of_view(prim: &Prim, time: TimeCode, [h_ap, v_ap]: [f32; 2], focal: f32) -> Res<Film> {
-    let h_ratio = match arnold_number(prim, "fov", time)? {
-        Some(fov) => {
-            anyhow::ensure!(fov > 0.0 && fov < 180.0, "`primvars:arnold:fov` {fov} is not an angle between 0 and 180°");
-            2.0 * (0.5 * fov).to_radians().tan()
-        }
-        None => h_ap / focal,
+    let film = match arnold_number(prim, "fov", time)? {
+        Some(fov) => arnold_fov_film(fov, v_ap / h_ap).map_err(|e| anyhow::anyhow!("`primvars:arnold:fov` {e}"))?,
+        None => Film { aperture: [h_ap / focal, v_ap / focal], fit: FilmFit::Horizontal },
     };
-    let film = Film { aperture: [h_ratio, h_ratio * v_ap / h_ap], fit: FilmFit::Horizontal };
     anyhow::ensure!(
         film.aperture.iter().all(|a| a.is_finite() && *a > 0.0),
         "apertures {h_ap} × {v_ap} over focal length {focal} do not give a field of view"
     );
     Ok(film)
+}
+
+/// The film of Arnold's `persp_camera` of horizontal field of view `fov` degrees, which
+/// Arnold fits to the image's width (the vertical aperture, `aspect` times the horizontal
+/// one, only sets the image's aspect when nothing else does); an error when `fov` is not
+/// an angle between 0 and 180°.
+pub fn arnold_fov_film(fov: f32, aspect: f32) -> Result<Film, String> {
+    if !(fov > 0.0 && fov < 180.0) {
+        return Err(format!("{fov} is not an angle between 0 and 180°"));
+    }
+    let h = 2.0 * (0.5 * fov).to_radians().tan();
+    Ok(Film { aperture: [h, h * aspect], fit: FilmFit::Horizontal })
 }
 
 /// An orthographic camera's window in scene units: Arnold's screen window when authored,

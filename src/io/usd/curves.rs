@@ -14,12 +14,16 @@ use openusd::usd::{Prim, TimeCode};
 /// renderer draws them).
 pub const FALLBACK_WIDTH: f32 = 1.0;
 
-/// One curve of a batch, ready to sample: its control points (with wrap phantoms added)
-/// and its segments.
-struct CurveShape {
-    basis: Option<CubicBasis>,
-    periodic: bool,
-    pinned: bool,
+/// How the curves of a batch are drawn through their control points: linear (`basis`
+/// `None`) or of a cubic basis, open, periodic or pinned (the USD BasisCurves schema's
+/// wraps; Arnold's `curves` are open).
+pub struct CurveShape {
+    /// The cubic basis, `None` for linear curves.
+    pub basis: Option<CubicBasis>,
+    /// Whether each curve closes on itself.
+    pub periodic: bool,
+    /// Whether B-spline and Catmull-Rom curves reach their end points.
+    pub pinned: bool,
 }
 
 impl CurveShape {
@@ -50,7 +54,7 @@ impl CurveShape {
     }
 
     /// Segment ends a curve of `n` control points has (its varying values).
-    fn ends(&self, n: usize) -> usize {
+    pub fn ends(&self, n: usize) -> usize {
         let s = self.segments(self.wrap(&vec![0.0f32; n]).len());
         if self.periodic {
             s
@@ -251,17 +255,22 @@ fn entry(set: StrandSet, constant: Option<Vec3>, transform: Affine3A) -> Res<Hai
         set.points.iter().flatten().all(|c| c.is_finite()),
         "the curves' points are beyond single precision"
     );
-    let d = constant.unwrap_or(crate::hair_system::HairSystem::default().hair_color);
-    let material = Material::Tube(Tube { ambient: d, diffuse: d, ..Tube::default() });
     Ok(HairEntry {
         source: HairSource::Inline(set),
-        material: material.into(),
+        material: tube_material(constant).into(),
         transform,
         radius_scale: 1.0,
         file_colors: true,
         lod: None,
         visibility: Default::default(),
     })
+}
+
+/// Tube shading of `color`, the default hair colour without one: how curves without a
+/// hair shader are drawn.
+pub fn tube_material(color: Option<Vec3>) -> Material {
+    let d = color.unwrap_or(crate::hair_system::HairSystem::default().hair_color);
+    Material::Tube(Tube { ambient: d, diffuse: d, ..Tube::default() })
 }
 
 /// Checks a primvar's length against what its interpolation needs.
@@ -342,31 +351,12 @@ pub fn read_basis_curves(
     let mut d = curve_data(prim, time, skin, notes)?;
     let varying_total: usize = d.counts.iter().map(|&n| shape.ends(n)).sum();
     let constant_color = d.check_primvars(varying_total, prim, notes);
-    let mut set = StrandSet::new();
-    let mut point_colors = Vec::new();
-    let mut root_uvs = Vec::new();
-    let (mut offset, mut varying, mut skipped) = (0usize, 0usize, 0usize);
-    for (i, &n) in d.counts.iter().enumerate() {
-        let cps = shape.wrap(&d.points[offset..offset + n]);
-        if shape.segments(cps.len()) == 0 {
-            skipped += 1;
-        } else {
-            let p = shape.sample(&cps);
-            let at = (i, offset, n, varying);
-            let w = match &d.widths {
-                Some((w, interp)) => per_curve(&shape, w, *interp, at, p.len())?,
-                None => vec![d.fallback_width; p.len()],
-            };
-            if let (Some((col, interp)), None) = (&d.colors, constant_color) {
-                point_colors.extend(per_curve(&shape, col, *interp, at, p.len())?.iter().map(|c| c.to_array()));
-            }
-            set.push_strand(p.into_iter().zip(w).map(|(q, w)| (q, 0.5 * w.max(0.0))));
-            if let Some((uv, interp)) = &d.uvs {
-                root_uvs.push(root_uv(uv, *interp, i, offset, varying));
-            }
-        }
-        offset += n;
-        varying += shape.ends(n);
+    let widths = d.widths.as_ref().map(|(w, i)| (w.as_slice(), *i));
+    let colors = d.colors.as_ref().filter(|_| constant_color.is_none()).map(|(c, i)| (c.as_slice(), *i));
+    let (mut set, kept, skipped) = strands(&shape, &d.points, &d.counts, (widths, d.fallback_width), colors)?;
+    if let Some((uv, interp)) = &d.uvs {
+        let root_uv = kept.iter().map(|&(i, offset, varying)| root_uv(uv, *interp, i, offset, varying)).collect();
+        set.strand_info = Some(StrandInfo { root_uv, clump: Vec::new() });
     }
     if skipped > 0 {
         notes.add("curves with too few points for their basis: skipped".into(), prim, skipped);
@@ -374,13 +364,52 @@ pub fn read_basis_curves(
     if set.strand_count() == 0 {
         return Ok(None);
     }
+    Ok(Some(entry(set, constant_color, transform)?))
+}
+
+/// Where a curve starts: its index, its first control point and its first segment end.
+pub type CurveStart = (usize, usize, usize);
+
+/// Curves of `shape` as strands: `counts` control points each, taken in turn from
+/// `points`, sampled by the basis; widths (diameters, `fallback_width` without) and
+/// colours by their interpolation, their lengths already fitted to it. Returns the strand
+/// set, each strand's curve (its index, first control point and first segment end), and
+/// how many curves were skipped for having too few points for the basis.
+pub fn strands(
+    shape: &CurveShape,
+    points: &[Vec3],
+    counts: &[usize],
+    (widths, fallback_width): (Option<(&[f32], Interpolation)>, f32),
+    colors: Option<(&[Vec3], Interpolation)>,
+) -> Res<(StrandSet, Vec<CurveStart>, usize)> {
+    let mut set = StrandSet::new();
+    let mut point_colors = Vec::new();
+    let mut kept = Vec::new();
+    let (mut offset, mut varying, mut skipped) = (0usize, 0usize, 0usize);
+    for (i, &n) in counts.iter().enumerate() {
+        let cps = shape.wrap(&points[offset..offset + n]);
+        if shape.segments(cps.len()) == 0 {
+            skipped += 1;
+        } else {
+            let p = shape.sample(&cps);
+            let at = (i, offset, n, varying);
+            let w = match widths {
+                Some((w, interp)) => per_curve(shape, w, interp, at, p.len())?,
+                None => vec![fallback_width; p.len()],
+            };
+            if let Some((col, interp)) = colors {
+                point_colors.extend(per_curve(shape, col, interp, at, p.len())?.iter().map(|c| c.to_array()));
+            }
+            set.push_strand(p.into_iter().zip(w).map(|(q, w)| (q, 0.5 * w.max(0.0))));
+            kept.push((i, offset, varying));
+        }
+        offset += n;
+        varying += shape.ends(n);
+    }
     if !point_colors.is_empty() {
         set.colors = Some(point_colors);
     }
-    if d.uvs.is_some() {
-        set.strand_info = Some(StrandInfo { root_uv: root_uvs, clump: Vec::new() });
-    }
-    Ok(Some(entry(set, constant_color, transform)?))
+    Ok((set, kept, skipped))
 }
 
 /// Knots for curves of `counts` points and `orders` (as many): uniform inside, the ends

@@ -52,8 +52,9 @@
 use super::values::{boolean, number, token, value, vec3, Res};
 use super::Notes;
 use crate::geometry::TriangleMesh;
-use crate::light::{Light, MapPlacement, MeshLight};
-use crate::scene::{EnvironmentFile, LightSource, Projection};
+use crate::io::arnold_light;
+use crate::light::{Light, MeshLight};
+use crate::scene::{EnvironmentFile, LightSource};
 use glam::{Affine3A, Mat3, Vec3};
 use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
@@ -138,11 +139,8 @@ pub fn read_light(
         Ok(x)
     };
     let color = vec3(input(prim, "color", time)?, "inputs:color")?.unwrap_or(Vec3::ONE);
-    let emission = color * num("intensity", 1.0)? * num("exposure", 0.0)?.exp2();
-    anyhow::ensure!(
-        emission.is_finite() && emission.min_element() >= 0.0,
-        "light colour × intensity must be finite and not negative"
-    );
+    let emission =
+        arnold_light::emission(color, num("intensity", 1.0)?, num("exposure", 0.0)?).map_err(anyhow::Error::msg)?;
     let normalize = boolean(input(prim, "normalize", time)?, false);
     // Blender's conventions (the module docs) hold for the lights its exporter normalized.
     let blender = normalize && super::blender::wrote(prim.stage());
@@ -181,18 +179,9 @@ pub fn read_light(
                 true => (emission * super::blender::SUN_STRENGTH_PER_INTENSITY, super::blender::SUN_DIAMETER_PER_ANGLE),
                 false => (emission, 1.0),
             };
-            // Irradiance is the emission whatever the angle (as USD's Storm and RenderMan
-            // light it): an authored angle only widens the disk and softens the shadows.
-            match number(input(prim, "angle", time)?, "inputs:angle")?.map(|a| a as f32 * diameter) {
-                Some(angle) if angle > 0.0 => {
-                    anyhow::ensure!(angle.is_finite(), "`inputs:angle` must be finite");
-                    let cos_max = (0.5 * angle.min(179.0)).to_radians().cos();
-                    // The disk's solid angle, 2π (1 − cos θ).
-                    let solid = std::f32::consts::TAU * (1.0 - cos_max);
-                    Light::Sun { direction, radiance: emission / solid, cos_max }
-                }
-                _ => Light::Distant { direction, irradiance: emission },
-            }
+            let angle = number(input(prim, "angle", time)?, "inputs:angle")?.map_or(0.0, |a| a as f32 * diameter);
+            anyhow::ensure!(angle.is_finite(), "`inputs:angle` must be finite");
+            arnold_light::distant(direction, emission, angle)
         }
         "DomeLight" | "DomeLight_1" => {
             let pole_z = kind == "DomeLight_1"
@@ -216,9 +205,9 @@ pub fn read_light(
         }
         "SphereLight" => {
             let radius = size("radius", 0.5)? * scale;
-            let area = 4.0 * std::f32::consts::PI * radius * radius;
-            let radiance = if normalize && area > 0.0 { emission / (area * unit_area) } else { emission };
-            Light::Sphere { center: transform.transform_point3(Vec3::ZERO), radius, radiance, camera_visibility }
+            // Normalized, the emission is per unit area in the stage's unit.
+            let emission = if normalize { emission / unit_area } else { emission };
+            arnold_light::sphere(transform.transform_point3(Vec3::ZERO), radius, emission, normalize, camera_visibility)
         }
         _ => {
             let (w, h) = if kind == "RectLight" {
@@ -295,15 +284,7 @@ fn dome_texture(prim: &Prim, time: TimeCode, emission: Vec3, notes: &mut Notes) 
         notes.note(what, prim);
         return Ok(None);
     };
-    Ok(Some(EnvironmentFile {
-        path: file,
-        projection: Projection::LatLong,
-        tint: emission,
-        illuminance: None,
-        // OpenEXR's latitude-longitude layout is tress's turned 180° about +Y.
-        placement: MapPlacement::new(180.0, 1.0),
-        fallback: Some(emission),
-    }))
+    Ok(Some(arnold_light::latlong_map(file, emission)))
 }
 
 /// Whether the Mesh `prim` is an Arnold mesh light (`primvars:arnold:light` on).
@@ -330,11 +311,8 @@ pub fn read_mesh_light(
         Ok(x)
     };
     let color = vec3(get("color")?, "primvars:arnold:light:color")?.unwrap_or(Vec3::ONE);
-    let emission = color * num("intensity", 1.0)? * num("exposure", 0.0)?.exp2();
-    anyhow::ensure!(
-        emission.is_finite() && emission.min_element() >= 0.0,
-        "mesh light colour × intensity must be finite and not negative"
-    );
+    let emission =
+        arnold_light::emission(color, num("intensity", 1.0)?, num("exposure", 0.0)?).map_err(anyhow::Error::msg)?;
     if get("shaders")?.is_some() {
         notes.note("Arnold mesh light textures (`primvars:arnold:light:shaders`): not applied".into(), prim);
     }

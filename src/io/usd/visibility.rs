@@ -34,7 +34,7 @@ use openusd::usd::{Prim, TimeCode};
 
 /// Arnold's ray types: the name of each in `visibility:` primvars and its bit in the
 /// packed byte (`AI_RAY_CAMERA`, ... in Arnold's `ai_ray.h`).
-pub(super) const RAYS: [(&str, u8); 8] = [
+pub const RAYS: [(&str, u8); 8] = [
     ("camera", 1),
     ("shadow", 2),
     ("diffuse_transmit", 4),
@@ -98,9 +98,9 @@ pub fn read(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Visibi
         }),
     };
     note_non_primvars(prim, time, notes)?;
-    if bits == 0 {
+    let Some(visibility) = from_bits(bits, matte) else {
         return Ok(None);
-    }
+    };
     for ((ray, bit), by) in RAYS.iter().zip(&cleared_by) {
         if let (false, Some(by)) = (HONOURED & bit != 0, by) {
             notes.note_why(
@@ -110,7 +110,13 @@ pub fn read(prim: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Option<Visibi
             );
         }
     }
-    Ok(Some(Visibility { camera: bits & 1 != 0, shadows: bits & 2 != 0, matte }))
+    Ok(Some(visibility))
+}
+
+/// Arnold's packed visibility byte (camera 1, shadow 2, ...; [`RAYS`]) as what tress
+/// honours, `None` when it hides the shape from every ray (not drawn).
+pub fn from_bits(bits: u8, matte: bool) -> Option<Visibility> {
+    (bits != 0).then_some(Visibility { camera: bits & 1 != 0, shadows: bits & 2 != 0, matte })
 }
 
 /// The value of the primvar `name` on `prim`, else on its nearest ancestor that authors

@@ -4,6 +4,7 @@
 //! Shared by the proptests (`tests/hostile.rs`) and the cargo-fuzz targets (`fuzz/`), so
 //! covering a new format is one file here plus a line in [`ALL`] and a fuzz target.
 
+pub mod ass;
 pub mod exr;
 pub mod gzip;
 pub mod hair;
@@ -41,6 +42,7 @@ pub const ALL: &[Format] = &[
     Format { name: "pbrt", seeds: pbrt::SEEDS, check: pbrt::check },
     Format { name: "gzip", seeds: gzip::SEEDS, check: gzip::check },
     Format { name: "usda", seeds: usda::SEEDS, check: usda::check },
+    Format { name: "ass", seeds: ass::SEEDS, check: ass::check },
     Format { name: "scene_files", seeds: scene_files::SEEDS, check: scene_files::check },
 ];
 

@@ -1,0 +1,525 @@
+//! Arnold scene source files (`.ass`, and the same gzipped, `.ass.gz`, recognised by its
+//! magic bytes) as a scene: the text is parsed into nodes ([`parse`]) and the nodes tress
+//! draws are read by Arnold's parameter names and defaults (Arnold user guide, node
+//! reference):
+//!
+//! - `options`: `xres` × `yres` the image size; `AA_samples` A gives A² camera samples per
+//!   pixel, as Arnold takes; `GI_diffuse_depth` and `GI_specular_depth`, the bounces Arnold
+//!   follows after the camera hit, give tress's `max_depth` their larger one; `camera` names
+//!   the camera (else `--camera NAME`, else the first camera node).
+//! - `persp_camera`: `matrix` (Arnold's row vectors: the translation is the last row), the
+//!   camera looking down its local −Z with +Y up; `fov`, Arnold's horizontal field of view
+//!   fitted to the image width; `near_clip`, `far_clip`. A `screen_window_min`/`max` other
+//!   than −1..1 is reported, not applied. `ortho_camera`: its screen window, in world units,
+//!   spans the image width.
+//! - lights, by Arnold's conventions ([`super::arnold_light`]): `distant_light` (shining
+//!   along its local −Z, `angle`), `point_light` (`position` or `matrix`, `radius`,
+//!   `normalize`), `quad_light` (`vertices`, one-sided towards the side its vertices wind
+//!   counter-clockwise around, per unit area when `normalize`), `skydome_light` (colour, or
+//!   a linked `image` node's `filename` as a latitude-longitude map, × intensity ×
+//!   2^exposure; `camera` its weight for camera rays).
+//! - `usd` procedurals (`filename`, relative to the `.ass` file; `matrix`; `frame`) and
+//!   `procedural` nodes naming another `.ass` or USD file: listed in [`AssScene`]'s
+//!   `procedurals` for the reader dispatch ([`super::read_imported_with`]) to read and
+//!   place, so that this reader reads no other format itself.
+//!
+//! Every other node type and every parameter not read is reported, one warning per node
+//! type with a count and the first node.
+
+pub mod parse;
+mod shapes;
+
+use self::parse::{Atom, Node, Param};
+use super::arnold_light;
+use super::imported::Imported;
+use crate::error::LoadError;
+use crate::geometry::subdivision::FaceBudget;
+use crate::io::arnold_hair::{ArnoldShader, StandardHair};
+use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
+use crate::light::Light;
+use crate::scene::{CameraDesc, CameraProjection, Film, FilmFit, LightSource};
+use glam::{Affine3A, DMat4, Vec3};
+use std::collections::{BTreeMap, HashMap};
+use std::path::{Path, PathBuf};
+
+/// A geometry file a `usd` or `procedural` node pulls in, to be read by the reader of its
+/// format and placed.
+#[derive(Clone, Debug)]
+pub struct Procedural {
+    /// The file, resolved against the `.ass` file's directory.
+    pub path: PathBuf,
+    /// Its placement (the node's `matrix`, under a `ginstance`'s when instanced).
+    pub transform: Affine3A,
+    /// The frame to read it at (`frame`), when given as a whole number.
+    pub frame: Option<u32>,
+    /// The node's name, for messages.
+    pub node: String,
+}
+
+/// What an `.ass` file gives: its scene, and the files its procedurals pull in.
+#[derive(Debug, Default)]
+pub struct AssScene {
+    /// The camera, settings, lights and geometry of the file itself.
+    pub imported: Imported,
+    /// The procedurals, to be read and appended to `imported`.
+    pub procedurals: Vec<Procedural>,
+}
+
+/// An error at a line of the file.
+type Res<T> = Result<T, (usize, String)>;
+
+/// Warnings counted by kind: how many nodes each concerns and the first of them.
+#[derive(Default)]
+struct Notes(BTreeMap<String, (usize, String)>);
+
+impl Notes {
+    fn note(&mut self, what: impl Into<String>, node: &Node) {
+        self.0.entry(what.into()).or_insert((0, node_label(node))).0 += 1;
+    }
+
+    fn lines(self) -> Vec<String> {
+        self.0.into_iter().map(|(what, (n, first))| format!("{what} ({n}; first: {first})")).collect()
+    }
+}
+
+fn node_label(node: &Node) -> String {
+    match node.name.is_empty() {
+        true => format!("{} at line {}", node.kind, node.line),
+        false => node.name.clone(),
+    }
+}
+
+/// Node types that set up Arnold's output (drivers, filters, colour management) or are
+/// read through the nodes that use them.
+const OUTPUT: [&str; 3] = ["driver_", "_filter", "color_manager"];
+
+/// Reads the `.ass` file at `path` (gzipped or not) through the camera named `camera`
+/// (`None`: the one `options` names, else the first).
+pub fn read_ass(path: &Path, camera: Option<&str>) -> Result<AssScene, LoadError> {
+    let bytes = super::gzip::read_file(path, crate::input_file::Kind::ImportedScene)?;
+    let text = String::from_utf8(bytes).map_err(|_| LoadError::format(path, "the file is not UTF-8 text"))?;
+    parse_ass(&text, path, camera)
+}
+
+/// The scene of the `.ass` text `text`, read as the file `path` (which names it in errors
+/// and resolves the files its procedurals and images name).
+pub fn parse_ass(text: &str, path: &Path, camera: Option<&str>) -> Result<AssScene, LoadError> {
+    let nodes = parse::parse(text).map_err(|e| LoadError::format(path, e.to_string()))?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    read_nodes(&nodes, dir, camera).map_err(|(line, m)| LoadError::invalid(path, format!("line {line}: {m}")))
+}
+
+/// The scene of parsed `nodes`; `dir` resolves the files they name.
+fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene> {
+    let mut reader = Reader {
+        nodes,
+        dir,
+        by_name: HashMap::new(),
+        notes: Notes::default(),
+        out: AssScene::default(),
+        shapes: HashMap::new(),
+        faces: FaceBudget::default(),
+    };
+    for (i, n) in nodes.iter().enumerate() {
+        if !n.name.is_empty() {
+            reader.by_name.entry(n.name.as_str()).or_insert(i);
+        }
+    }
+    let options = nodes.iter().find(|n| n.kind == "options");
+    if let Some(o) = options {
+        reader.options(o)?;
+    }
+    let wanted = camera.map(str::to_string).or_else(|| options.and_then(|o| text(o, "camera")));
+    reader.camera(wanted.as_deref(), camera.is_some())?;
+    for (i, node) in nodes.iter().enumerate() {
+        let used: &[&str] = match node.kind.as_str() {
+            "options" => &OPTIONS_READ,
+            "persp_camera" | "ortho_camera" => &CAMERA_READ,
+            "distant_light" | "point_light" | "quad_light" | "skydome_light" => {
+                reader.light(node)?;
+                &LIGHT_READ
+            }
+            "usd" | "procedural" => {
+                reader.procedural(node, matrix(node)?)?;
+                &PROCEDURAL_READ
+            }
+            "polymesh" => {
+                reader.shape(i)?;
+                &shapes::POLYMESH_READ
+            }
+            "curves" => {
+                reader.shape(i)?;
+                &shapes::CURVES_READ
+            }
+            "sphere" => {
+                reader.shape(i)?;
+                &shapes::SPHERE_READ
+            }
+            "ginstance" => {
+                reader.ginstance(node)?;
+                &shapes::GINSTANCE_READ
+            }
+            "standard_surface" => <StandardSurface as ArnoldShader>::NAMES,
+            "lambert" => <Lambert as ArnoldShader>::NAMES,
+            "flat" => <Flat as ArnoldShader>::NAMES,
+            "standard_hair" => &StandardHair::NAMES,
+            "image" => &["filename"],
+            kind => {
+                let what = match OUTPUT.iter().any(|o| kind.starts_with(o) || kind.ends_with(o)) {
+                    true => format!("`{kind}` nodes: not read (tress writes its own image: -o, --filter)"),
+                    false => format!("`{kind}` nodes: not read"),
+                };
+                reader.notes.note(what, node);
+                continue;
+            }
+        };
+        let unread: Vec<&str> = node.params.iter().map(|p| p.name.as_str()).filter(|p| !used.contains(p)).collect();
+        if !unread.is_empty() {
+            let mut unread = unread;
+            unread.dedup();
+            reader.notes.note(format!("`{}` parameters not read: {}", node.kind, unread.join(", ")), node);
+        }
+    }
+    let mut out = reader.out;
+    out.imported.warnings.extend(reader.notes.lines());
+    Ok(out)
+}
+
+/// The parameters read of each node type (others are reported).
+const OPTIONS_READ: [&str; 6] = ["xres", "yres", "camera", "AA_samples", "GI_diffuse_depth", "GI_specular_depth"];
+const CAMERA_READ: [&str; 6] = ["matrix", "fov", "near_clip", "far_clip", "screen_window_min", "screen_window_max"];
+const LIGHT_READ: [&str; 11] = [
+    "matrix",
+    "color",
+    "intensity",
+    "exposure",
+    "angle",
+    "radius",
+    "position",
+    "normalize",
+    "vertices",
+    "camera",
+    "format",
+];
+const PROCEDURAL_READ: [&str; 4] = ["filename", "matrix", "frame", "visibility"];
+
+struct Reader<'a> {
+    nodes: &'a [Node],
+    dir: &'a Path,
+    by_name: HashMap<&'a str, usize>,
+    notes: Notes,
+    out: AssScene,
+    /// Shapes read so far by node index (`None`: the node draws nothing), for ginstances.
+    shapes: HashMap<usize, Option<shapes::Shape>>,
+    /// Faces subdivision has made so far in the file.
+    faces: FaceBudget,
+}
+
+/// The values of parameter `name`, if the node sets it.
+fn values<'n>(node: &'n Node, name: &str) -> Option<(&'n [Atom], usize)> {
+    node.param(name).map(|p: &Param| (p.values.as_slice(), p.line))
+}
+
+/// A number parameter (a flag reads as 1 or 0), `default` when not set.
+fn num(node: &Node, name: &str, default: f64) -> Res<f64> {
+    let Some((v, line)) = values(node, name) else { return Ok(default) };
+    match v.first() {
+        Some(Atom::Num(x)) => Ok(*x),
+        Some(a) => match flag_word(a) {
+            Some(b) => Ok(f64::from(u8::from(b))),
+            None => Err((line, format!("`{}` `{name}` is {a}, not a number", node_label(node)))),
+        },
+        None => Err((line, format!("`{}` `{name}` has no value", node_label(node)))),
+    }
+}
+
+/// A finite f32 parameter.
+fn num32(node: &Node, name: &str, default: f32) -> Res<f32> {
+    let x = num(node, name, f64::from(default))? as f32;
+    match x.is_finite() {
+        true => Ok(x),
+        false => Err((node.param(name).map_or(node.line, |p| p.line), format!("`{name}` is beyond single precision"))),
+    }
+}
+
+fn flag_word(a: &Atom) -> Option<bool> {
+    match a.text()? {
+        "on" | "true" => Some(true),
+        "off" | "false" => Some(false),
+        _ => None,
+    }
+}
+
+/// A switch, `default` when not set.
+fn flag(node: &Node, name: &str, default: bool) -> Res<bool> {
+    Ok(num(node, name, f64::from(u8::from(default)))? != 0.0)
+}
+
+/// A string or name parameter.
+fn text(node: &Node, name: &str) -> Option<String> {
+    values(node, name).and_then(|(v, _)| v.first().and_then(Atom::text)).map(str::to_string)
+}
+
+/// The numbers of parameter `name` (of the first motion key), all of them finite in
+/// single precision.
+fn numbers(node: &Node, name: &str) -> Res<Option<Vec<f32>>> {
+    let Some((v, line)) = values(node, name) else { return Ok(None) };
+    let mut out = Vec::with_capacity(v.len());
+    for a in v {
+        match a {
+            Atom::Num(x) if (*x as f32).is_finite() => out.push(*x as f32),
+            other => return Err((line, format!("`{}` `{name}`: {other} is not a finite number", node_label(node)))),
+        }
+    }
+    Ok(Some(out))
+}
+
+/// A colour (`RGB`, or the colour of an `RGBA`): `Err` with the linked node's name when
+/// the parameter is linked to a node.
+fn color(node: &Node, name: &str, default: Vec3) -> Res<Result<Vec3, String>> {
+    let Some((v, line)) = values(node, name) else { return Ok(Ok(default)) };
+    if let Some(Atom::Str(s) | Atom::Word(s)) = v.first() {
+        return Ok(Err(s.clone()));
+    }
+    let c = numbers(node, name)?.unwrap_or_default();
+    match c.len() {
+        1 => Ok(Ok(Vec3::splat(c[0]))),
+        3 | 4 => Ok(Ok(Vec3::new(c[0], c[1], c[2]))),
+        n => Err((line, format!("`{}` `{name}` has {n} numbers, not a colour", node_label(node)))),
+    }
+}
+
+/// The node's `matrix` (the first motion key), identity when not set.
+fn matrix(node: &Node) -> Res<Affine3A> {
+    let Some(m) = numbers(node, "matrix")? else { return Ok(Affine3A::IDENTITY) };
+    let line = node.param("matrix").map_or(node.line, |p| p.line);
+    if m.len() < 16 {
+        return Err((line, format!("`{}` `matrix` has {} numbers, not 16", node_label(node), m.len())));
+    }
+    // Arnold's row vectors: each written row is a column of the column-vector matrix.
+    let mut a = [0.0f64; 16];
+    for (d, s) in a.iter_mut().zip(&m) {
+        *d = f64::from(*s);
+    }
+    let t = Affine3A::from_mat4(DMat4::from_cols_array(&a).as_mat4());
+    match t.is_finite() {
+        true => Ok(t),
+        false => Err((line, format!("`{}` `matrix` is not finite", node_label(node)))),
+    }
+}
+
+impl Reader<'_> {
+    fn options(&mut self, o: &Node) -> Res<()> {
+        let whole = |name: &str, default: f64, max: f64| -> Res<u32> {
+            let x = num(o, name, default)?;
+            match x.fract() == 0.0 && (0.0..=max).contains(&x) {
+                true => Ok(x as u32),
+                false => Err((
+                    o.param(name).map_or(o.line, |p| p.line),
+                    format!("options `{name}` {x} is not a whole number from 0 to {max}"),
+                )),
+            }
+        };
+        // Arnold's defaults: 320 × 240, 3 AA samples, one diffuse and one specular bounce.
+        let (w, h) = (whole("xres", 320.0, 65536.0)?, whole("yres", 240.0, 65536.0)?);
+        if w > 0 && h > 0 {
+            self.out.imported.resolution = Some([w, h]);
+        }
+        let aa = num(o, "AA_samples", 3.0)?.round().clamp(1.0, 1024.0) as u32;
+        self.out.imported.spp = Some(aa * aa);
+        let depth = whole("GI_diffuse_depth", 1.0, 1024.0)?.max(whole("GI_specular_depth", 1.0, 1024.0)?);
+        self.out.imported.max_depth = Some(depth);
+        Ok(())
+    }
+
+    /// The camera named `wanted` (an error listing the cameras when `required` and there is
+    /// none of that name), else the first.
+    fn camera(&mut self, wanted: Option<&str>, required: bool) -> Res<()> {
+        let cameras: Vec<&Node> = self.nodes.iter().filter(|n| n.kind.ends_with("_camera")).collect();
+        let chosen = match wanted {
+            Some(w) => match cameras.iter().find(|c| c.name == w) {
+                Some(c) => Some(*c),
+                None if required => {
+                    let names: Vec<&str> = cameras.iter().map(|c| c.name.as_str()).collect();
+                    let list = if names.is_empty() { "none".to_string() } else { names.join(", ") };
+                    return Err((1, format!("no camera `{w}` in the file (its cameras: {list})")));
+                }
+                None => cameras.first().copied(),
+            },
+            None => cameras.first().copied(),
+        };
+        let Some(c) = chosen else { return Ok(()) };
+        if cameras.len() > 1 && wanted.is_none() {
+            self.out.imported.warnings.push(format!(
+                "{} cameras: rendering through {} (choose another with --camera NAME)",
+                cameras.len(),
+                c.name
+            ));
+        }
+        let m = matrix(c)?;
+        let eye = m.transform_point3(Vec3::ZERO);
+        let forward = m.transform_vector3(Vec3::NEG_Z);
+        let up = m.transform_vector3(Vec3::Y);
+        if !(forward.length() > 0.0 && up.cross(forward).length() > 0.0) {
+            return Err((c.line, format!("camera `{}`: its matrix gives no view and up directions", c.name)));
+        }
+        let [w, h] = self.out.imported.resolution.unwrap_or([320, 240]);
+        let aspect = h as f32 / w as f32;
+        let window = |name: &str, d: f32| -> Res<[f32; 2]> {
+            match numbers(c, name)? {
+                None => Ok([d, d]),
+                Some(v) if v.len() == 2 => Ok([v[0], v[1]]),
+                Some(v) => Err((c.line, format!("camera `{}` `{name}` has {} numbers, not 2", c.name, v.len()))),
+            }
+        };
+        let (min, max) = (window("screen_window_min", -1.0)?, window("screen_window_max", 1.0)?);
+        let (projection, film) = match c.kind.as_str() {
+            "persp_camera" => {
+                if min != [-1.0, -1.0] || max != [1.0, 1.0] {
+                    self.notes.note("perspective camera screen windows other than -1..1: not applied", c);
+                }
+                let fov = num32(c, "fov", 54.43)?;
+                let film = super::usd::camera::arnold_fov_film(fov, aspect)
+                    .map_err(|e| (c.line, format!("camera `{}` `fov` {e}", c.name)))?;
+                (CameraProjection::Perspective, film)
+            }
+            "ortho_camera" => {
+                if min[0] + max[0] != 0.0 || min[1] + max[1] != 0.0 {
+                    self.notes.note("orthographic screen windows off the camera's axis: drawn centred", c);
+                }
+                // The window's x extent spans the image width; its height follows the image.
+                let width = max[0] - min[0];
+                if !(width.is_finite() && width > 0.0) {
+                    return Err((c.line, format!("camera `{}`: its screen window has no width", c.name)));
+                }
+                let film = Film { aperture: [width, width * aspect], fit: FilmFit::Horizontal };
+                (CameraProjection::Orthographic { height: width * aspect }, film)
+            }
+            other => {
+                self.notes.note(format!("`{other}` cameras: drawn as a perspective camera of their fov"), c);
+                let fov = num32(c, "fov", 54.43)?.clamp(1.0, 179.0);
+                (CameraProjection::Perspective, super::usd::camera::arnold_fov_film(fov, aspect).expect("clamped"))
+            }
+        };
+        // Arnold's defaults: clipping from 1e-4 to 1e30, along the view.
+        let (near, far) = (num32(c, "near_clip", 1e-4)?, num32(c, "far_clip", 1e30)?);
+        if !(near >= 0.0 && far > near) {
+            return Err((c.line, format!("camera `{}`: clip range {near} to {far} is not a range", c.name)));
+        }
+        let stretch = forward.length();
+        let vfov = match projection {
+            CameraProjection::Perspective => film.vfov(w, h),
+            _ => CameraDesc::default().vfov,
+        };
+        self.out.imported.camera = Some(CameraDesc {
+            eye,
+            target: eye + forward.normalize(),
+            up: up.normalize(),
+            vfov,
+            projection,
+            film: Some(film),
+            clip: [near * stretch, far * stretch],
+        });
+        Ok(())
+    }
+
+    fn light(&mut self, node: &Node) -> Res<()> {
+        let m = matrix(node)?;
+        let what = |e: String| (node.line, format!("light `{}`: {e}", node_label(node)));
+        let (base, linked) = match color(node, "color", Vec3::ONE)? {
+            Ok(c) => (c, None),
+            Err(link) => (Vec3::ONE, Some(link)),
+        };
+        let emission = arnold_light::emission(base, num32(node, "intensity", 1.0)?, num32(node, "exposure", 0.0)?)
+            .map_err(what)?;
+        let normalize = flag(node, "normalize", true)?;
+        let linked_node = linked.as_deref().and_then(|l| self.by_name.get(l).map(|&i| &self.nodes[i]));
+        if linked.is_some() && node.kind != "skydome_light" {
+            self.notes.note("light colours linked to shaders: lit by white × intensity", node);
+        }
+        let light = match node.kind.as_str() {
+            "distant_light" => {
+                let direction = m.transform_vector3(Vec3::Z).normalize_or(Vec3::Y);
+                arnold_light::distant(direction, emission, num32(node, "angle", 0.0)?)
+            }
+            "point_light" => {
+                let position = match numbers(node, "position")? {
+                    Some(p) if p.len() == 3 => Vec3::new(p[0], p[1], p[2]),
+                    _ => Vec3::ZERO,
+                };
+                let radius = num32(node, "radius", 0.0)?.max(0.0) * m.matrix3.determinant().abs().cbrt();
+                let camera = num32(node, "camera", 0.0)?.max(0.0);
+                arnold_light::sphere(m.transform_point3(position), radius, emission, normalize, camera)
+            }
+            "quad_light" => {
+                // Arnold's default quad: the unit square −1..1 in the local XY plane.
+                let v = match numbers(node, "vertices")? {
+                    Some(v) if v.len() == 12 => v,
+                    None => vec![-1.0, -1.0, 0.0, -1.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, -1.0, 0.0],
+                    Some(v) => return Err(what(format!("`vertices` has {} numbers, not 4 points", v.len()))),
+                };
+                let p: Vec<Vec3> = v.chunks(3).map(|c| m.transform_point3(Vec3::new(c[0], c[1], c[2]))).collect();
+                if (p[0] + p[2] - p[1] - p[3]).length() > 1e-4 * (p[2] - p[0]).length() {
+                    self.notes.note(
+                        "quad lights that are not parallelograms: drawn as the parallelogram of three corners",
+                        node,
+                    );
+                }
+                let (edge_u, edge_v) = (p[3] - p[0], p[1] - p[0]);
+                let area = edge_u.cross(edge_v).length();
+                let radiance = if normalize && area > 0.0 { emission / area } else { emission };
+                Light::Quad {
+                    corner: p[0],
+                    edge_u,
+                    edge_v,
+                    radiance,
+                    camera_visibility: num32(node, "camera", 0.0)?.max(0.0),
+                }
+            }
+            _ => {
+                let camera = num32(node, "camera", 1.0)?.max(0.0);
+                let format = text(node, "format").unwrap_or_else(|| "latlong".into());
+                match linked_node.filter(|n| n.kind == "image").and_then(|n| text(n, "filename")) {
+                    Some(file) if format == "latlong" => {
+                        let mut map = arnold_light::latlong_map(self.dir.join(file), emission);
+                        map.placement = map.placement.rotated(crate::math::orthogonal_part(&m)).seen_by_camera(camera);
+                        self.out.imported.contents.lights.push(LightSource::File(map));
+                        return Ok(());
+                    }
+                    _ => {
+                        if linked.is_some() {
+                            self.notes.note("sky dome colours linked to nodes other than a latitude-longitude image: lit by white × intensity", node);
+                        }
+                        Light::Environment { radiance: emission, camera_visibility: camera }
+                    }
+                }
+            }
+        };
+        self.out.imported.contents.lights.push(LightSource::Inline(light));
+        Ok(())
+    }
+
+    /// A `usd` or `procedural` node, placed by `transform`.
+    fn procedural(&mut self, node: &Node, transform: Affine3A) -> Res<()> {
+        if num(node, "visibility", 255.0)? == 0.0 {
+            return Ok(());
+        }
+        let Some(file) = text(node, "filename").filter(|f| !f.is_empty()) else {
+            self.notes.note("procedurals without a `filename`: not drawn", node);
+            return Ok(());
+        };
+        let frame = match num(node, "frame", f64::NAN) {
+            Ok(f) if f.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&f) => Some(f as u32),
+            Ok(f) if f.is_nan() => None,
+            _ => {
+                self.notes.note("procedural frames that are not whole numbers: read at the file's start", node);
+                None
+            }
+        };
+        self.out.procedurals.push(Procedural { path: self.dir.join(file), transform, frame, node: node_label(node) });
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests;

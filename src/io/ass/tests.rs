@@ -1,0 +1,134 @@
+use super::parse::{parse, Atom};
+use super::*;
+use crate::scene::{HairSource, MeshSource};
+
+fn scene(text: &str) -> AssScene {
+    parse_ass(text, Path::new("t.ass"), None).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn error(text: &str) -> String {
+    parse_ass(text, Path::new("t.ass"), None).unwrap_err().to_string()
+}
+
+#[test]
+fn values_are_plain_lists_inline_arrays_matrix_rows_and_encoded_arrays() {
+    let nodes = parse(
+        "# a comment\noptions\n{\n xres 64 # trailing\n camera \"my cam\"\n flag on\n}\n\
+         polymesh\n{\n name /a|b\n nsides 2 1 UINT\n 4 3\n vlist 2 2 VECTOR 1 2 3 4 5 6 7 8 9 10 11 12\n matrix\n 1 0 0 0\n 0 1 0 0\n 0 0 1 0\n 5 6 7 1\n\
+          declare tag constant STRING\n tag \"x\"\n uvlist 2 1 b85VECTOR2 zy!8+HY8$$$$&\n}\n",
+    )
+    .unwrap();
+    assert_eq!(nodes.len(), 2);
+    let o = &nodes[0];
+    assert_eq!(o.param("xres").unwrap().values, vec![Atom::Num(64.0)]);
+    assert_eq!(o.param("camera").unwrap().values, vec![Atom::Str("my cam".into())]);
+    assert_eq!(o.param("flag").unwrap().values, vec![Atom::Word("on".into())]);
+    let m = &nodes[1];
+    assert_eq!(m.name, "/a|b");
+    assert_eq!(m.param("nsides").unwrap().values, vec![Atom::Num(4.0), Atom::Num(3.0)]);
+    // Of two motion keys, the first.
+    assert_eq!(m.param("vlist").unwrap().values.len(), 6);
+    let rows = &m.param("matrix").unwrap().values;
+    assert_eq!((rows.len(), &rows[12]), (16, &Atom::Num(5.0)));
+    // User data is no parameter.
+    assert!(m.param("tag").is_none() && m.param("declare").is_none());
+    // Encoded: 0, 1.0 (`y`), then 0.25 twice (`!` word count).
+    let uv: Vec<Atom> = [0.0, 1.0, 0.25, 0.25].map(Atom::Num).to_vec();
+    assert_eq!(m.param("uvlist").unwrap().values, uv);
+}
+
+#[test]
+fn malformed_text_is_an_error_naming_the_line() {
+    for (text, line, what) in [
+        ("options\n{\n xres 10\n", 4, "not closed"),
+        ("polymesh\n{\n vlist 2 1 VECTOR 1 2 3 4 5\n nsides 1\n}\n", 4, "nsides in an array of VECTOR"),
+        ("polymesh\n{\n vlist 1000000000 1 VECTOR 1 2\n}\n", 3, "more values than the file can"),
+        ("polymesh\n{\n vlist 1 1 VECTOR 1 nan 2\n}\n", 3, "not a finite number"),
+        ("options\n{\n xres 1e400\n}\n", 3, "not a finite number"),
+        ("options\n{\n camera \"cam\n}\n", 3, "not closed"),
+        ("{ }\n", 1, "expected a node type"),
+        ("polymesh\n{\n uvlist 2 1 b85VECTOR2 z\n}\n", 3, "declares 4"),
+        ("polymesh\n{\n nsides 2 1 b85UINT Q$$$$$\n}\n", 3, "packing"),
+    ] {
+        let e = error(text);
+        assert!(e.starts_with("t.ass") && e.contains(&format!("line {line}")) && e.contains(what), "{text:?}: {e}");
+    }
+    // Read, not parsed: a number that is a name.
+    let e = error("options\n{\n xres big\n}\n");
+    assert!(e.contains("line 3") && e.contains("not a number"), "{e}");
+}
+
+#[test]
+fn options_set_the_image_samples_depth_and_camera() {
+    let s = scene(
+        "options\n{\n xres 200\n yres 100\n AA_samples 4\n GI_diffuse_depth 2\n GI_specular_depth 3\n camera \"b\"\n}\n\
+         persp_camera\n{\n name a\n}\npersp_camera\n{\n name b\n fov 90\n matrix 1 0 0 0 0 1 0 0 0 0 1 0 1 2 3 1\n}\n",
+    );
+    let i = &s.imported;
+    assert_eq!((i.resolution, i.spp, i.max_depth), (Some([200, 100]), Some(16), Some(3)));
+    let c = i.camera.as_ref().unwrap();
+    assert_eq!((c.eye, c.target), (Vec3::new(1.0, 2.0, 3.0), Vec3::new(1.0, 2.0, 2.0)));
+    // 90° across the width of a 2:1 image: 2 atan(1/2) down its height.
+    assert!((c.vfov_for(200, 100) - 2.0 * 0.5f32.atan().to_degrees()).abs() < 1e-3, "{}", c.vfov_for(200, 100));
+    // Asked for by name, an unknown camera lists the file's.
+    let e = parse_ass("persp_camera\n{\n name a\n}\n", Path::new("t.ass"), Some("zz")).unwrap_err().to_string();
+    assert!(e.contains("no camera `zz`") && e.contains("its cameras: a"), "{e}");
+}
+
+#[test]
+fn lights_emit_intensity_times_two_to_the_exposure() {
+    let s = scene(
+        "distant_light\n{\n name d\n intensity 3\n exposure 2\n color 1 0.5 0\n matrix 1 0 0 0 0 0 -1 0 0 1 0 0 0 0 0 1\n}\n\
+         skydome_light\n{\n name s\n intensity 0.5\n color 0.2 0.2 0.2\n camera 0\n}\n",
+    );
+    let lights: Vec<&Light> = s
+        .imported
+        .contents
+        .lights
+        .iter()
+        .map(|l| match l {
+            LightSource::Inline(l) => l,
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    let Light::Distant { direction, irradiance } = lights[0] else { panic!("{:?}", lights[0]) };
+    assert_eq!(*irradiance, Vec3::new(12.0, 6.0, 0.0));
+    // Local −Z turned to −Y: the light shines down, from +Y.
+    assert!((*direction - Vec3::Y).length() < 1e-6, "{direction}");
+    assert_eq!(*lights[1], Light::Environment { radiance: Vec3::splat(0.1), camera_visibility: 0.0 });
+}
+
+#[test]
+fn polymeshes_and_curves_are_read_with_their_instances() {
+    let s = scene(
+        "polymesh\n{\n name m\n nsides 2 1 UINT 4 3\n vidxs 7 1 UINT 0 1 2 3 0 2 4\n\
+          vlist 5 1 VECTOR 0 0 0 1 0 0 1 1 0 0 1 0 2 2 0\n visibility 0\n}\n\
+         ginstance\n{\n name g\n node m\n matrix 1 0 0 0 0 1 0 0 0 0 1 0 5 0 0 1\n}\n\
+         curves\n{\n name c\n num_points 2 1 UINT 4 7\n points 11 1 VECTOR\n 0 0 0 0 1 0 0 2 0 0 3 0\n\
+          1 0 0 1 1 0 1 2 0 1 3 0 1 4 0 1 5 0 1 6 0\n radius 5 1 FLOAT 0.1 0.2 0.1 0.2 0.3\n basis \"bezier\"\n}\n",
+    );
+    let c = &s.imported.contents;
+    // The mesh itself is hidden; its instance draws it, 2 + 1 triangles, 5 units over.
+    assert_eq!(c.meshes.len(), 1);
+    let MeshSource::Inline(mesh) = &c.meshes[0].source else { panic!() };
+    assert_eq!(mesh.indices.len(), 3);
+    assert_eq!(c.meshes[0].transform.translation, Vec3::new(5.0, 0.0, 0.0).into());
+    let HairSource::Inline(set) = &c.hair[0].source else { panic!() };
+    assert_eq!(set.strand_count(), 2);
+    // Bézier curves reach their end points; radii per segment end (1 segment, then 2).
+    let first = set.points[0];
+    let last = set.points[set.points.len() - 1];
+    assert_eq!((first[..3].to_vec(), last[..3].to_vec()), (vec![0.0, 0.0, 0.0], vec![1.0, 6.0, 0.0]));
+    assert!((first[3] - 0.1).abs() < 1e-6 && (last[3] - 0.3).abs() < 1e-6, "{first:?} {last:?}");
+    // Counts that do not add up are an error naming the node.
+    let e = error("curves\n{\n name c\n num_points 1 1 UINT 5\n points 1 1 VECTOR 0 0 0\n}\n");
+    assert!(e.contains("curves `c`") && e.contains("adds up to 5"), "{e}");
+}
+
+#[test]
+fn what_is_not_read_is_reported_once_per_kind() {
+    let s = scene("noise\n{\n name n1\n}\nnoise\n{\n name n2\n}\npolymesh\n{\n name m\n step_size 1\n}\n");
+    let w = &s.imported.warnings;
+    assert!(w.iter().any(|w| w.contains("`noise` nodes: not read (2; first: n1)")), "{w:?}");
+    assert!(w.iter().any(|w| w.contains("`polymesh` parameters not read: step_size")), "{w:?}");
+}
