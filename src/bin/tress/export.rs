@@ -10,7 +10,7 @@ use tress::shading::Material;
 /// The arguments of `tress export`.
 #[derive(clap::Args)]
 pub struct ExportArgs {
-    /// Scene file (TOML, .ma, .ass, .pbrt or .usda); the built-in demo scene when omitted.
+    #[arg(help = crate::options::SCENE_HELP)]
     scene: Option<PathBuf>,
     /// Output file: a Cem Yuksel .hair file (strands) or a USD text .usda file (strands
     /// as linear BasisCurves and meshes).

@@ -11,7 +11,7 @@ use tress::world::World;
 /// The arguments of `tress info`.
 #[derive(clap::Args)]
 pub struct InfoArgs {
-    /// Scene file (TOML, .ma, .ass, .pbrt or .usda); the built-in demo scene when omitted.
+    #[arg(help = crate::options::SCENE_HELP)]
     scene: Option<PathBuf>,
     /// Animation frame (scenes with camera keys or frame patterns, USD time samples, Maya animation curves).
     #[arg(long)]

@@ -91,6 +91,11 @@ fn parse_filter(s: &str) -> Result<tress::film::PixelFilter, String> {
     s.parse()
 }
 
+/// What a SCENE argument may name, shown in `--help` of every command that reads one.
+pub const SCENE_HELP: &str = "Scene file: TOML, Maya ASCII (.ma), Arnold (.ass, .ass.gz), pbrt (.pbrt), USD \
+(.usda, .usdc, .usdz, .usd), or raw strands or meshes (.hair, .ply, .obj); or a reference scene directory \
+of scripts/gen_scenes.py; the built-in demo scene when omitted";
+
 /// Reads the scene at `frame` (the demo scene when there is no file), prints the
 /// reader's warnings unless `quiet`, and applies the overrides.
 pub fn load(scene: Option<&Path>, o: &Overrides, frame: Option<u32>, quiet: bool) -> Result<Description> {

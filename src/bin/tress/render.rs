@@ -21,9 +21,7 @@ use tress::world::World;
 /// The arguments of `tress render`.
 #[derive(clap::Args)]
 pub struct RenderArgs {
-    /// Scene file: TOML, Maya ASCII (.ma), Arnold (.ass), pbrt-v4 (.pbrt) or USD text (.usda), or a
-    /// reference scene directory of scripts/gen_scenes.py; the built-in demo scene when
-    /// omitted.
+    #[arg(help = crate::options::SCENE_HELP)]
     scene: Option<PathBuf>,
     #[command(flatten)]
     overrides: Overrides,
