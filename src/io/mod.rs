@@ -272,6 +272,18 @@ fn image_kind(path: &Path) -> Option<&'static str> {
     })
 }
 
+/// The bytes of base64 `text` in the standard alphabet (RFC 4648), its `=` padding
+/// optional: XGen's spline groups and Arnold's `b64` arrays write it both ways.
+pub(crate) fn decode_base64(text: &str) -> Result<Vec<u8>, base64::DecodeError> {
+    use base64::engine::{DecodePaddingMode, GeneralPurpose, GeneralPurposeConfig};
+    use base64::Engine;
+    const BASE64: GeneralPurpose = GeneralPurpose::new(
+        &base64::alphabet::STANDARD,
+        GeneralPurposeConfig::new().with_decode_padding_mode(DecodePaddingMode::Indifferent),
+    );
+    BASE64.decode(text)
+}
+
 /// Writes `bytes` to `path` atomically: to a temporary file in the same directory (so the
 /// rename stays on one file system), synced, then renamed over `path`, so a crash or a
 /// full disk never leaves a half-written file under the final name.

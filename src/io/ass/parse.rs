@@ -4,8 +4,10 @@
 //! (and on the lines after it that start with a number, as a `matrix` writes its rows),
 //! or an array `count keys TYPE` followed by count × keys elements of TYPE, on as many
 //! lines as they take. Tokens are numbers, quoted strings and bare words (`on`, node names,
-//! enums). Every malformed input is an error naming the line; counts are checked against
-//! the bytes left before anything is allocated for them.
+//! enums). An array's type may carry an encoding prefix (`b85VECTOR`, `b64VECTOR`): its
+//! elements are then one block of encoded data. Every malformed input is an
+//! error naming the line; counts are checked against the bytes left before anything is
+//! allocated for them.
 
 use std::fmt;
 
@@ -320,9 +322,9 @@ impl<'a> Parser<'a> {
                 }
             }
             if let Some(header) = array_header(&head) {
-                let (count, keys, ty, encoded) =
+                let (count, keys, ty, encoding) =
                     header.map_err(|m| ParseError { line, message: format!("`{name}`: {m}") })?;
-                return self.array(name, line, count, keys, &ty, encoded);
+                return self.array(name, line, count, keys, &ty, encoding);
             }
         }
         let mut values = Vec::with_capacity(head.len());
@@ -348,7 +350,8 @@ impl<'a> Parser<'a> {
     }
 
     /// An array of `count` × `keys` elements of `ty` after its header, as text values or
-    /// `encoded` in one token.
+    /// in the `encoding` given (one token of `b85` data, or `b64` data on as many lines as
+    /// its length takes).
     fn array(
         &mut self,
         name: String,
@@ -356,7 +359,7 @@ impl<'a> Parser<'a> {
         count: usize,
         keys: usize,
         ty: &str,
-        encoded: bool,
+        encoding: Option<Encoding>,
     ) -> Result<Param, ParseError> {
         let per = components(ty).expect("checked by array_header");
         let too_long = || ParseError {
@@ -364,21 +367,31 @@ impl<'a> Parser<'a> {
             message: format!("`{name}`: an array of {count} × {keys} {ty} holds more values than the file can"),
         };
         let total = count.checked_mul(keys).and_then(|n| n.checked_mul(per)).ok_or_else(too_long)?;
-        if total > self.budget || !encoded && total > self.lx.left() / 2 + 1 {
+        if total > self.budget || encoding.is_none() && total > self.lx.left() / 2 + 1 {
             return Err(too_long());
         }
         self.budget -= total;
         let mut values = Vec::with_capacity(count * per);
-        if encoded {
-            let data = match self.lx.next()? {
-                Some((Tok::Bare(d), _, _)) => d,
-                Some((t, l, _)) => {
-                    return err(l, format!("`{name}`: expected encoded {ty} data, found {}", describe(&t)))
-                }
-                None => return err(self.lx.line, format!("`{name}`: the file ends before its encoded data")),
+        if let Some(encoding) = encoding {
+            // Base64 has a known length (four characters to three bytes, the padding
+            // optional), which Arnold may break over lines; base85 compresses runs, so its
+            // data is the one token.
+            let wanted = match encoding {
+                Encoding::B85 => 1,
+                Encoding::B64 => (encoded::bytes_of(ty, total) * 4).div_ceil(3),
             };
-            let numbers =
-                b85::decode(data, ty, total).map_err(|m| ParseError { line, message: format!("`{name}`: {m}") })?;
+            let mut data = String::new();
+            while data.len() < wanted {
+                match self.lx.next()? {
+                    Some((Tok::Bare(d), _, _)) => data.push_str(d),
+                    Some((t, l, _)) => {
+                        return err(l, format!("`{name}`: expected encoded {ty} data, found {}", describe(&t)))
+                    }
+                    None => return err(self.lx.line, format!("`{name}`: the file ends before its encoded data")),
+                }
+            }
+            let numbers = encoded::decode(&data, encoding, ty, total)
+                .map_err(|m| ParseError { line, message: format!("`{name}`: {m}") })?;
             values.extend(numbers.into_iter().take(count * per).map(Atom::Num));
         } else {
             let mut read = 0;
@@ -414,13 +427,26 @@ fn is_flag(a: &Atom) -> bool {
     matches!(a, Atom::Word(w) if matches!(w.as_str(), "on" | "off" | "true" | "false"))
 }
 
-/// `count keys TYPE` (or `b85TYPE`, encoded) at the start of a value: an array header
-/// (its count, keys, type and whether it is encoded), or why it is a malformed one.
-fn array_header(head: &[Lexed<'_>]) -> Option<Result<(usize, usize, String, bool), String>> {
+/// How an array's elements are written: as text, or encoded.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Encoding {
+    /// `b85TYPE`: Arnold's base 85.
+    B85,
+    /// `b64TYPE`: base64 of the elements' bytes.
+    B64,
+}
+
+/// An array header: its count, keys, element type and encoding.
+type Header = (usize, usize, String, Option<Encoding>);
+
+/// `count keys TYPE` (or `b85TYPE`, `b64TYPE`, encoded) at the start of a value: an array
+/// header, or why it is a malformed one.
+fn array_header(head: &[Lexed<'_>]) -> Option<Result<Header, String>> {
     let [(Tok::Bare(n), _, _), (Tok::Bare(k), _, _), (Tok::Bare(ty), _, _)] = head else { return None };
-    let (encoded, ty) = match ty.strip_prefix("b85") {
-        Some(t) => (true, t),
-        None => (false, *ty),
+    let (encoding, ty) = match (ty.strip_prefix("b85"), ty.strip_prefix("b64")) {
+        (Some(t), _) => (Some(Encoding::B85), t),
+        (_, Some(t)) => (Some(Encoding::B64), t),
+        _ => (None, *ty),
     };
     components(ty)?;
     if n.parse::<f64>().is_err() || k.parse::<f64>().is_err() {
@@ -428,7 +454,7 @@ fn array_header(head: &[Lexed<'_>]) -> Option<Result<(usize, usize, String, bool
     }
     let whole = |s: &str| s.parse::<u64>().ok().and_then(|x| usize::try_from(x).ok());
     Some(match (whole(n), whole(k)) {
-        (Some(n), Some(k)) => Ok((n, k.max(1), ty.to_string(), encoded)),
+        (Some(n), Some(k)) => Ok((n, k.max(1), ty.to_string(), encoding)),
         _ => Err(format!("array counts `{n} {k}` are not whole numbers")),
     })
 }
@@ -442,14 +468,28 @@ fn describe(t: &Tok<'_>) -> String {
     }
 }
 
-/// Arnold's encoding of arrays in `.ass` files (`b85` types): each 32-bit word in five
-/// characters of base 85 from `$` (0) to `x` (84), most significant first; `z` is the word
-/// 0 and `y` the word of 1.0f, and `!` followed by a word and a count is that word repeated
-/// count times; the last one to three bytes take one character more than bytes. Floats are
-/// the words' bits; bytes pack four to a word, lowest first;
-/// integer arrays start with a letter telling their packing: `B` 8 bits, `C` 16, `E` 32,
-/// `F` three 10-bit values to a word, lowest first.
-mod b85 {
+/// Arnold's encodings of arrays in `.ass` files. Both give 32-bit words, from which every
+/// type is read the same way: floats are the words' bits; bytes pack four to a word,
+/// lowest first (memory order on the little-endian machines Arnold runs on).
+///
+/// - `b85`: each word in five characters of base 85 from `$` (0) to `x` (84), most
+///   significant first; `z` is the word 0 and `y` the word of 1.0f, and `!` followed by a
+///   word and a count is that word repeated count times; the last one to three bytes take
+///   one character more than bytes. Integer arrays start with a letter telling their
+///   packing: `B` 8 bits, `C` 16, `E` 32, `F` three 10-bit values to a word, lowest first.
+/// - `b64`: the elements' bytes as they lie in memory (little-endian, an integer in 32
+///   bits, a byte or boolean in one) in standard base64 (RFC 4648), the padding optional.
+mod encoded {
+    use super::Encoding;
+
+    /// The bytes `total` values of `ty` take in memory (as `b64` writes them).
+    pub(super) fn bytes_of(ty: &str, total: usize) -> usize {
+        match ty {
+            "BYTE" | "BOOLEAN" => total,
+            _ => total.saturating_mul(4),
+        }
+    }
+
     /// The word of five base-85 digits.
     fn word(d: &[u8]) -> Result<u32, String> {
         let mut v: u64 = 0;
@@ -462,8 +502,8 @@ mod b85 {
         u32::try_from(v).map_err(|_| "encoded data holds a word past 32 bits".to_string())
     }
 
-    /// The words of `data`, at most `max` of them.
-    fn words(data: &[u8], max: usize) -> Result<Vec<u32>, String> {
+    /// The words of `b85` `data`, at most `max` of them.
+    fn b85_words(data: &[u8], max: usize) -> Result<Vec<u32>, String> {
         let mut out = Vec::new();
         let mut i = 0;
         let full = |out: &Vec<u32>, n: usize| match out.len().checked_add(n) {
@@ -513,12 +553,31 @@ mod b85 {
         Ok(out)
     }
 
-    /// The `total` values of an array of `ty` encoded in `data`.
-    pub(super) fn decode(data: &str, ty: &str, total: usize) -> Result<Vec<f64>, String> {
-        let data = data.as_bytes();
+    /// The little-endian words of `b64` `data`, which must hold `bytes` bytes.
+    fn b64_words(data: &str, bytes: usize) -> Result<Vec<u32>, String> {
+        let raw = crate::io::decode_base64(data).map_err(|e| format!("encoded data is not base64: {e}"))?;
+        if raw.len() != bytes {
+            return Err(format!("encoded data holds {} bytes where the array declares {bytes}", raw.len()));
+        }
+        Ok(raw
+            .chunks(4)
+            .map(|c| {
+                let mut w = [0u8; 4];
+                w[..c.len()].copy_from_slice(c);
+                u32::from_le_bytes(w)
+            })
+            .collect())
+    }
+
+    /// The `total` values of an array of `ty` in `data`, encoded by `encoding`.
+    pub(super) fn decode(data: &str, encoding: Encoding, ty: &str, total: usize) -> Result<Vec<f64>, String> {
+        let words_of = |data: &str, max: usize| match encoding {
+            Encoding::B85 => b85_words(data.as_bytes(), max),
+            Encoding::B64 => b64_words(data, bytes_of(ty, total)),
+        };
         let out: Vec<f64> = match ty {
             "FLOAT" | "VECTOR" | "VECTOR2" | "POINT" | "POINT2" | "RGB" | "RGBA" | "MATRIX" => {
-                let w = words(data, total)?;
+                let w = words_of(data, total)?;
                 let mut out = Vec::with_capacity(w.len());
                 for x in w {
                     let f = f32::from_bits(x);
@@ -529,17 +588,26 @@ mod b85 {
                 }
                 out
             }
-            "BYTE" | "BOOLEAN" => bytes(&words(data, total.div_ceil(4))?, 8),
+            "BYTE" | "BOOLEAN" => fields(&words_of(data, total.div_ceil(4))?, 8),
             "INT" | "UINT" => {
-                let Some((&packing, rest)) = data.split_first() else { return Err("encoded data is empty".into()) };
-                let (bits, per_word) = match packing {
-                    b'B' => (8, 4),
-                    b'C' => (16, 2),
-                    b'E' => (32, 1),
-                    b'F' => (10, 3),
-                    other => return Err(format!("integer packing `{}` is not one tress reads", other as char)),
+                // `b85` integers start with their packing; `b64` ones are 32-bit words.
+                let (bits, words) = match encoding {
+                    Encoding::B64 => (32, words_of(data, total)?),
+                    Encoding::B85 => {
+                        let Some((&packing, rest)) = data.as_bytes().split_first() else {
+                            return Err("encoded data is empty".into());
+                        };
+                        let (bits, per_word) = match packing {
+                            b'B' => (8, 4),
+                            b'C' => (16, 2),
+                            b'E' => (32, 1),
+                            b'F' => (10, 3),
+                            other => return Err(format!("integer packing `{}` is not one tress reads", other as char)),
+                        };
+                        (bits, b85_words(rest, total.div_ceil(per_word))?)
+                    }
                 };
-                let mut v = bytes(&words(rest, total.div_ceil(per_word))?, bits);
+                let mut v = fields(&words, bits);
                 if ty == "INT" && bits == 32 {
                     v.iter_mut().for_each(|x| *x = f64::from(*x as u32 as i32));
                 }
@@ -554,7 +622,7 @@ mod b85 {
     }
 
     /// The `bits`-wide fields of each word, lowest first (as many as fit).
-    fn bytes(words: &[u32], bits: u32) -> Vec<f64> {
+    fn fields(words: &[u32], bits: u32) -> Vec<f64> {
         let per = 32 / bits;
         let mask = if bits == 32 { u32::MAX } else { (1 << bits) - 1 };
         words.iter().flat_map(|&w| (0..per).map(move |k| f64::from((w >> (k * bits)) & mask))).collect()

@@ -37,6 +37,39 @@ fn values_are_plain_lists_inline_arrays_matrix_rows_and_encoded_arrays() {
     assert_eq!(m.param("uvlist").unwrap().values, uv);
 }
 
+/// Standard base64 of `bytes`, without padding (as Arnold writes an array whose bytes do
+/// not fill the last group).
+fn base64(bytes: &[u8]) -> String {
+    use base64::Engine;
+    base64::engine::general_purpose::STANDARD_NO_PAD.encode(bytes)
+}
+
+#[test]
+fn b64_arrays_are_the_elements_bytes_over_as_many_lines_as_they_take() {
+    let floats: Vec<f32> = vec![-0.5, 0.5, 0.5, 0.25, -1.0, 1e-3];
+    let data = base64(&floats.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>());
+    let (first, rest) = data.split_at(10);
+    let ints = base64(&[7u32, 0, 123_456].iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>());
+    let signed = base64(&(-3i32).to_le_bytes());
+    let text = format!(
+        "polymesh\n{{\n name m\n vlist 2 1 b64POINT\n {first}\n {rest}\n\n vidxs 3 1 b64UINT\n {ints}\n\
+          shidxs 1 1 b64INT {signed}\n flags 3 1 b64BYTE {}\n smoothing on\n}}\n",
+        base64(&[1, 0, 255]),
+    );
+    let nodes = parse(&text).unwrap();
+    let m = &nodes[0];
+    let nums = |name: &str| m.param(name).unwrap().values.clone();
+    assert_eq!(nums("vlist"), floats.iter().map(|&x| Atom::Num(f64::from(x))).collect::<Vec<_>>());
+    assert_eq!(nums("vidxs"), [7.0, 0.0, 123456.0].map(Atom::Num).to_vec());
+    assert_eq!(nums("shidxs"), vec![Atom::Num(-3.0)]);
+    assert_eq!(nums("flags"), [1.0, 0.0, 255.0].map(Atom::Num).to_vec());
+    // The parameter after the data is read as one.
+    assert_eq!(nums("smoothing"), vec![Atom::Word("on".into())]);
+    // Padded data reads the same.
+    let padded = parse(&format!("polymesh\n{{\n shidxs 1 1 b64INT {signed}==\n}}\n")).unwrap();
+    assert_eq!(padded[0].param("shidxs").unwrap().values, vec![Atom::Num(-3.0)]);
+}
+
 #[test]
 fn malformed_text_is_an_error_naming_the_line() {
     for (text, line, what) in [
@@ -49,6 +82,11 @@ fn malformed_text_is_an_error_naming_the_line() {
         ("{ }\n", 1, "expected a node type"),
         ("polymesh\n{\n uvlist 2 1 b85VECTOR2 z\n}\n", 3, "declares 4"),
         ("polymesh\n{\n nsides 2 1 b85UINT Q$$$$$\n}\n", 3, "packing"),
+        // Data short of the twelve bytes declared; then a byte too many.
+        ("polymesh\n{\n vidxs 3 1 b64UINT AAAAAAAAAAA\n}\n", 4, "expected encoded UINT data, found `}`"),
+        ("polymesh\n{\n flags 2 1 b64BYTE AAAA\n}\n", 3, "holds 3 bytes where the array declares 2"),
+        ("polymesh\n{\n vlist 1 1 b64FLOAT AA*AAAAA\n}\n", 3, "not base64"),
+        ("polymesh\n{\n vlist 1 1 b64FLOAT AAAA\n", 4, "ends before its encoded data"),
     ] {
         let e = error(text);
         assert!(e.starts_with("t.ass") && e.contains(&format!("line {line}")) && e.contains(what), "{text:?}: {e}");

@@ -594,13 +594,7 @@ fn floats(bytes: &[u8], what: &str) -> Result<Vec<f32>, String> {
 /// Decodes a group's base64 text (RFC 4648, standard alphabet), with or without its `=`
 /// padding.
 fn decode_base64(text: &str) -> Result<Vec<u8>, String> {
-    use base64::engine::{DecodePaddingMode, GeneralPurpose, GeneralPurposeConfig};
-    use base64::Engine;
-    const BASE64: GeneralPurpose = GeneralPurpose::new(
-        &base64::alphabet::STANDARD,
-        GeneralPurposeConfig::new().with_decode_padding_mode(DecodePaddingMode::Indifferent),
-    );
-    BASE64.decode(text).map_err(|e| format!("a group is not base64: {e}"))
+    crate::io::decode_base64(text).map_err(|e| format!("a group is not base64: {e}"))
 }
 
 #[cfg(test)]
