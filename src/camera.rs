@@ -1,7 +1,9 @@
-//! The camera: a pinhole (perspective) or an orthographic projection.
+//! The camera: a pinhole (perspective) or an orthographic projection, seeing all of its
+//! screen or a window of it (an off-centre or resized part, as a shifted lens or a crop
+//! gives).
 
 use crate::math::{Ray, RayCone};
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 /// How the camera projects the scene onto its image.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,6 +34,10 @@ pub struct Camera {
     up: Vec3,
     /// Parallel rays from a window instead of a pinhole.
     orthographic: bool,
+    /// The part of the screen the image sees: its centre and half size, in screen
+    /// coordinates where −1..1 spans the whole screen on each axis (`right`, `up`).
+    window_centre: Vec2,
+    window_half: Vec2,
     width: u32,
     height: u32,
     /// The footprint of every camera ray cone: a pixel's angle for a pinhole, a pixel's size
@@ -66,6 +72,11 @@ pub enum CameraError {
     /// Clipping distances that leave nothing to see.
     #[error("camera clip [{0}, {1}] is not a range from a finite near distance >= 0 to a larger far one")]
     BadClip(f32, f32),
+    /// A screen window without a finite positive size on each axis.
+    #[error(
+        "camera screen window {0} to {1} is not a window from a finite lower-left corner to a finite upper-right one"
+    )]
+    BadWindow(Vec2, Vec2),
 }
 
 impl Camera {
@@ -106,6 +117,8 @@ impl Camera {
             right: right * half_w,
             up: true_up * half_h,
             orthographic,
+            window_centre: Vec2::ZERO,
+            window_half: Vec2::ONE,
             width,
             height,
             pixel_cone: if orthographic {
@@ -126,6 +139,25 @@ impl Camera {
             return Err(CameraError::BadClip(near, far));
         }
         Ok(Camera { near, far, ..self })
+    }
+
+    /// This camera's image seeing only the window from `min` to `max` of its screen, in
+    /// screen coordinates where −1..1 spans the whole screen on each axis (Arnold's
+    /// `screen_window_min`/`max`): a window off the centre shifts the view as a shifted lens
+    /// does (the view direction, and so the perspective, is kept), a smaller one magnifies.
+    pub fn windowed(self, min: Vec2, max: Vec2) -> Result<Camera, CameraError> {
+        let size = max - min;
+        if !(min.is_finite() && max.is_finite() && size.is_finite() && size.min_element() > 0.0) {
+            return Err(CameraError::BadWindow(min, max));
+        }
+        let half = 0.5 * size;
+        // A pixel now spans `half.y` of what it did.
+        let cone = self.pixel_cone;
+        let pixel_cone = match self.orthographic {
+            true => RayCone { width: cone.width * half.y, spread: 0.0 },
+            false => RayCone { width: 0.0, spread: (cone.spread.tan() * half.y).atan() },
+        };
+        Ok(Camera { window_centre: 0.5 * (min + max), window_half: half, pixel_cone, ..self })
     }
 
     /// How far along a camera ray of direction `dir` it starts: where it crosses the near
@@ -158,8 +190,8 @@ impl Camera {
 
     /// The ray through image position (`x`, `y`) in pixels from the top-left corner.
     pub fn ray(&self, x: f32, y: f32) -> Ray {
-        let sx = 2.0 * x / self.width as f32 - 1.0;
-        let sy = 1.0 - 2.0 * y / self.height as f32;
+        let sx = self.window_centre.x + self.window_half.x * (2.0 * x / self.width as f32 - 1.0);
+        let sy = self.window_centre.y + self.window_half.y * (1.0 - 2.0 * y / self.height as f32);
         let offset = self.right * sx + self.up * sy;
         let (origin, dir) = if self.orthographic {
             (self.eye + offset, self.forward)
@@ -207,6 +239,32 @@ mod tests {
                 clipped.clone().clipped(near, far).unwrap_err().to_string(),
                 CameraError::BadClip(near, far).to_string()
             );
+        }
+    }
+
+    #[test]
+    fn a_windowed_camera_sees_through_its_image_centre_what_the_whole_screen_shows_at_the_window_centre() {
+        let eye = Vec3::new(1.0, 2.0, 3.0);
+        let (w, h) = (40, 30);
+        for projection in [PERSPECTIVE_60, Projection::Orthographic { height: 2.0 }] {
+            let whole = Camera::new(eye, Vec3::new(4.0, 2.0, -7.0), Vec3::Y, projection, w, h).unwrap();
+            // The window −0.2..1 across, −1..0.5 up: centred on screen (0.4, −0.25), which the
+            // whole screen shows at pixel (0.7 w, 0.625 h) from the top left.
+            let (min, max) = (Vec2::new(-0.2, -1.0), Vec2::new(1.0, 0.5));
+            let shifted = whole.clone().windowed(min, max).unwrap();
+            let (a, b) = (shifted.ray(20.0, 15.0), whole.ray(28.0, 18.75));
+            assert!((a.dir - b.dir).length() < 1e-6 && (a.origin - b.origin).length() < 1e-5, "{a:?} {b:?}");
+            // Its corners are the window's: the top-left one is screen (−0.2, 0.5).
+            let (a, b) = (shifted.ray(0.0, 0.0), whole.ray(16.0, 7.5));
+            assert!((a.dir - b.dir).length() < 1e-6 && (a.origin - b.origin).length() < 1e-5, "{a:?} {b:?}");
+            // A pixel is 0.75 of a whole-screen pixel high.
+            let (cw, cs) = (shifted.pixel_cone(), whole.pixel_cone());
+            assert!((cw.width - 0.75 * cs.width).abs() < 1e-6);
+            assert!((cw.spread.tan() - 0.75 * cs.spread.tan()).abs() < 1e-6);
+            for (min, max) in [(Vec2::ONE, Vec2::ONE), (Vec2::ZERO, Vec2::new(1.0, -1.0)), (Vec2::NAN, Vec2::ONE)] {
+                let e = whole.clone().windowed(min, max).unwrap_err();
+                assert_eq!(e.to_string(), CameraError::BadWindow(min, max).to_string());
+            }
         }
     }
 

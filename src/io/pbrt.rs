@@ -7,7 +7,8 @@
 //! `AttributeBegin`/`End` (and the older `TransformBegin`/`End`), `Include`/`Import`
 //! (paths relative to the first file's directory, as pbrt resolves them), `Camera
 //! "perspective"` (`fov` spanning the shorter image side, or the window `screenwindow` or
-//! `frameaspectratio` give, for the file's image size and one given later alike) and
+//! `frameaspectratio` give, for the file's image size and one given later alike; a window
+//! off centre shifts the view) and
 //! `"orthographic"` (the same window, in camera space units), `Film`
 //! (`xresolution`, `yresolution`), `Sampler` (`pixelsamples`), `Integrator`, `LightSource` `distant`,
 //! `infinite`, `point` and `spot`, `Material` and `MakeNamedMaterial`/`NamedMaterial`,
@@ -367,6 +368,9 @@ struct Parser {
     /// (`screenwindow`, `frameaspectratio`), in units of the tangent of half `fov`; else
     /// the window is 1 on the shorter image side, whatever the image size.
     screen: Option<[f64; 2]>,
+    /// The centre of the camera's screen window in units of its half width and height
+    /// (`screenwindow`; 0 when centred).
+    screen_centre: [f64; 2],
     /// pbrt's imaging ratio (Film `iso` / 100 × the camera's exposure time × v3's Film
     /// `scale`): the factor between scene radiance and pixel values.
     image_scale: f64,
@@ -404,6 +408,7 @@ impl Parser {
             orthographic: false,
             fov: 90.0,
             screen: None,
+            screen_centre: [0.0, 0.0],
             image_scale: 1.0,
             file_name: String::new(),
             light_at: Vec::new(),
@@ -583,6 +588,7 @@ impl Parser {
                         return Err((line, format!("fov {} is not between 0 and 180", self.fov)));
                     }
                 }
+                self.screen_centre = [0.0, 0.0];
                 self.screen = self.screen_window(&p)?;
                 if !self.aperture().iter().all(|a| a.is_finite() && *a > 0.0) {
                     return Err((line, "the camera's screen window is beyond single precision".into()));
@@ -712,8 +718,7 @@ impl Parser {
     /// The camera's screen window as half its width and height, when `p` sets one:
     /// `screenwindow` (x min, x max, y min, y max), else `frameaspectratio` f, whose
     /// window is [-f, f] × [-1, 1] when f > 1 and [-1, 1] × [-1/f, 1/f] otherwise, as pbrt
-    /// builds it. tress's camera looks through the window's centre, so an off-centre
-    /// window is drawn centred, with a warning.
+    /// builds it. The centre of a `screenwindow` goes to `screen_centre`.
     fn screen_window(&mut self, p: &Params) -> Res<Option<[f64; 2]>> {
         let line = p.line;
         if let Some(w) = p.floats("screenwindow") {
@@ -723,10 +728,7 @@ impl Parser {
             if !(w.iter().all(|v| v.is_finite()) && x1 > x0 && y1 > y0) {
                 return Err((line, format!("screenwindow [{x0} {x1} {y0} {y1}] is not a window")));
             }
-            if (x0 + x1).abs() > 1e-6 * (x1 - x0) || (y0 + y1).abs() > 1e-6 * (y1 - y0) {
-                self.warnings
-                    .insert("camera `screenwindow` off centre: drawn centred (the window's size is kept)".into());
-            }
+            self.screen_centre = [(x0 + x1) / (x1 - x0), (y0 + y1) / (y1 - y0)];
             return Ok(Some([0.5 * (x1 - x0), 0.5 * (y1 - y0)]));
         }
         if !p.has("frameaspectratio") {
@@ -1142,6 +1144,10 @@ impl Parser {
                 vfov: film.vfov(w, h),
                 projection,
                 film: Some(film),
+                window: {
+                    let centre = glam::DVec2::from(self.screen_centre).as_vec2();
+                    crate::scene::FULL_SCREEN.map(|corner| corner + centre)
+                },
                 ..Default::default()
             });
             // pbrt shows camera +x on the right of the image; a right-handed camera shows

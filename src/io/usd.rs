@@ -372,7 +372,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
                 prim.path()
             ));
         }
-        let (camera, size) = camera::read_camera(prim, transform, time, out.resolution, notes)
+        let (camera, size) = camera::read_camera(prim, transform, time, out.resolution)
             .map_err(|e| e.context(format!("{}", prim.path())))?;
         out.camera = Some(camera);
         out.resolution = Some(size);

@@ -273,14 +273,19 @@ pub fn prepare_owned(mut desc: Description) -> Result<(World, PrepareTimes), Pre
 
 /// The camera a scene's camera description gives on a film of `width` x `height`
 /// pixels: its projection (orthographic when the description has an orthographic height,
-/// else perspective with the vertical field of view the film's aspect ratio gives) and its
-/// clipping range.
+/// else perspective with the vertical field of view the film's aspect ratio gives), its
+/// screen window and its clipping range.
 pub fn camera(c: &CameraDesc, width: u32, height: u32) -> Result<Camera, CameraError> {
     let projection = match c.ortho_height_for(width, height) {
         Some(height) => Projection::Orthographic { height },
         None => Projection::Perspective { vfov_deg: c.vfov_for(width, height) },
     };
-    Camera::new(c.eye, c.target, c.up, projection, width, height)?.clipped(c.clip[0], c.clip[1])
+    let camera = Camera::new(c.eye, c.target, c.up, projection, width, height)?;
+    let camera = match c.window == crate::scene::FULL_SCREEN {
+        true => camera,
+        false => camera.windowed(c.window[0], c.window[1])?,
+    };
+    camera.clipped(c.clip[0], c.clip[1])
 }
 
 fn prepare_taking(desc: &Description, taken: &mut [Option<StrandSet>]) -> Result<(World, PrepareTimes), PrepareError> {

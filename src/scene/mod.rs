@@ -14,7 +14,7 @@ use crate::error::PrepareError;
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::hair_system::{FollicleParams, Guides, HairColors, HairSystem};
 use crate::world::RenderSettings;
-use glam::{Affine3A, Vec3};
+use glam::{Affine3A, Vec2, Vec3};
 use std::path::PathBuf;
 
 /// Radiance of the uniform sky lighting a scene that brings no environment of its own
@@ -42,7 +42,15 @@ pub struct CameraDesc {
     /// Start and End, Maya's near and far clip planes): nothing nearer or farther is seen.
     /// `[0, inf]` clips nothing.
     pub clip: [f32; 2],
+    /// The part of the screen the image sees, lower-left and upper-right corners, in screen
+    /// coordinates where −1..1 spans the whole field of view (or orthographic window) on
+    /// each axis: [`FULL_SCREEN`] sees it all; an off-centre window shifts the view as a
+    /// shifted lens does (Arnold's `screen_window_min`/`max`, USD's aperture offsets).
+    pub window: [Vec2; 2],
 }
+
+/// The whole screen, as [`CameraDesc::window`].
+pub const FULL_SCREEN: [Vec2; 2] = [Vec2::NEG_ONE, Vec2::ONE];
 
 impl Default for CameraDesc {
     /// Looking at the origin from 5 units along +z, y up, 35 degrees.
@@ -55,6 +63,7 @@ impl Default for CameraDesc {
             projection: CameraProjection::Perspective,
             film: None,
             clip: [0.0, f32::INFINITY],
+            window: FULL_SCREEN,
         }
     }
 }

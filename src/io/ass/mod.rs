@@ -9,9 +9,11 @@
 //!   the camera (else `--camera NAME`, else the first camera node).
 //! - `persp_camera`: `matrix` (Arnold's row vectors: the translation is the last row), the
 //!   camera looking down its local −Z with +Y up; `fov`, Arnold's horizontal field of view
-//!   fitted to the image width; `near_clip`, `far_clip`. A `screen_window_min`/`max` other
-//!   than −1..1 is reported, not applied. `ortho_camera`: its screen window, in world units,
-//!   spans the image width.
+//!   fitted to the image width; `near_clip`, `far_clip`; `screen_window_min`/`max`, the
+//!   part of the screen the image sees (−1..1 on each axis is the whole field of view), and
+//!   `lens_shift`, which moves that window. `ortho_camera`: its screen window, in world
+//!   units, on the camera's x axis and the same in units of the image's height over its
+//!   width on its y axis.
 //! - lights, by Arnold's conventions ([`super::arnold_light`]): `distant_light` (shining
 //!   along its local −Z, `angle`), `point_light` (`position` or `matrix`, `radius`,
 //!   `normalize`), `quad_light` (`vertices`, one-sided towards the side its vertices wind
@@ -37,8 +39,8 @@ use crate::geometry::subdivision::FaceBudget;
 use crate::io::arnold_hair::{ArnoldShader, StandardHair};
 use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
 use crate::light::Light;
-use crate::scene::{CameraDesc, CameraProjection, Film, FilmFit, LightSource};
-use glam::{Affine3A, DMat4, Vec3};
+use crate::scene::{CameraDesc, CameraProjection, LightSource};
+use glam::{Affine3A, DMat4, Vec2, Vec3};
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 
@@ -187,7 +189,8 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
 
 /// The parameters read of each node type (others are reported).
 const OPTIONS_READ: [&str; 6] = ["xres", "yres", "camera", "AA_samples", "GI_diffuse_depth", "GI_specular_depth"];
-const CAMERA_READ: [&str; 6] = ["matrix", "fov", "near_clip", "far_clip", "screen_window_min", "screen_window_max"];
+const CAMERA_READ: [&str; 7] =
+    ["matrix", "fov", "near_clip", "far_clip", "screen_window_min", "screen_window_max", "lens_shift"];
 const LIGHT_READ: [&str; 11] = [
     "matrix",
     "color",
@@ -373,27 +376,25 @@ impl Reader<'_> {
             }
         };
         let (min, max) = (window("screen_window_min", -1.0)?, window("screen_window_max", 1.0)?);
+        // `lens_shift` moves the frame's centre in screen units, +1 to the right or bottom
+        // edge (Arnold user guide, "Perspective Camera"); without lens distortion that is the
+        // window moved the other way up.
+        let shift = match c.kind.as_str() {
+            "persp_camera" => window("lens_shift", 0.0)?,
+            _ => [0.0, 0.0],
+        };
+        let shift = Vec2::new(shift[0], -shift[1]);
+        let screen = [Vec2::from(min) + shift, Vec2::from(max) + shift];
         let (projection, film) = match c.kind.as_str() {
             "persp_camera" => {
-                if min != [-1.0, -1.0] || max != [1.0, 1.0] {
-                    self.notes.note("perspective camera screen windows other than -1..1: not applied", c);
-                }
                 let fov = num32(c, "fov", 54.43)?;
                 let film = super::usd::camera::arnold_fov_film(fov, aspect)
                     .map_err(|e| (c.line, format!("camera `{}` `fov` {e}", c.name)))?;
                 (CameraProjection::Perspective, film)
             }
             "ortho_camera" => {
-                if min[0] + max[0] != 0.0 || min[1] + max[1] != 0.0 {
-                    self.notes.note("orthographic screen windows off the camera's axis: drawn centred", c);
-                }
-                // The window's x extent spans the image width; its height follows the image.
-                let width = max[0] - min[0];
-                if !(width.is_finite() && width > 0.0) {
-                    return Err((c.line, format!("camera `{}`: its screen window has no width", c.name)));
-                }
-                let film = Film { aperture: [width, width * aspect], fit: FilmFit::Horizontal };
-                (CameraProjection::Orthographic { height: width * aspect }, film)
+                let film = super::usd::camera::ARNOLD_ORTHO_FILM;
+                (CameraProjection::Orthographic { height: film.fitted_height(w, h) }, film)
             }
             other => {
                 self.notes.note(format!("`{other}` cameras: drawn as a perspective camera of their fov"), c);
@@ -401,6 +402,9 @@ impl Reader<'_> {
                 (CameraProjection::Perspective, super::usd::camera::arnold_fov_film(fov, aspect).expect("clamped"))
             }
         };
+        if !(screen[0].is_finite() && screen[1].is_finite() && (screen[1] - screen[0]).min_element() > 0.0) {
+            return Err((c.line, format!("camera `{}`: its screen window has no width or no height", c.name)));
+        }
         // Arnold's defaults: clipping from 1e-4 to 1e30, along the view.
         let (near, far) = (num32(c, "near_clip", 1e-4)?, num32(c, "far_clip", 1e30)?);
         if !(near >= 0.0 && far > near) {
@@ -419,6 +423,7 @@ impl Reader<'_> {
             projection,
             film: Some(film),
             clip: [near * stretch, far * stretch],
+            window: screen,
         });
         Ok(())
     }

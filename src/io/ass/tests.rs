@@ -114,6 +114,25 @@ fn options_set_the_image_samples_depth_and_camera() {
 }
 
 #[test]
+fn screen_windows_and_lens_shifts_move_the_image_window() {
+    let cam = |kind: &str, params: &str| {
+        let s = scene(&format!("options\n{{\n xres 200\n yres 100\n}}\n{kind}\n{{\n name c\n{params}}}\n"));
+        s.imported.camera.unwrap()
+    };
+    let c = cam("persp_camera", " screen_window_min -0.2 -0.2\n screen_window_max 1 1\n");
+    assert_eq!(c.window, [Vec2::splat(-0.2), Vec2::ONE]);
+    // +1 across moves the frame's centre to the right edge, +1 up to the bottom edge.
+    let c = cam("persp_camera", " lens_shift 0.5 0.25\n");
+    assert_eq!(c.window, [Vec2::new(-0.5, -1.25), Vec2::new(1.5, 0.75)]);
+    // Orthographic: a screen 2 units wide, its height following the image, seen through
+    // its window (in scene units across).
+    let c = cam("ortho_camera", " screen_window_min -15 -5\n screen_window_max 15 25\n");
+    assert_eq!((c.window, c.ortho_height_for(200, 100)), ([Vec2::new(-15.0, -5.0), Vec2::new(15.0, 25.0)], Some(1.0)));
+    let e = error("persp_camera\n{\n name c\n screen_window_min 1 0\n screen_window_max 1 1\n}\n");
+    assert!(e.contains("no width or no height"), "{e}");
+}
+
+#[test]
 fn lights_emit_intensity_times_two_to_the_exposure() {
     let s = scene(
         "distant_light\n{\n name d\n intensity 3\n exposure 2\n color 1 0.5 0\n matrix 1 0 0 0 0 0 -1 0 0 1 0 0 0 0 0 1\n}\n\

@@ -1660,7 +1660,16 @@ impl<'g> Reader<'g> {
                 format!("camera {}: clip planes {near} and {far} are beyond single precision", node.name),
             ));
         }
-        self.out.camera = Some(CameraDesc { eye, target, up, vfov, projection, film: Some(film), clip });
+        self.out.camera = Some(CameraDesc {
+            eye,
+            target,
+            up,
+            vfov,
+            projection,
+            film: Some(film),
+            clip,
+            window: crate::scene::FULL_SCREEN,
+        });
         Ok(())
     }
 

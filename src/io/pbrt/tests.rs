@@ -499,11 +499,14 @@ fn the_field_of_view_spans_the_shorter_side_of_any_image_size() {
         assert!((c.vfov_for(w, h) - want).abs() < 1e-3, "{w}x{h}: {} {want}", c.vfov_for(w, h));
     }
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
-    // A frame aspect ratio of 1/2 is that window too; an off-centre window is said.
+    // A frame aspect ratio of 1/2 is that window too; an off-centre window shifts the
+    // view by its centre over its half size: [0, 2] across is a half width to the right.
     let c = camera("\"float frameaspectratio\" 0.5").camera.unwrap();
     assert!((c.vfov_for(100, 200) - tall).abs() < 1e-3, "{}", c.vfov_for(100, 200));
-    let w = camera("\"float screenwindow\" [0 2 -1 1]").warnings;
-    assert!(w.len() == 1 && w[0].contains("screenwindow") && w[0].contains("centre"), "{w:?}");
+    assert_eq!(c.window, crate::scene::FULL_SCREEN);
+    let s = camera("\"float screenwindow\" [0 2 -1 3]");
+    let corners = [glam::Vec2::new(0.0, -0.5), glam::Vec2::new(2.0, 1.5)];
+    assert!(s.warnings.is_empty() && s.camera.unwrap().window == corners, "{:?}", s.warnings);
     for bad in
         ["\"float screenwindow\" [1 -1 -1 1]", "\"float screenwindow\" [-1 1 -1]", "\"float frameaspectratio\" 0"]
     {

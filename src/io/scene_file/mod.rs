@@ -129,6 +129,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
                 projection,
                 film: None,
                 clip,
+                window: crate::scene::FULL_SCREEN,
             })
         }
         None => None,

@@ -11,11 +11,16 @@
 //! not authored, clips along the view direction, in the camera's units: a scale in the
 //! camera's transform scales the distances with it.
 //!
+//! `horizontalApertureOffset` and `verticalApertureOffset` shift the image window by that
+//! much of the aperture, as Arnold-USD shifts `persp_camera`'s screen window by twice the
+//! offset over the aperture on each axis.
+//!
 //! An orthographic camera (`projection = "orthographic"`) casts parallel rays from a window
-//! centred on the camera: Arnold's `ortho_camera` window `primvars:arnold:screen_window_min`
-//! and `max` (its x extent in scene units spanning the image width, as Arnold spans it) when
-//! authored, else the apertures, which the schema gives for orthographic cameras in tenths
-//! of a scene unit (UsdGeomCamera, "Cameras, Lenses, and Projections"), fitted as above.
+//! on the camera's plane: Arnold's `ortho_camera` window `primvars:arnold:screen_window_min`
+//! and `max` (in scene units on the camera's x axis, as Arnold spans it; on its y axis in
+//! units of the image's height over its width) when authored, else the apertures, which the
+//! schema gives for orthographic cameras in tenths of a scene unit (UsdGeomCamera, "Cameras,
+//! Lenses, and Projections"), fitted as above.
 //!
 //! Arnold's USD writer also stores the `persp_camera` parameters as `primvars:arnold:`
 //! primvars, and Arnold's reader applies them over the schema's attributes: `fov` (Arnold's
@@ -24,10 +29,9 @@
 //! its parent's space), as Arnold places it.
 
 use super::values::{floats, number, short, token, value, vec2, vec3, Res};
-use super::Notes;
-use crate::scene::{CameraDesc, CameraProjection, Film, FilmFit};
+use crate::scene::{CameraDesc, CameraProjection, Film, FilmFit, FULL_SCREEN};
 use crate::world::RenderSettings;
-use glam::{Affine3A, Vec3};
+use glam::{Affine3A, Vec2, Vec3};
 use openusd::sdf;
 use openusd::usd::{Prim, TimeCode};
 
@@ -38,7 +42,6 @@ pub fn read_camera(
     transform: &Affine3A,
     time: TimeCode,
     image: Option<[u32; 2]>,
-    notes: &mut Notes,
 ) -> Res<(CameraDesc, [u32; 2])> {
     let num = |name: &str, d: f64| -> Res<f32> {
         let x = number(value(prim, name, time)?, name)?.unwrap_or(d) as f32;
@@ -53,20 +56,24 @@ pub fn read_camera(
         "orthographic" => true,
         other => anyhow::bail!("`projection` is `{other}`: neither `perspective` nor `orthographic`"),
     };
-    for name in ["horizontalApertureOffset", "verticalApertureOffset"] {
-        if number(value(prim, name, time)?, name)?.is_some_and(|x| x != 0.0) {
-            notes.note("camera aperture offsets: not applied".into(), prim);
-        }
-    }
+    let offset = |name: &str| -> Res<f32> {
+        let x = number(value(prim, name, time)?, name)?.unwrap_or(0.0) as f32;
+        anyhow::ensure!(x.is_finite(), "`{name}` must be finite");
+        Ok(x)
+    };
+    // Twice the offset over the aperture: the screen's −1..1 spans the aperture.
+    let shift =
+        Vec2::new(2.0 * offset("horizontalApertureOffset")? / h_ap, 2.0 * offset("verticalApertureOffset")? / v_ap);
     let [w, h] = image.unwrap_or_else(|| {
         let width = RenderSettings::default().width;
         [width, ((width as f32 * v_ap / h_ap).round() as u32).clamp(1, 16 * width)]
     });
-    let film = if orthographic {
-        ortho_window(prim, time, [h_ap, v_ap], notes)?
+    let (film, window) = if orthographic {
+        ortho_window(prim, time, [h_ap, v_ap])?
     } else {
-        angle_of_view(prim, time, [h_ap, v_ap], focal)?
+        (angle_of_view(prim, time, [h_ap, v_ap], focal)?, FULL_SCREEN)
     };
+    let window = window.map(|corner| corner + shift);
     let vfov = if orthographic { CameraDesc::default().vfov } else { film.vfov(w, h) };
     let projection = match orthographic {
         true => CameraProjection::Orthographic { height: film.fitted_height(w, h) },
@@ -108,7 +115,7 @@ pub fn read_camera(
         "`clippingRange` ({near}, {far}) is not a range from a finite near distance >= 0 to a larger far one"
     );
     let clip = [near, far].map(|d| d * forward.length());
-    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, projection, film: Some(film), clip }, [w, h]))
+    Ok((CameraDesc { eye, target, up: up.normalize(), vfov, projection, film: Some(film), clip, window }, [w, h]))
 }
 
 /// A perspective camera's film: the apertures over the focal length, or Arnold's `fov`.
@@ -136,41 +143,37 @@ pub fn arnold_fov_film(fov: f32, aspect: f32) -> Result<Film, String> {
     Ok(Film { aperture: [h, h * aspect], fit: FilmFit::Horizontal })
 }
 
-/// An orthographic camera's window in scene units: Arnold's screen window when authored,
-/// else the apertures in tenths of a unit. A window off the camera's axis is drawn centred.
-fn ortho_window(prim: &Prim, time: TimeCode, [h_ap, v_ap]: [f32; 2], notes: &mut Notes) -> Res<Film> {
+/// The film of Arnold's `ortho_camera`, whose screen window is in scene units: a screen
+/// two units wide (−1..1) across the image, its height following the image aspect, so that
+/// the window's y is in units of the image's height over its width.
+pub const ARNOLD_ORTHO_FILM: Film = Film { aperture: [2.0, 2.0], fit: FilmFit::Horizontal };
+
+/// An orthographic camera's film and the window of it seen: Arnold's screen window on
+/// [`ARNOLD_ORTHO_FILM`] when authored, else the apertures in tenths of a unit, whole.
+fn ortho_window(prim: &Prim, time: TimeCode, [h_ap, v_ap]: [f32; 2]) -> Res<(Film, [Vec2; 2])> {
     let corner = |name: &str| -> Res<Option<[f32; 2]>> {
         let what = format!("primvars:arnold:{name}");
         vec2(value(prim, &what, time)?, &what)
     };
-    let sides = match (corner("screen_window_min")?, corner("screen_window_max")?) {
-        (None, None) => [h_ap / 10.0, v_ap / 10.0],
+    let (film, window) = match (corner("screen_window_min")?, corner("screen_window_max")?) {
+        (None, None) => (Film { aperture: [h_ap / 10.0, v_ap / 10.0], fit: FilmFit::Horizontal }, FULL_SCREEN),
         (min, max) => {
             // Arnold's defaults: (-1, -1) to (1, 1).
-            let (min, max) = (min.unwrap_or([-1.0, -1.0]), max.unwrap_or([1.0, 1.0]));
-            if min[0] + max[0] != 0.0 || min[1] + max[1] != 0.0 {
-                notes.note("orthographic screen windows off the camera's axis: drawn centred".into(), prim);
-            }
-            // Arnold's screen y runs over the image's height in units of its width, so a
-            // square window (the usual one) spans the image without stretching it; the x
-            // extent is the window's width and its height follows the image aspect.
-            let [dx, dy] = [max[0] - min[0], max[1] - min[1]];
-            if dx != dy {
-                notes.note(
-                    "orthographic screen windows that are not square: their height follows the image aspect".into(),
-                    prim,
-                );
-            }
-            [dx, dx]
+            let (min, max) = (min.map_or(Vec2::NEG_ONE, Vec2::from), max.map_or(Vec2::ONE, Vec2::from));
+            anyhow::ensure!(
+                min.is_finite() && max.is_finite() && (max - min).min_element() > 0.0,
+                "the orthographic screen window {min} to {max} is not a finite window"
+            );
+            (ARNOLD_ORTHO_FILM, [min, max])
         }
     };
     anyhow::ensure!(
-        sides.iter().all(|a| a.is_finite() && *a > 0.0),
+        film.aperture.iter().all(|a| a.is_finite() && *a > 0.0),
         "the orthographic window {} × {} is not a finite positive size",
-        sides[0],
-        sides[1]
+        film.aperture[0],
+        film.aperture[1]
     );
-    Ok(Film { aperture: sides, fit: FilmFit::Horizontal })
+    Ok((film, window))
 }
 
 /// An Arnold parameter Arnold-USD writes as a `primvars:arnold:NAME` primvar: a number, or

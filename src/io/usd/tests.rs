@@ -9,6 +9,7 @@ use crate::io::arnold_hair::StandardHair;
 use crate::io::ImportOptions;
 use crate::light::Light;
 use crate::scene::{HairSource, LightSource, MaterialSource};
+use glam::Vec2;
 use proptest::prelude::*;
 
 const SCENE: &str = r#"#usda 1.0
@@ -1825,14 +1826,21 @@ fn orthographic_cameras_take_arnolds_screen_window_or_the_apertures_in_tenths() 
     assert!(matches!(c.projection, crate::scene::CameraProjection::Orthographic { .. }));
     assert_eq!([w, h], [640, 427]);
     assert!((c.ortho_height_for(w, h).unwrap() - 3.0 * 427.0 / 640.0).abs() < 1e-5);
-    // Arnold's screen window wins: 1.6 units wide, the height following the image (as -r
-    // refits it).
+    // Arnold's screen window wins: the window −0.8..0.8 of a screen 2 units wide, its
+    // height following the image (as -r refits it).
     let window = "    float2[] primvars:arnold:screen_window_max = [(0.8, 0.8)]\n    float2[] primvars:arnold:screen_window_min = [(-0.8, -0.8)]\n";
     let (c, _, warnings) = camera(window);
-    assert!((c.ortho_height_for(200, 100).unwrap() - 0.8).abs() < 1e-6);
+    assert!((c.ortho_height_for(200, 100).unwrap() - 1.0).abs() < 1e-6);
+    assert_eq!(c.window, [Vec2::splat(-0.8), Vec2::splat(0.8)]);
     assert!(warnings.iter().all(|w| !w.contains("orthographic")), "{warnings:?}");
-    let (_, _, warnings) = camera("    float2[] primvars:arnold:screen_window_max = [(1, 0.5)]\n");
-    assert!(warnings.iter().any(|w| w.contains("not square")), "{warnings:?}");
+    // Off the axis and not square, as set (the other corner Arnold's default).
+    let (c, _, _) = camera("    float2[] primvars:arnold:screen_window_max = [(3, 0.5)]\n");
+    assert_eq!(c.window, [Vec2::NEG_ONE, Vec2::new(3.0, 0.5)]);
+    // Perspective aperture offsets shift the window by twice the offset over the aperture.
+    let text = "def Camera \"C\" {\n    float horizontalAperture = 20\n    float verticalAperture = 10\n    \
+                float horizontalApertureOffset = 5\n    float verticalApertureOffset = -1\n}\n";
+    let c = read_with("", text, &ImportOptions::default()).unwrap().camera.unwrap();
+    assert_eq!(c.window, [Vec2::new(-0.5, -1.2), Vec2::new(1.5, 0.8)]);
     // A projection that is neither is refused, named.
     let text = "def Camera \"Top\" {\n    token projection = \"fisheye\"\n}\n";
     let e = read_with("", text, &ImportOptions::default()).unwrap_err().to_string();
