@@ -23,14 +23,24 @@
 //!   fibre's cylinder, a diffuse fibre) of colour `diffuse × diffuse_color`, less as the
 //!   physical fibre alone.
 //!
+//! Arnold 4's `hair` shader (the legacy one older files write: [`Hair`]) is Kajiya-Kay
+//! shading (Arnold 4 node reference, "hair"), which tress's tube model is
+//! ([`crate::shading::tube`]): `rootcolor` at the root blended to `tipcolor` at the tip
+//! (baked into the strands' colours), a highlight of `spec × spec_color` and power
+//! `spec_gloss`. Its second highlight, transmission, `spec_shift`, an `ambdiff` other than 1
+//! (tube shading is the Kajiya-Kay diffuse, Arnold's `ambdiff` 1) and opacity are named
+//! in its warning.
+//!
 //! What tress's model cannot hold (the lobe tints, per-strand randomization, emission,
 //! opacity, ray-type weights, the dropped lobe of a mixed `diffuse`, connected textures)
 //! is named in one warning per shader.
 
+use super::arnold_graph::{self, Pattern};
 use crate::math::Color;
 use crate::shading::hair_bsdf::{
     color_from_sigma_a, sigma_a_from_color, sigma_a_from_melanin, Absorption, HairParams, PhysicalHair,
 };
+use crate::shading::tube::Tube;
 use crate::shading::Material;
 
 /// Smallest roughness the physical material takes.
@@ -126,6 +136,18 @@ pub trait ArnoldShader: Default {
     /// (`shader` names the shader in it; `connected` lists the parameters driven by shading
     /// networks tress does not evaluate, whose own values were used).
     fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>);
+    /// The string parameter named `name`, for shaders that read one (an enum).
+    fn text(&mut self, _name: &str) -> Option<&mut String> {
+        None
+    }
+    /// The colour along a strand that the parameters in `varying` (networks varying along
+    /// it, [`crate::io::arnold_graph`]) give the material's base colour, those parameters
+    /// set to neutral values and taken from `varying`; what is left there is drawn in its
+    /// mean. By default the parameters of [`ArnoldShader::MAPS`] multiply the base colour.
+    fn along(&mut self, varying: &mut Vec<(&'static str, Pattern)>) -> Option<Pattern> {
+        let names: Vec<&str> = Self::MAPS.iter().map(|(n, _)| *n).collect();
+        arnold_graph::mapped(self, varying, &names)
+    }
 }
 
 impl ArnoldShader for StandardHair {
@@ -135,6 +157,15 @@ impl ArnoldShader for StandardHair {
     }
     fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
         StandardHair::material(self, shader, connected)
+    }
+    /// A mostly diffuse fibre (drawn as a diffuse material) takes its colour along the
+    /// strand from `diffuse_color` and `diffuse`; the physical fibre's absorption is one
+    /// colour per shader, so its networks are drawn in their mean.
+    fn along(&mut self, varying: &mut Vec<(&'static str, Pattern)>) -> Option<Pattern> {
+        match self.diffuse >= 0.5 {
+            true => arnold_graph::mapped(self, varying, &["diffuse_color", "diffuse"]),
+            false => None,
+        }
     }
 }
 
@@ -308,6 +339,126 @@ impl StandardHair {
             format!("{shader}: Arnold standard_hair settings tress does not represent: {}", left_out.join(", "))
         });
         (material, warning)
+    }
+}
+
+/// Arnold 4's legacy `hair` shader, by its parameter names and defaults (Arnold 4 node
+/// reference, "hair"), drawn as tube shading (see the module documentation).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Hair {
+    /// Diffuse colour at the root.
+    pub rootcolor: Color,
+    /// Diffuse colour at the tip.
+    pub tipcolor: Color,
+    /// Blend of isotropic (0) and Kajiya-Kay (1) diffuse.
+    pub ambdiff: f32,
+    /// Weight of the primary highlight.
+    pub spec: f32,
+    /// Colour of the primary highlight.
+    pub spec_color: Color,
+    /// Angle the primary highlight is shifted by, in degrees.
+    pub spec_shift: f32,
+    /// Glossiness (power) of the primary highlight.
+    pub spec_gloss: f32,
+    /// Weight of the secondary highlight.
+    pub spec2: f32,
+    /// Weight of the transmission.
+    pub transmission: f32,
+    /// Opacity.
+    pub opacity: Color,
+}
+
+impl Default for Hair {
+    fn default() -> Self {
+        Hair {
+            rootcolor: Color::splat(0.1),
+            tipcolor: Color::splat(0.5),
+            ambdiff: 0.6,
+            spec: 1.0,
+            spec_color: Color::ONE,
+            spec_shift: 0.0,
+            spec_gloss: 10.0,
+            spec2: 0.0,
+            transmission: 0.0,
+            opacity: Color::ONE,
+        }
+    }
+}
+
+impl ArnoldShader for Hair {
+    const NAMES: &'static [&'static str] = &[
+        "rootcolor",
+        "tipcolor",
+        "ambdiff",
+        "spec",
+        "spec_color",
+        "spec_shift",
+        "spec_gloss",
+        "spec2",
+        "transmission",
+        "opacity",
+    ];
+
+    fn param(&mut self, name: &str) -> Option<Param<'_>> {
+        use Param::{Color as C, Float};
+        Some(match name {
+            "rootcolor" => C(&mut self.rootcolor),
+            "tipcolor" => C(&mut self.tipcolor),
+            "ambdiff" => Float(&mut self.ambdiff),
+            "spec" => Float(&mut self.spec),
+            "spec_color" => C(&mut self.spec_color),
+            "spec_shift" => Float(&mut self.spec_shift),
+            "spec_gloss" => Float(&mut self.spec_gloss),
+            "spec2" => Float(&mut self.spec2),
+            "transmission" => Float(&mut self.transmission),
+            "opacity" => C(&mut self.opacity),
+            _ => return None,
+        })
+    }
+
+    /// Tube shading of the root colour (the colour along the strands coming from
+    /// [`ArnoldShader::along`]).
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
+        let finite = |c: Color| Color::from_array(c.to_array().map(|x| if x.is_finite() { x.max(0.0) } else { 0.0 }));
+        let diffuse = finite(self.rootcolor);
+        let power = if self.spec_gloss.is_finite() { self.spec_gloss.clamp(0.0, 1.0e4) } else { 10.0 };
+        let tube =
+            Tube { ambient: diffuse, diffuse, specular: finite(self.spec_color * self.spec), specular_power: power };
+        let mut left_out = Vec::new();
+        for (name, v, default) in [
+            ("ambdiff", self.ambdiff, 1.0),
+            ("spec_shift", self.spec_shift, 0.0),
+            ("spec2", self.spec2, 0.0),
+            ("transmission", self.transmission, 0.0),
+        ] {
+            if v != default {
+                left_out.push(format!("{name} {v}"));
+            }
+        }
+        if self.opacity != Color::ONE {
+            left_out.push(format!("opacity {}", fmt_color(self.opacity)));
+        }
+        if !connected.is_empty() {
+            left_out.push(format!("shading networks on {} (their own values used)", connected.join(", ")));
+        }
+        let warning = (!left_out.is_empty())
+            .then(|| format!("{shader}: Arnold hair settings tress does not represent: {}", left_out.join(", ")));
+        (Material::Tube(tube), warning)
+    }
+
+    /// The root colour blended to the tip colour, each a constant or a network.
+    fn along(&mut self, varying: &mut Vec<(&'static str, Pattern)>) -> Option<Pattern> {
+        let mut take = |name: &str, own: Color| match varying.iter().position(|(n, _)| *n == name) {
+            Some(i) => varying.remove(i).1,
+            None => Pattern::Constant(own),
+        };
+        let (root, tip) = (take("rootcolor", self.rootcolor), take("tipcolor", self.tipcolor));
+        let along = Pattern::root_to_tip(root, tip);
+        if along.constant().is_some() {
+            return None;
+        }
+        (self.rootcolor, self.tipcolor) = (Color::ONE, Color::ONE);
+        Some(along)
     }
 }
 

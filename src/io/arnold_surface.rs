@@ -374,6 +374,153 @@ impl ArnoldShader for Flat {
     }
 }
 
+/// The `standard` shader of Arnold 4 (the legacy shader older files and MtoA's
+/// `aiStandard` write), by its parameter names and defaults (Arnold 4 node reference):
+/// Lambert of `Kd × Kd_color` plus, with `Ks`, a Phong lobe of reflectance
+/// `Ks × Ks_color` whose exponent `specular_roughness` gives as it does for
+/// `standard_surface` (with no diffuse and a roughness of 0, a mirror of that
+/// reflectance); `Kt` 0.5 or more is glass of index `IOR` and colour `Kt_color`,
+/// else `Kr` 0.5 or more a mirror of `Kr × Kr_color`. A surface that reflects nothing but
+/// emits is unlit of `emission × emission_color`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Standard {
+    /// Diffuse weight.
+    pub kd: f32,
+    /// Diffuse colour.
+    pub kd_color: Color,
+    /// Diffuse roughness (Oren-Nayar), not drawn.
+    pub diffuse_roughness: f32,
+    /// Specular weight.
+    pub ks: f32,
+    /// Specular colour.
+    pub ks_color: Color,
+    /// Specular roughness.
+    pub specular_roughness: f32,
+    /// Mirror reflection weight.
+    pub kr: f32,
+    /// Mirror reflection colour.
+    pub kr_color: Color,
+    /// Refraction weight.
+    pub kt: f32,
+    /// Refraction colour.
+    pub kt_color: Color,
+    /// Index of refraction.
+    pub ior: f32,
+    /// Subsurface weight, not drawn.
+    pub ksss: f32,
+    /// Emission weight.
+    pub emission: f32,
+    /// Emission colour.
+    pub emission_color: Color,
+    /// Opacity, not drawn.
+    pub opacity: Color,
+}
+
+impl Default for Standard {
+    fn default() -> Self {
+        Standard {
+            kd: 0.7,
+            kd_color: Color::ONE,
+            diffuse_roughness: 0.0,
+            ks: 0.0,
+            ks_color: Color::ONE,
+            specular_roughness: 0.466905,
+            kr: 0.0,
+            kr_color: Color::ONE,
+            kt: 0.0,
+            kt_color: Color::ONE,
+            ior: 1.0,
+            ksss: 0.0,
+            emission: 0.0,
+            emission_color: Color::ONE,
+            opacity: Color::ONE,
+        }
+    }
+}
+
+impl ArnoldShader for Standard {
+    const MAPS: &'static [(&'static str, Slot)] = &[("Kd_color", Slot::Diffuse), ("Kd", Slot::Diffuse)];
+    const NAMES: &'static [&'static str] = &[
+        "Kd",
+        "Kd_color",
+        "diffuse_roughness",
+        "Ks",
+        "Ks_color",
+        "specular_roughness",
+        "Kr",
+        "Kr_color",
+        "Kt",
+        "Kt_color",
+        "IOR",
+        "Ksss",
+        "emission",
+        "emission_color",
+        "opacity",
+    ];
+
+    fn param(&mut self, name: &str) -> Option<Param<'_>> {
+        use Param::{Color as C, Float};
+        Some(match name {
+            "Kd" => Float(&mut self.kd),
+            "Kd_color" => C(&mut self.kd_color),
+            "diffuse_roughness" => Float(&mut self.diffuse_roughness),
+            "Ks" => Float(&mut self.ks),
+            "Ks_color" => C(&mut self.ks_color),
+            "specular_roughness" => Float(&mut self.specular_roughness),
+            "Kr" => Float(&mut self.kr),
+            "Kr_color" => C(&mut self.kr_color),
+            "Kt" => Float(&mut self.kt),
+            "Kt_color" => C(&mut self.kt_color),
+            "IOR" => Float(&mut self.ior),
+            "Ksss" => Float(&mut self.ksss),
+            "emission" => Float(&mut self.emission),
+            "emission_color" => C(&mut self.emission_color),
+            "opacity" => C(&mut self.opacity),
+            _ => return None,
+        })
+    }
+
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
+        let unit = |v: f32| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+        let rgb = |c: Color| c.clamp(Color::ZERO, Color::ONE);
+        let mut left_out = Vec::new();
+        let (kt, kr) = (unit(self.kt), unit(self.kr));
+        let base = rgb(self.kd_color * unit(self.kd));
+        let specular = rgb(self.ks_color * unit(self.ks));
+        let emitted = rgb(self.emission_color * self.emission.max(0.0));
+        let material = if kt >= 0.5 {
+            let ior = if self.ior.is_finite() { self.ior.clamp(1.0, 10.0) } else { 1.0 };
+            Material::Glass { ior, color: rgb(self.kt_color) }
+        } else if kr >= 0.5 {
+            Material::Mirror { color: rgb(self.kr_color * kr) }
+        } else if specular != Color::ZERO && base == Color::ZERO && unit(self.specular_roughness) == 0.0 {
+            // A sharp specular lobe alone: what it reflects is the scene, mirrored.
+            Material::Mirror { color: specular }
+        } else if specular != Color::ZERO {
+            let r = unit(self.specular_roughness).max(MIN_ROUGHNESS);
+            Material::Phong { diffuse: base, specular, exponent: phong_exponent(r * r) }
+        } else if base == Color::ZERO && emitted != Color::ZERO {
+            Material::Unlit { color: emitted }
+        } else {
+            Material::Diffuse { color: base }
+        };
+        for (name, v, drawn) in [("Kt", kt, kt >= 0.5), ("Kr", kr, kr >= 0.5 && kt < 0.5)] {
+            if v > 0.0 && v < 1.0 {
+                left_out.push(format!("{name} {v} ({})", if drawn { "drawn whole" } else { "not drawn" }));
+            }
+        }
+        for (name, v) in [("diffuse_roughness", self.diffuse_roughness), ("Ksss", self.ksss)] {
+            if v != 0.0 {
+                left_out.push(format!("{name} {v}"));
+            }
+        }
+        if emitted != Color::ZERO && !matches!(material, Material::Unlit { .. }) {
+            left_out.push(format!("emission {} of colour {}", self.emission, fmt_color(self.emission_color)));
+        }
+        (material, simple_warning(shader, "standard", left_out, self.opacity, connected))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -463,5 +610,23 @@ mod tests {
         assert_eq!(hot.material("f", &[]).0, Material::Unlit { color: Color::new(5.0, 0.0, 0.0) });
         let nan = Flat { color: Color::new(f32::NAN, 0.5, 0.5), ..Default::default() };
         assert_eq!(nan.material("f", &[]).0, Material::Unlit { color: Color::new(0.0, 0.5, 0.5) });
+    }
+
+    #[test]
+    fn legacy_standard_shaders_are_lambert_phong_mirror_or_glass() {
+        let (m, w) = Standard::default().material("s", &[]);
+        assert_eq!((m, w), (Material::Diffuse { color: Color::splat(0.7) }, None));
+        let shiny = Standard { kd: 1.0, kd_color: Color::new(1.0, 0.5, 0.0), ks: 0.5, ..Default::default() };
+        let Material::Phong { diffuse, specular, exponent } = shiny.material("s", &[]).0 else { panic!() };
+        assert_eq!((diffuse, specular), (Color::new(1.0, 0.5, 0.0), Color::splat(0.5)));
+        assert!(exponent > 1.0 && exponent.is_finite());
+        let mirror = Standard { kr: 0.75, ..Default::default() };
+        let (m, w) = mirror.material("/m", &[]);
+        assert_eq!(m, Material::Mirror { color: Color::splat(0.75) });
+        assert!(w.unwrap().contains("Kr 0.75 (drawn whole)"));
+        let glass = Standard { kt: 1.0, ior: 1.4, ..Default::default() };
+        assert_eq!(glass.material("g", &[]).0, Material::Glass { ior: 1.4, color: Color::ONE });
+        let glow = Standard { kd: 0.0, emission: 2.0, ..Default::default() };
+        assert_eq!(glow.material("e", &[]).0, Material::Unlit { color: Color::ONE });
     }
 }

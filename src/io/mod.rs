@@ -5,6 +5,7 @@
 //! the dispatch by extension ([`read_mesh`], [`read_imported`]) is here, so no reader
 //! imports another.
 
+pub mod arnold_graph;
 pub mod arnold_hair;
 pub mod arnold_light;
 pub mod arnold_surface;

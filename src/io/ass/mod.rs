@@ -36,8 +36,9 @@ use super::arnold_light;
 use super::imported::Imported;
 use crate::error::LoadError;
 use crate::geometry::subdivision::FaceBudget;
-use crate::io::arnold_hair::{ArnoldShader, StandardHair};
-use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
+use crate::io::arnold_graph;
+use crate::io::arnold_hair::{ArnoldShader, Hair, StandardHair};
+use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface};
 use crate::light::Light;
 use crate::scene::{CameraDesc, CameraProjection, LightSource};
 use glam::{Affine3A, DMat4, Vec2, Vec3};
@@ -164,7 +165,12 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
             "standard_surface" => <StandardSurface as ArnoldShader>::NAMES,
             "lambert" => <Lambert as ArnoldShader>::NAMES,
             "flat" => <Flat as ArnoldShader>::NAMES,
+            "standard" => <Standard as ArnoldShader>::NAMES,
+            kind if arnold_graph::READ.iter().any(|(k, _)| *k == kind) => {
+                arnold_graph::READ.iter().find(|(k, _)| *k == kind).map_or(&[], |(_, names)| *names)
+            }
             "standard_hair" => &StandardHair::NAMES,
+            "hair" => <Hair as ArnoldShader>::NAMES,
             "image" => &["filename"],
             kind => {
                 let what = match OUTPUT.iter().any(|o| kind.starts_with(o) || kind.ends_with(o)) {

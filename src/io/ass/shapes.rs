@@ -18,25 +18,29 @@
 //!   `matte`; a shape of visibility 0 is not drawn, but its `ginstance`s are.
 //! - `ginstance`: `node` placed by its `matrix`, over the node's own unless
 //!   `inherit_xform` is off; its own `visibility`.
-//! - `shader` (the first of a list): `standard_surface`, `lambert`, `flat` and
-//!   `standard_hair` by Arnold's parameter names ([`crate::io::arnold_surface`],
-//!   [`crate::io::arnold_hair`]). A parameter linked to another node is read as the
-//!   shader's default, reported. Meshes without a shader are Lambert 0.5 grey, curves the
-//!   default hair colour.
+//! - `shader` (the first of a list): `standard_surface`, `lambert`, `flat`, the legacy
+//!   `standard`, and on curves also `standard_hair` and the legacy `hair`, by Arnold's
+//!   parameter names ([`crate::io::arnold_surface`], [`crate::io::arnold_hair`]). A
+//!   parameter linked to other nodes is evaluated by [`crate::io::arnold_graph`]: a
+//!   constant sets it, a colour varying along v colours the curves' points (on meshes,
+//!   its mean); a network it does not evaluate leaves the parameter's own value, reported.
+//!   Meshes without a shader are Lambert 0.5 grey, curves the default hair colour.
 
 use super::parse::{Atom, Node};
 use super::{flag, matrix, node_label, num, num32, numbers, text, Reader, Res};
 use crate::geometry::curve::CubicBasis;
 use crate::geometry::subdivision::{arnold_iterations, PolygonMesh};
 use crate::geometry::{StrandSet, TriangleMesh};
-use crate::io::arnold_hair::{ArnoldShader, Param, StandardHair};
-use crate::io::arnold_surface::{Flat, Lambert, StandardSurface};
+use crate::io::arnold_graph::{self, Eval, Network, Value};
+use crate::io::arnold_hair::{ArnoldShader, Hair, StandardHair};
+use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface};
 use crate::io::usd::curves::{self, CurveShape};
 use crate::io::usd::values::Interpolation;
 use crate::io::usd::visibility;
 use crate::scene::{HairEntry, HairSource, MaterialSource, MeshEntry, MeshSource, Visibility};
 use crate::shading::Material;
 use glam::{Affine3A, Vec3};
+use std::collections::HashMap;
 
 /// The parameters read of each shape type (others are reported).
 pub(super) const POLYMESH_READ: [&str; 17] = [
@@ -167,7 +171,10 @@ impl Reader<'_> {
                 mesh.positions.iter_mut().for_each(|p| *p += c);
                 Some(Shape::Mesh(mesh, self.surface(node)))
             }
-            _ => self.curves(node)?.map(|set| Shape::Hair(set, self.hair_material(node))),
+            _ => self.curves(node)?.map(|mut set| {
+                let material = self.hair_material(node, &mut set);
+                Shape::Hair(set, material)
+            }),
         })
     }
 
@@ -319,9 +326,10 @@ impl Reader<'_> {
         let Some(s) = self.shader_of(node) else { return default };
         let s = s.clone();
         match s.kind.as_str() {
-            "standard_surface" => self.arnold_material::<StandardSurface>(&s),
-            "lambert" => self.arnold_material::<Lambert>(&s),
-            "flat" => self.arnold_material::<Flat>(&s),
+            "standard_surface" => self.arnold_material::<StandardSurface>(&s, None),
+            "lambert" => self.arnold_material::<Lambert>(&s, None),
+            "flat" => self.arnold_material::<Flat>(&s, None),
+            "standard" => self.arnold_material::<Standard>(&s, None),
             other => {
                 self.notes.note(format!("`{other}` surface shaders: drawn Lambert 0.5 grey"), &s);
                 default
@@ -329,13 +337,21 @@ impl Reader<'_> {
         }
     }
 
-    /// A curve's material: its `standard_hair`, else the default hair colour.
-    fn hair_material(&mut self, node: &Node) -> Material {
+    /// A curve's material: its Arnold shader's (a surface shader shades the curves as the
+    /// tubes they are), else the default hair colour; colours its networks give along the
+    /// strands go to `set`'s colours.
+    fn hair_material(&mut self, node: &Node, set: &mut StrandSet) -> Material {
         let default = curves::tube_material(None);
         let Some(s) = self.shader_of(node) else { return default };
         let s = s.clone();
+        let set = Some(set);
         match s.kind.as_str() {
-            "standard_hair" => self.arnold_material::<StandardHair>(&s),
+            "standard_hair" => self.arnold_material::<StandardHair>(&s, set),
+            "hair" => self.arnold_material::<Hair>(&s, set),
+            "standard_surface" => self.arnold_material::<StandardSurface>(&s, set),
+            "lambert" => self.arnold_material::<Lambert>(&s, set),
+            "flat" => self.arnold_material::<Flat>(&s, set),
+            "standard" => self.arnold_material::<Standard>(&s, set),
             other => {
                 self.notes.note(format!("`{other}` shaders on curves: drawn with the default hair colour"), &s);
                 default
@@ -343,40 +359,63 @@ impl Reader<'_> {
         }
     }
 
-    /// The material of Arnold shader `s`, its parameters read by `S`'s names; links to
-    /// other nodes read as the parameter's default, and what the material leaves out, are
-    /// reported.
-    fn arnold_material<S: ArnoldShader>(&mut self, s: &Node) -> Material {
-        let mut params = S::default();
-        let mut connected = Vec::new();
-        for &name in S::NAMES {
-            let Some(p) = s.param(name) else { continue };
-            let nums: Option<Vec<f32>> =
-                p.values.iter().map(|a| if let Atom::Num(x) = a { Some(*x as f32) } else { None }).collect();
-            let word = p.values.first().and_then(Atom::text);
-            match (params.param(name), nums, word) {
-                (Some(Param::Float(f)), Some(v), _) if v.len() == 1 => *f = v[0],
-                (Some(Param::Color(c)), Some(v), _) if v.len() >= 3 => *c = Vec3::new(v[0], v[1], v[2]),
-                (Some(Param::Color(c)), Some(v), _) if v.len() == 1 => *c = Vec3::splat(v[0]),
-                (Some(Param::Bool(b)), _, Some(w)) if matches!(w, "on" | "true" | "off" | "false") => {
-                    *b = matches!(w, "on" | "true")
-                }
-                (Some(_), _, Some(_)) => connected.push(name.to_string()),
-                _ => self.notes.note(format!("`{}` parameter `{name}` of the wrong kind: its default used", s.kind), s),
-            }
-            if params.param(name).is_some_and(|p| p.is_infinite()) {
-                self.notes.note(format!("`{}` parameters beyond single precision: their default used", s.kind), s);
-                params = S::default();
-            }
+    /// The material of Arnold shader `s`, its parameters read by `S`'s names and their
+    /// links evaluated ([`arnold_graph::shade`]); on curves (`strands`, their set) the
+    /// colours a network gives along them are baked into the strands. What is not
+    /// evaluated, and what the material leaves out, is reported.
+    fn arnold_material<S: ArnoldShader>(&mut self, s: &Node, strands: Option<&mut StrandSet>) -> Material {
+        let net = AssNetwork { nodes: self.nodes, by_name: &self.by_name };
+        let index = self.by_name.get(s.name.as_str()).copied().unwrap_or_default();
+        let mut eval = Eval::new(&net);
+        let shaded = arnold_graph::shade::<S, _>(&mut eval, &index, &node_label(s), strands.is_some());
+        for (what, n) in eval.unread {
+            self.notes.note(what, &self.nodes[n]);
         }
-        if !connected.is_empty() {
-            self.notes.note(format!("`{}` parameters linked to other nodes: their defaults used", s.kind), s);
+        if let (Some(p), Some(set)) = (&shaded.along, strands) {
+            set.colors = Some(arnold_graph::bake(p, Vec3::ONE, set));
         }
-        let (material, left_out) = params.material(&node_label(s), &connected);
-        if let Some(left_out) = left_out {
+        if let Some(left_out) = shaded.warning {
             let what = left_out.strip_prefix(&format!("{}: ", node_label(s))).unwrap_or(&left_out).to_string();
             self.notes.note(what, s);
         }
-        material
+        shaded.material
+    }
+}
+
+/// The nodes of an `.ass` file as a shader network: a parameter whose value is a word
+/// naming a node (or `node.r`, one channel of it) links to that node.
+struct AssNetwork<'a> {
+    nodes: &'a [Node],
+    by_name: &'a HashMap<&'a str, usize>,
+}
+
+impl Network for AssNetwork<'_> {
+    type Node = usize;
+    fn kind(&self, node: &usize) -> String {
+        self.nodes[*node].kind.clone()
+    }
+    fn value(&self, node: &usize, name: &str) -> Option<Value<usize>> {
+        let p = self.nodes[*node].param(name)?;
+        match p.values.first() {
+            Some(Atom::Word(w) | Atom::Str(w)) => Some(match self.by_name.get(w.as_str()) {
+                Some(&n) => Value::Link(n, None),
+                None => {
+                    let channel = w.rsplit_once('.').and_then(|(n, c)| {
+                        let k = ["r", "g", "b", "a"].iter().position(|x| *x == c)?;
+                        Some((*self.by_name.get(n)?, k))
+                    });
+                    match channel {
+                        Some((n, k)) => Value::Link(n, Some(k)),
+                        None => Value::Text(w.clone()),
+                    }
+                }
+            }),
+            _ => p
+                .values
+                .iter()
+                .map(|a| if let Atom::Num(x) = a { Some(*x as f32) } else { None })
+                .collect::<Option<Vec<f32>>>()
+                .map(Value::Numbers),
+        }
     }
 }

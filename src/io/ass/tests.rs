@@ -1,6 +1,7 @@
 use super::parse::{parse, Atom};
 use super::*;
-use crate::scene::{HairSource, MeshSource};
+use crate::scene::{HairSource, MaterialSource, MeshSource};
+use crate::shading::Material;
 
 fn scene(text: &str) -> AssScene {
     parse_ass(text, Path::new("t.ass"), None).unwrap_or_else(|e| panic!("{e}"))
@@ -188,4 +189,78 @@ fn what_is_not_read_is_reported_once_per_kind() {
     let w = &s.imported.warnings;
     assert!(w.iter().any(|w| w.contains("`noise` nodes: not read (2; first: n1)")), "{w:?}");
     assert!(w.iter().any(|w| w.contains("`polymesh` parameters not read: step_size")), "{w:?}");
+}
+
+/// Curves of one linear strand of three points, root (0, 0, 0) to tip (0, 2, 0), shaded by
+/// `shader`, with `nodes` after them.
+fn shaded_strand(shader: &str, nodes: &str) -> AssScene {
+    scene(&format!(
+        "curves\n{{\n name c\n num_points 1 1 UINT 3\n points 3 1 VECTOR 0 0 0 0 1 0 0 2 0\n basis \"linear\"\n\
+          shader \"{shader}\"\n}}\n{nodes}"
+    ))
+}
+
+fn strand_colors(s: &AssScene) -> (Vec<[f32; 3]>, &Material) {
+    let h = &s.imported.contents.hair[0];
+    let HairSource::Inline(set) = &h.source else { panic!() };
+    let MaterialSource::Inline(m) = &h.material else { panic!() };
+    (set.colors.clone().expect("strand colours"), m)
+}
+
+#[test]
+fn a_v_ramp_on_a_hair_shaders_colour_colours_the_strands_root_to_tip() {
+    let s = shaded_strand(
+        "h",
+        "standard_hair\n{\n name h\n diffuse 1\n diffuse_color m\n}\n\
+         multiply\n{\n name m\n input1 0.5 0.5 0.5\n input2 r\n}\n\
+         ramp_rgb\n{\n name r\n type \"v\"\n position 2 1 FLOAT 0 1\n color 2 1 RGB 1 0 0 0 0 1\n\
+          interpolation 2 1 INT 1 1\n}\n",
+    );
+    let (colors, material) = strand_colors(&s);
+    // Halfway along, half of each; the multiply's 0.5 on all.
+    assert_eq!(colors, vec![[0.5, 0.0, 0.0], [0.25, 0.0, 0.25], [0.0, 0.0, 0.5]]);
+    assert_eq!(*material, Material::Diffuse { color: Vec3::ONE });
+    let w = &s.imported.warnings;
+    assert!(!w.iter().any(|w| w.contains("multiply") || w.contains("ramp_rgb")), "{w:?}");
+}
+
+#[test]
+fn legacy_hair_and_standard_shaders_draw_their_colours_along_strands() {
+    let s = shaded_strand("h", "hair\n{\n name h\n rootcolor 1 0 0\n tipcolor 0 1 0\n spec 0.5\n spec_gloss 20\n}\n");
+    let (colors, material) = strand_colors(&s);
+    assert_eq!(colors, vec![[1.0, 0.0, 0.0], [0.5, 0.5, 0.0], [0.0, 1.0, 0.0]]);
+    let Material::Tube(t) = material else { panic!("{material:?}") };
+    assert_eq!((t.specular, t.specular_power), (Vec3::splat(0.5), 20.0));
+    // Arnold's ambdiff 0.6 is not tube shading's: said.
+    assert!(s.imported.warnings.iter().any(|w| w.contains("ambdiff 0.6")), "{:?}", s.imported.warnings);
+    let s = shaded_strand(
+        "s",
+        "standard\n{\n name s\n Kd 0.5\n Kd_color r\n}\n\
+         ramp_float\n{\n name r\n type \"v\"\n position 2 1 FLOAT 0 0.5\n value 2 1 FLOAT 0 1\n\
+          interpolation 2 1 INT 0 0\n}\n",
+    );
+    // A step at v 0.5 (interpolation 0), times Kd.
+    assert_eq!(strand_colors(&s).0, vec![[0.0; 3], [0.5; 3], [0.5; 3]]);
+}
+
+#[test]
+fn networks_not_evaluated_keep_the_parameters_value_and_are_reported() {
+    let s = shaded_strand(
+        "h",
+        "hair\n{\n name h\n rootcolor n\n tipcolor n\n}\nnoise\n{\n name n\n}\n\
+         polymesh\n{\n name m\n vidxs 3 1 UINT 0 1 2\n vlist 3 1 VECTOR 0 0 0 1 0 0 0 1 0\n shader \"l\"\n}\n\
+         lambert\n{\n name l\n Kd_color r\n}\nramp_rgb\n{\n name r\n type \"v\"\n position 2 1 FLOAT 0 1\n\
+          color 2 1 RGB 0 0 0 1 1 1\n}\n",
+    );
+    let w = &s.imported.warnings;
+    assert!(
+        w.iter().any(|w| w.contains(
+            "`noise` nodes in shader networks: not evaluated (the parameter's own value used) (2; first: n)"
+        )),
+        "{w:?}"
+    );
+    // On a surface a ramp along v is drawn in its mean, said.
+    let MaterialSource::Inline(m) = &s.imported.contents.meshes[0].material else { panic!() };
+    assert_eq!(*m, Material::Diffuse { color: Vec3::splat(0.35) });
+    assert!(w.iter().any(|w| w.contains("varying along v on Kd_color (drawn in their mean)")), "{w:?}");
 }
