@@ -53,6 +53,17 @@ pub trait Network {
 pub struct StrandPlace {
     /// Arnold's v: 0 at the root, 1 at the tip.
     pub v: f32,
+    /// The strand's index in its set.
+    pub strand: u32,
+    /// The curve segment (Arnold's primitive) along the strand.
+    pub segment: u32,
+}
+
+impl StrandPlace {
+    /// Point `v` along strand 0's first segment.
+    pub fn at(v: f32) -> StrandPlace {
+        StrandPlace { v, strand: 0, segment: 0 }
+    }
 }
 
 /// A colour a shader network gives: constant, or varying along a strand.
@@ -68,6 +79,9 @@ pub enum Pattern {
     Channel(Box<Pattern>, usize),
     /// The first pattern at the root blended linearly by v to the second at the tip.
     RootToTip(Box<Pattern>, Box<Pattern>),
+    /// A random colour per curve segment, as Arnold's `utility` shader colours primitives
+    /// (`color_mode "prims"`): each channel a hash of the strand and segment.
+    Primitives,
 }
 
 /// Samples along v that [`Pattern::mean`] averages.
@@ -90,16 +104,23 @@ impl Pattern {
             Pattern::Product(a, b) => a.at(at) * b.at(at),
             Pattern::Channel(p, k) => Color::splat(p.at(at)[*k]),
             Pattern::RootToTip(root, tip) => root.at(at).lerp(tip.at(at), at.v.clamp(0.0, 1.0)),
+            Pattern::Primitives => {
+                use crate::math::rng::{hash_u32, unit_float};
+                let h = hash_u32(at.strand.wrapping_mul(0x9e37_79b9) ^ hash_u32(at.segment));
+                Color::new(unit_float(h), unit_float(hash_u32(h)), unit_float(hash_u32(h ^ 0x5bd1_e995)))
+            }
         }
     }
 
-    /// The mean over a strand's length (v from 0 to 1, at sample midpoints).
+    /// The mean over a strand's length (v from 0 to 1, at sample midpoints, each sample
+    /// another segment, so that random colours per segment average too).
     pub fn mean(&self) -> Color {
         if let Some(c) = self.constant() {
             return c;
         }
-        let sum: Color =
-            (0..MEAN_SAMPLES).map(|i| self.at(StrandPlace { v: (i as f32 + 0.5) / MEAN_SAMPLES as f32 })).sum();
+        let sum: Color = (0..MEAN_SAMPLES)
+            .map(|i| self.at(StrandPlace { v: (i as f32 + 0.5) / MEAN_SAMPLES as f32, strand: 0, segment: i as u32 }))
+            .sum();
         sum / MEAN_SAMPLES as f32
     }
 
@@ -132,14 +153,20 @@ impl Pattern {
 }
 
 /// Per-point colours for `set`: `tint × pattern`, each point at its v (its index along
-/// its strand over the strand's segments: the sampled curves' pieces are even in the
-/// curve's parameter).
-pub fn bake(pattern: &Pattern, tint: Color, set: &StrandSet) -> Vec<[f32; 3]> {
+/// its strand over the strand's pieces: the sampled curves' pieces are even in the
+/// curve's parameter), each curve segment sampled in `pieces` pieces.
+pub fn bake(pattern: &Pattern, tint: Color, set: &StrandSet, pieces: usize) -> Vec<[f32; 3]> {
     let mut out = Vec::with_capacity(set.points.len());
-    for s in set.offsets.windows(2) {
+    let pieces = pieces.max(1);
+    for (strand, s) in set.offsets.windows(2).enumerate() {
         let n = (s[1] - s[0]) as usize;
-        let segments = n.saturating_sub(1).max(1) as f32;
-        out.extend((0..n).map(|k| (tint * pattern.at(StrandPlace { v: k as f32 / segments })).to_array()));
+        let last = n.saturating_sub(1).max(1);
+        out.extend((0..n).map(|k| {
+            // A point where two segments meet starts the next one; the tip ends the last.
+            let segment = (k.min(last - 1) / pieces) as u32;
+            let at = StrandPlace { v: k as f32 / last as f32, strand: strand as u32, segment };
+            (tint * pattern.at(at)).to_array()
+        }));
     }
     out
 }
@@ -510,7 +537,7 @@ mod tests {
     }
 
     fn at(v: f32) -> StrandPlace {
-        StrandPlace { v }
+        StrandPlace::at(v)
     }
 
     #[test]
@@ -567,7 +594,15 @@ mod tests {
         let mut set = StrandSet::new();
         set.push_strand((0..3).map(|i| (glam::Vec3::new(0.0, i as f32, 0.0), 0.1)));
         let p = Pattern::root_to_tip(Pattern::Constant(Color::ZERO), Pattern::Constant(Color::ONE));
-        let c = bake(&p, Color::splat(2.0), &set);
+        let c = bake(&p, Color::splat(2.0), &set, 1);
         assert_eq!(c, vec![[0.0; 3], [1.0; 3], [2.0; 3]]);
+        // Random colours per segment: the same over a segment's pieces, the tip the last
+        // segment's; another segment or strand another colour.
+        set.push_strand((0..5).map(|i| (glam::Vec3::new(1.0, i as f32, 0.0), 0.1)));
+        let c = bake(&Pattern::Primitives, Color::ONE, &set, 2);
+        assert_eq!((c[0], c[1]), (c[1], c[2]));
+        assert_eq!((c[3], c[5], c[6]), (c[4], c[6], c[7]));
+        assert!(c[3] != c[5] && c[0] != c[3]);
+        assert!(c.iter().flatten().all(|x| (0.0..1.0).contains(x)));
     }
 }

@@ -38,6 +38,7 @@
 //! neighbours under global illumination (Arnold user guide, "Flat"). Its opacity and a
 //! shading network on its colour are not evaluated, said in its warning.
 
+use super::arnold_graph::Pattern;
 use super::arnold_hair::{fmt_color, ArnoldShader, Param};
 use crate::math::Color;
 use crate::shading::texture::ColorMap;
@@ -521,6 +522,88 @@ impl ArnoldShader for Standard {
     }
 }
 
+/// Arnold's `utility` shader (a debugging shader: Arnold user guide, "Utility"), by
+/// what tress's materials can draw of it: `shade_mode` `flat` is unlit of its colour,
+/// `lambert` Lambert of it; `ndoteye` (Arnold's default, the colour dimmed by the facing
+/// ratio) is drawn unlit, and `ambocc`, `plastic` and `metal` as Lambert, each said.
+/// `color_mode` `color` (the default) is `color`; `prims` a random colour per curve
+/// segment on strands ([`super::arnold_graph::Pattern::Primitives`]) and `color` on
+/// surfaces, said; every other mode draws `color`, said.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Utility {
+    /// What colours the surface (`color`, `prims`, ...).
+    pub color_mode: String,
+    /// How it is shaded (`ndoteye`, `flat`, `lambert`, ...).
+    pub shade_mode: String,
+    /// The colour of `color_mode` `color`.
+    pub color: Color,
+    /// Opacity, not drawn.
+    pub opacity: f32,
+}
+
+impl Default for Utility {
+    fn default() -> Self {
+        Utility { color_mode: "color".into(), shade_mode: "ndoteye".into(), color: Color::ONE, opacity: 1.0 }
+    }
+}
+
+impl ArnoldShader for Utility {
+    const MAPS: &'static [(&'static str, Slot)] = &[("color", Slot::Diffuse)];
+    const NAMES: &'static [&'static str] = &["color_mode", "shade_mode", "color", "opacity"];
+
+    fn param(&mut self, name: &str) -> Option<Param<'_>> {
+        Some(match name {
+            "color" => Param::Color(&mut self.color),
+            "opacity" => Param::Float(&mut self.opacity),
+            _ => return None,
+        })
+    }
+
+    fn text(&mut self, name: &str) -> Option<&mut String> {
+        match name {
+            "color_mode" => Some(&mut self.color_mode),
+            "shade_mode" => Some(&mut self.shade_mode),
+            _ => None,
+        }
+    }
+
+    fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
+        let finite = |c: Color| Color::from_array(c.to_array().map(|x| if x.is_finite() { x.max(0.0) } else { 0.0 }));
+        let color = finite(self.color);
+        let mut left_out = Vec::new();
+        let material = match self.shade_mode.as_str() {
+            "flat" => Material::Unlit { color },
+            "lambert" => Material::Diffuse { color: color.min(Color::ONE) },
+            "ndoteye" => {
+                left_out.push("shade_mode ndoteye (drawn flat, without the facing ratio)".to_string());
+                Material::Unlit { color }
+            }
+            other => {
+                left_out.push(format!("shade_mode {other} (drawn lambert)"));
+                Material::Diffuse { color: color.min(Color::ONE) }
+            }
+        };
+        match self.color_mode.as_str() {
+            "color" => {}
+            "prims" => left_out.push("color_mode prims on surfaces (drawn in `color`)".into()),
+            other => left_out.push(format!("color_mode {other} (drawn in `color`)")),
+        }
+        let opacity = Color::splat(self.opacity);
+        (material, simple_warning(shader, "utility", left_out, opacity, connected))
+    }
+
+    /// `color_mode prims` on strands: a random colour per curve segment.
+    fn along(&mut self, varying: &mut Vec<(&'static str, Pattern)>) -> Option<Pattern> {
+        if self.color_mode != "prims" {
+            return super::arnold_graph::mapped(self, varying, &["color"]);
+        }
+        self.color_mode = "color".into();
+        self.color = Color::ONE;
+        varying.retain(|(n, _)| *n != "color");
+        Some(Pattern::Primitives)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -628,5 +711,23 @@ mod tests {
         assert_eq!(glass.material("g", &[]).0, Material::Glass { ior: 1.4, color: Color::ONE });
         let glow = Standard { kd: 0.0, emission: 2.0, ..Default::default() };
         assert_eq!(glow.material("e", &[]).0, Material::Unlit { color: Color::ONE });
+    }
+
+    #[test]
+    fn utility_shaders_are_unlit_or_lambert_of_their_colour() {
+        let red = Color::new(1.0, 0.0, 0.0);
+        let flat = Utility { shade_mode: "flat".into(), color: red, ..Default::default() };
+        assert_eq!(flat.material("u", &[]), (Material::Unlit { color: red }, None));
+        let lit = Utility { shade_mode: "lambert".into(), color: red, ..Default::default() };
+        assert_eq!(lit.material("u", &[]).0, Material::Diffuse { color: red });
+        // Arnold's default, ndoteye, drawn flat; prims on a surface drawn in `color`: both said.
+        let (m, w) = Utility { color_mode: "prims".into(), ..Default::default() }.material("u", &[]);
+        assert_eq!(m, Material::Unlit { color: Color::ONE });
+        let w = w.unwrap();
+        assert!(w.contains("ndoteye") && w.contains("prims on surfaces"), "{w}");
+        // On strands prims are random colours per segment, and no longer said.
+        let mut on_strands = Utility { color_mode: "prims".into(), shade_mode: "flat".into(), ..Default::default() };
+        assert_eq!(on_strands.along(&mut Vec::new()), Some(Pattern::Primitives));
+        assert_eq!(on_strands.material("u", &[]), (Material::Unlit { color: Color::ONE }, None));
     }
 }

@@ -38,7 +38,7 @@ use crate::error::LoadError;
 use crate::geometry::subdivision::FaceBudget;
 use crate::io::arnold_graph;
 use crate::io::arnold_hair::{ArnoldShader, Hair, StandardHair};
-use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface};
+use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface, Utility};
 use crate::light::Light;
 use crate::scene::{CameraDesc, CameraProjection, LightSource};
 use glam::{Affine3A, DMat4, Vec2, Vec3};
@@ -166,6 +166,7 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
             "lambert" => <Lambert as ArnoldShader>::NAMES,
             "flat" => <Flat as ArnoldShader>::NAMES,
             "standard" => <Standard as ArnoldShader>::NAMES,
+            "utility" => <Utility as ArnoldShader>::NAMES,
             kind if arnold_graph::READ.iter().any(|(k, _)| *k == kind) => {
                 arnold_graph::READ.iter().find(|(k, _)| *k == kind).map_or(&[], |(_, names)| *names)
             }

@@ -33,7 +33,7 @@ use crate::geometry::subdivision::{arnold_iterations, PolygonMesh};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::io::arnold_graph::{self, Eval, Network, Value};
 use crate::io::arnold_hair::{ArnoldShader, Hair, StandardHair};
-use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface};
+use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface, Utility};
 use crate::io::usd::curves::{self, CurveShape};
 use crate::io::usd::values::Interpolation;
 use crate::io::usd::visibility;
@@ -171,8 +171,8 @@ impl Reader<'_> {
                 mesh.positions.iter_mut().for_each(|p| *p += c);
                 Some(Shape::Mesh(mesh, self.surface(node)))
             }
-            _ => self.curves(node)?.map(|mut set| {
-                let material = self.hair_material(node, &mut set);
+            _ => self.curves(node)?.map(|(mut set, pieces)| {
+                let material = self.hair_material(node, (&mut set, pieces));
                 Shape::Hair(set, material)
             }),
         })
@@ -260,7 +260,8 @@ impl Reader<'_> {
         Ok(Some(triangles))
     }
 
-    fn curves(&mut self, node: &Node) -> Res<Option<StrandSet>> {
+    /// The strands of a `curves` node, and the pieces each curve segment is sampled in.
+    fn curves(&mut self, node: &Node) -> Res<Option<(StrandSet, usize)>> {
         let line = node.line;
         let bad = |m: String| (line, format!("curves `{}`: {m}", node_label(node)));
         let counts: Vec<usize> = numbers(node, "num_points")?
@@ -305,7 +306,7 @@ impl Reader<'_> {
         if !set.points.iter().flatten().all(|c| c.is_finite()) {
             return Err(bad("the curves' points are beyond single precision".into()));
         }
-        Ok((set.strand_count() > 0).then_some(set))
+        Ok((set.strand_count() > 0).then_some((set, shape.pieces())))
     }
 
     /// The shader node a shape names, if the file holds it.
@@ -330,6 +331,7 @@ impl Reader<'_> {
             "lambert" => self.arnold_material::<Lambert>(&s, None),
             "flat" => self.arnold_material::<Flat>(&s, None),
             "standard" => self.arnold_material::<Standard>(&s, None),
+            "utility" => self.arnold_material::<Utility>(&s, None),
             other => {
                 self.notes.note(format!("`{other}` surface shaders: drawn Lambert 0.5 grey"), &s);
                 default
@@ -339,8 +341,8 @@ impl Reader<'_> {
 
     /// A curve's material: its Arnold shader's (a surface shader shades the curves as the
     /// tubes they are), else the default hair colour; colours its networks give along the
-    /// strands go to `set`'s colours.
-    fn hair_material(&mut self, node: &Node, set: &mut StrandSet) -> Material {
+    /// strands go to the set's colours (its segments sampled in `pieces` pieces each).
+    fn hair_material(&mut self, node: &Node, set: (&mut StrandSet, usize)) -> Material {
         let default = curves::tube_material(None);
         let Some(s) = self.shader_of(node) else { return default };
         let s = s.clone();
@@ -352,6 +354,7 @@ impl Reader<'_> {
             "lambert" => self.arnold_material::<Lambert>(&s, set),
             "flat" => self.arnold_material::<Flat>(&s, set),
             "standard" => self.arnold_material::<Standard>(&s, set),
+            "utility" => self.arnold_material::<Utility>(&s, set),
             other => {
                 self.notes.note(format!("`{other}` shaders on curves: drawn with the default hair colour"), &s);
                 default
@@ -363,7 +366,7 @@ impl Reader<'_> {
     /// links evaluated ([`arnold_graph::shade`]); on curves (`strands`, their set) the
     /// colours a network gives along them are baked into the strands. What is not
     /// evaluated, and what the material leaves out, is reported.
-    fn arnold_material<S: ArnoldShader>(&mut self, s: &Node, strands: Option<&mut StrandSet>) -> Material {
+    fn arnold_material<S: ArnoldShader>(&mut self, s: &Node, strands: Option<(&mut StrandSet, usize)>) -> Material {
         let net = AssNetwork { nodes: self.nodes, by_name: &self.by_name };
         let index = self.by_name.get(s.name.as_str()).copied().unwrap_or_default();
         let mut eval = Eval::new(&net);
@@ -371,8 +374,8 @@ impl Reader<'_> {
         for (what, n) in eval.unread {
             self.notes.note(what, &self.nodes[n]);
         }
-        if let (Some(p), Some(set)) = (&shaded.along, strands) {
-            set.colors = Some(arnold_graph::bake(p, Vec3::ONE, set));
+        if let (Some(p), Some((set, pieces))) = (&shaded.along, strands) {
+            set.colors = Some(arnold_graph::bake(p, Vec3::ONE, set, pieces));
         }
         if let Some(left_out) = shaded.warning {
             let what = left_out.strip_prefix(&format!("{}: ", node_label(s))).unwrap_or(&left_out).to_string();

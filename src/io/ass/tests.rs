@@ -264,3 +264,17 @@ fn networks_not_evaluated_keep_the_parameters_value_and_are_reported() {
     assert_eq!(*m, Material::Diffuse { color: Vec3::splat(0.35) });
     assert!(w.iter().any(|w| w.contains("varying along v on Kd_color (drawn in their mean)")), "{w:?}");
 }
+
+#[test]
+fn utility_shaders_colour_curve_segments_at_random_and_draw_flat() {
+    let s = scene(
+        "curves\n{\n name c\n num_points 1 1 UINT 4\n points 4 1 VECTOR 0 0 0 0 1 0 0 2 0 0 3 0\n basis \"linear\"\n\
+          shader \"u\"\n}\nutility\n{\n name u\n color_mode \"prims\"\n shade_mode \"flat\"\n}\n",
+    );
+    let (colors, material) = strand_colors(&s);
+    assert_eq!(*material, Material::Unlit { color: Vec3::ONE });
+    // One colour per segment (the tip ends the last one); three segments, three colours.
+    assert_eq!(colors.len(), 4);
+    assert!(colors[0] != colors[1] && colors[1] != colors[2] && colors[2] == colors[3], "{colors:?}");
+    assert!(s.imported.warnings.iter().all(|w| !w.contains("utility")), "{:?}", s.imported.warnings);
+}

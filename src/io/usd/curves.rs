@@ -73,8 +73,16 @@ impl CurveShape {
 
     /// Spreads `k + 1` per-segment-end values over the samples of `k` segments.
     fn spread<T: Blend>(&self, ends: &[T]) -> Vec<T> {
-        let pieces = if self.basis.is_some() { PIECES_PER_SEGMENT } else { 1 };
-        spread(ends, pieces)
+        spread(ends, self.pieces())
+    }
+
+    /// The pieces each segment is sampled in.
+    pub fn pieces(&self) -> usize {
+        if self.basis.is_some() {
+            PIECES_PER_SEGMENT
+        } else {
+            1
+        }
     }
 }
 
