@@ -5,21 +5,26 @@
 # quotes. Each test's `data/scene.usda` or `data/test.usda` (else its first .usda) is
 # rendered at the reference's size with 16 samples per pixel.
 #
-# usage: scripts/arnold-usd-suite.sh ARNOLD_USD_CHECKOUT [TRESS] > suite.tsv
+# usage: scripts/arnold-usd-suite.sh ARNOLD_USD_CHECKOUT [TRESS [FILE]] > suite.tsv
 #   ARNOLD_USD_CHECKOUT  a clone of github.com/Autodesk/arnold-usd (its testsuite/ is read)
 #   TRESS                the tress binary (default: target/release/tress)
+#   FILE                 render each test's data/FILE instead (e.g. test.ass, the Arnold
+#                        scene Arnold rendered the reference from); tests without it are
+#                        left out
 # Needs python3 with numpy, pillow, tifffile and imagecodecs. Not run by CI.
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 suite="${1:?usage: $0 ARNOLD_USD_CHECKOUT [TRESS]}/testsuite"
 tress="${2:-$here/../target/release/tress}"
+file="${3:-}"
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 for dir in "$suite"/test_*; do
     ref="$dir/ref/reference.tif"
     [ -f "$ref" ] || continue
     layer=""
-    for name in scene.usda test.usda; do
+    [ -n "$file" ] && { [ -f "$dir/data/$file" ] || continue; layer="$dir/data/$file"; }
+    [ -n "$layer" ] || for name in scene.usda test.usda; do
         [ -f "$dir/data/$name" ] && { layer="$dir/data/$name"; break; }
     done
     [ -n "$layer" ] || layer="$(ls "$dir"/data/*.usda 2>/dev/null | head -n 1)"

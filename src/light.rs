@@ -1,13 +1,16 @@
 //! Lights: distant (sharp, or a disk of finite angular size for soft shadows), point,
 //! spot, quad and sphere area lights, emitting triangle meshes ([`MeshLight`]), a constant
-//! environment and an environment map ([`EnvironmentMap`]).
+//! environment and an environment map ([`EnvironmentMap`]); a physical sky and sun
+//! ([`PhysicalSky`]) becomes a map and a sun disk.
 
 mod environment;
 mod mesh;
+mod sky;
 
 pub use environment::{luminance, EnvironmentMap, MapPlacement, MAX_PIXELS as MAX_ENVIRONMENT_PIXELS};
 
 pub use mesh::MeshLight;
+pub use sky::{sun_direction, PhysicalSky};
 
 use crate::math::{frame, sampling, Color};
 use glam::Vec3;

@@ -551,3 +551,34 @@ fn arnold_usd_procedurals_pull_in_their_file_placed_by_their_matrix_and_cycles_a
     let e = read_imported(&dir.path().join("a.ass")).unwrap_err().to_string();
     assert!(e.contains("b.ass") && e.contains("already being read") && e.contains("a.ass"), "{e}");
 }
+
+#[test]
+fn an_arnold_procedurals_shader_draws_every_surface_of_its_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let quad = "polymesh\n{\n name q\n nsides 1 1 UINT 4\n vidxs 4 1 UINT 0 1 2 3\n \
+                vlist 4 1 VECTOR 0 0 0 1 0 0 1 1 0 0 1 0\n shader \"own\"\n}\n\
+                lambert\n{\n name own\n Kd_color 0 0 1\n}\n";
+    std::fs::write(dir.path().join("inner.ass"), quad).unwrap();
+    let path = dir.path().join("scene.ass");
+    std::fs::write(
+        &path,
+        "procedural\n{\n name plain\n filename \"inner.ass\"\n}\n\
+         procedural\n{\n name over\n filename \"inner.ass\"\n shader \"yellow\"\n}\n\
+         lambert\n{\n name yellow\n Kd_color 1 1 0\n}\n",
+    )
+    .unwrap();
+    let imported = read_imported(&path).unwrap();
+    let colours: Vec<String> = imported.contents.meshes.iter().map(|m| format!("{:?}", m.material)).collect();
+    assert_eq!(colours.len(), 2);
+    assert_ne!(colours[0], colours[1], "the procedural's shader replaces the file's own");
+    let own = format!(
+        "{:?}",
+        tress::scene::MaterialSource::from(tress::shading::Material::Diffuse { color: Vec3::new(0.0, 0.0, 0.7) })
+    );
+    let yellow = format!(
+        "{:?}",
+        tress::scene::MaterialSource::from(tress::shading::Material::Diffuse { color: Vec3::new(0.7, 0.7, 0.0) })
+    );
+    assert_eq!((&colours[0], &colours[1]), (&own, &yellow));
+    assert!(imported.warnings.iter().all(|w| !w.contains("shader")), "{:?}", imported.warnings);
+}

@@ -10,9 +10,10 @@
 //!   the emission, divided by the sphere's area when `normalize` is on ([`sphere`]);
 //! - a sky dome's image is a latitude-longitude map laid out as OpenEXR's (the top row +Y,
 //!   the left edge longitude +π, longitude 0 along +Z and π/2 along +X), tress's layout
-//!   turned 180° about +Y, times the emission ([`latlong_map`]).
+//!   turned 180° about +Y, times the emission ([`latlong_map`]);
+//! - a sky dome whose colour is a `physical_sky` shader is that sky ([`physical_sky`]).
 
-use crate::light::{Light, MapPlacement};
+use crate::light::{Light, MapPlacement, PhysicalSky};
 use crate::scene::{EnvironmentFile, Projection};
 use glam::Vec3;
 
@@ -63,4 +64,64 @@ pub fn latlong_map(path: std::path::PathBuf, emission: Vec3) -> EnvironmentFile 
         placement: MapPlacement::new(180.0, 1.0),
         fallback: Some(emission),
     }
+}
+
+/// A node's parameters as a reader finds them: its value, or the default when unset; an
+/// error says why the value is not one.
+pub trait Params {
+    /// A number.
+    fn number(&self, name: &str, default: f32) -> Result<f32, String>;
+    /// Three numbers (a colour or a vector).
+    fn triple(&self, name: &str, default: Vec3) -> Result<Vec3, String>;
+    /// A boolean.
+    fn boolean(&self, name: &str, default: bool) -> Result<bool, String>;
+}
+
+/// The parameters of Arnold's `physical_sky` that [`physical_sky`] reads.
+pub const PHYSICAL_SKY_READ: [&str; 15] = [
+    "enable_sky",
+    "turbidity",
+    "ground_albedo",
+    "use_degrees",
+    "elevation",
+    "azimuth",
+    "sun_direction",
+    "enable_sun",
+    "sun_size",
+    "intensity",
+    "sky_tint",
+    "sun_tint",
+    "X",
+    "Y",
+    "Z",
+];
+
+/// Arnold's `physical_sky` shader (Arnold user guide, "Physical Sky"): the sun at
+/// `elevation` and `azimuth` degrees when `use_degrees` (else along `sun_direction`), in
+/// the frame of the `X`, `Y`, `Z` axes; `turbidity`, `ground_albedo`, `sun_size` (degrees),
+/// `enable_sun`, `enable_sky`, the tints and `intensity`, with Arnold's defaults.
+pub fn physical_sky(p: &impl Params) -> Result<PhysicalSky, String> {
+    let d = PhysicalSky::arnold_default();
+    let local = match p.boolean("use_degrees", true)? {
+        true => crate::light::sun_direction(p.number("elevation", 45.0)?, p.number("azimuth", 90.0)?),
+        false => p.triple("sun_direction", Vec3::Y)?,
+    };
+    let (x, y, z) = (p.triple("X", Vec3::X)?, p.triple("Y", Vec3::Y)?, p.triple("Z", Vec3::Z)?);
+    let sun = (x * local.x + y * local.y + z * local.z)
+        .try_normalize()
+        .ok_or("physical_sky: the sun direction in the X, Y, Z frame is not a direction")?;
+    let sun_size = match p.boolean("enable_sun", true)? {
+        true => p.number("sun_size", d.sun_size)?,
+        false => 0.0,
+    };
+    Ok(PhysicalSky {
+        sun,
+        turbidity: p.number("turbidity", d.turbidity)?,
+        ground_albedo: p.triple("ground_albedo", d.ground_albedo)?,
+        sky_tint: p.triple("sky_tint", d.sky_tint)?,
+        sun_tint: p.triple("sun_tint", d.sun_tint)?,
+        sun_size,
+        sky: p.boolean("enable_sky", true)?,
+        intensity: p.number("intensity", d.intensity)?,
+    })
 }

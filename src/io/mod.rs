@@ -160,6 +160,11 @@ fn read_ass_tree(
             }
         };
         inner.transform(&p.transform);
+        if let Some(shader) = p.shader {
+            for mesh in &mut inner.contents.meshes {
+                mesh.material = shader.clone().into();
+            }
+        }
         out.contents.append(inner.contents);
         let name =
             p.path.file_name().map_or_else(|| p.path.display().to_string(), |f| f.to_string_lossy().into_owned());

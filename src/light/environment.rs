@@ -61,6 +61,16 @@ impl MapPlacement {
         MapPlacement { to_map: self.to_map * rotation.transpose(), ..self }
     }
 
+    /// The world direction of the map's own direction `d`.
+    pub fn to_world(self, d: Vec3) -> Vec3 {
+        self.to_map.transpose() * d
+    }
+
+    /// The factor on every pixel.
+    pub fn scale(self) -> f32 {
+        self.scale
+    }
+
     /// Its factor multiplied by `k`.
     pub fn scaled(self, k: f32) -> MapPlacement {
         MapPlacement { scale: self.scale * k, ..self }
@@ -155,6 +165,24 @@ impl EnvironmentMap {
         let mean = mean_radiance(&pixels, w, h);
         let image = Arc::new(MapImage { width: w, height: h, pixels, distribution, mean });
         Ok(EnvironmentMap { image, placement })
+    }
+
+    /// A `width` x `height` map whose pixel looks along a direction `d` of the map's own
+    /// frame (+y up, the layout above) holds `radiance(d)`: how a sky model becomes a map.
+    pub fn from_directions(
+        width: u32,
+        height: u32,
+        placement: MapPlacement,
+        radiance: impl Fn(Vec3) -> Color,
+    ) -> Result<EnvironmentMap, String> {
+        let mut rgb = Vec::with_capacity(width as usize * height as usize * 3);
+        for y in 0..height {
+            for x in 0..width {
+                let uv = [(x as f32 + 0.5) / width as f32, (y as f32 + 0.5) / height as f32];
+                rgb.extend_from_slice(&radiance(from_uv(uv).0).to_array());
+            }
+        }
+        EnvironmentMap::placed(width, height, &rgb, placement)
     }
 
     /// The same map turned by `rotation`, applied after its own: an orthogonal matrix, a

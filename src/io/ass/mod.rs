@@ -20,7 +20,8 @@
 //!   counter-clockwise around, per unit area when `normalize`), `skydome_light` (colour, or
 //!   a linked `image` node's `filename` as a latitude-longitude map, × intensity ×
 //!   2^exposure; `camera` its weight for camera rays).
-//! - `usd` procedurals (`filename`, relative to the `.ass` file; `matrix`; `frame`) and
+//! - `usd` procedurals (`filename`, relative to the `.ass` file; `matrix`; `frame`;
+//!   `shader`, which every surface in the file is drawn with, as Arnold does) and
 //!   `procedural` nodes naming another `.ass` or USD file: listed in [`AssScene`]'s
 //!   `procedurals` for the reader dispatch ([`super::read_imported_with`]) to read and
 //!   place, so that this reader reads no other format itself.
@@ -39,7 +40,7 @@ use crate::geometry::subdivision::FaceBudget;
 use crate::io::arnold_graph;
 use crate::io::arnold_hair::{ArnoldShader, Hair, StandardHair};
 use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface, Utility};
-use crate::light::Light;
+use crate::light::{Light, MapPlacement};
 use crate::scene::{CameraDesc, CameraProjection, LightSource};
 use glam::{Affine3A, DMat4, Vec2, Vec3};
 use std::collections::{BTreeMap, HashMap};
@@ -57,6 +58,8 @@ pub struct Procedural {
     pub frame: Option<u32>,
     /// The node's name, for messages.
     pub node: String,
+    /// The node's `shader`, which Arnold draws every surface the file holds with.
+    pub shader: Option<crate::shading::Material>,
 }
 
 /// What an `.ass` file gives: its scene, and the files its procedurals pull in.
@@ -173,6 +176,7 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
             "standard_hair" => &StandardHair::NAMES,
             "hair" => <Hair as ArnoldShader>::NAMES,
             "image" => &["filename"],
+            "physical_sky" => &arnold_light::PHYSICAL_SKY_READ,
             kind => {
                 let what = match OUTPUT.iter().any(|o| kind.starts_with(o) || kind.ends_with(o)) {
                     true => format!("`{kind}` nodes: not read (tress writes its own image: -o, --filter)"),
@@ -211,7 +215,7 @@ const LIGHT_READ: [&str; 11] = [
     "camera",
     "format",
 ];
-const PROCEDURAL_READ: [&str; 4] = ["filename", "matrix", "frame", "visibility"];
+const PROCEDURAL_READ: [&str; 5] = ["filename", "matrix", "frame", "visibility", "shader"];
 
 struct Reader<'a> {
     nodes: &'a [Node],
@@ -297,6 +301,30 @@ fn color(node: &Node, name: &str, default: Vec3) -> Res<Result<Vec3, String>> {
         3 | 4 => Ok(Ok(Vec3::new(c[0], c[1], c[2]))),
         n => Err((line, format!("`{}` `{name}` has {n} numbers, not a colour", node_label(node)))),
     }
+}
+
+/// A shader node's parameters for the Arnold code shared with other readers (whose errors
+/// the caller places at the node's line).
+impl arnold_light::Params for Node {
+    fn number(&self, name: &str, default: f32) -> Result<f32, String> {
+        num32(self, name, default).map_err(at_line)
+    }
+
+    fn triple(&self, name: &str, default: Vec3) -> Result<Vec3, String> {
+        match color(self, name, default).map_err(at_line)? {
+            Ok(c) => Ok(c),
+            Err(link) => Err(format!("`{}` `{name}` is linked to `{link}`, which is not read", node_label(self))),
+        }
+    }
+
+    fn boolean(&self, name: &str, default: bool) -> Result<bool, String> {
+        flag(self, name, default).map_err(at_line)
+    }
+}
+
+/// A reader error's message, without its line.
+fn at_line((_, message): (usize, String)) -> String {
+    message
 }
 
 /// The node's `matrix` (the first motion key), identity when not set.
@@ -491,6 +519,16 @@ impl Reader<'_> {
             _ => {
                 let camera = num32(node, "camera", 1.0)?.max(0.0);
                 let format = text(node, "format").unwrap_or_else(|| "latlong".into());
+                if let Some(sky) = linked_node.filter(|n| n.kind == "physical_sky") {
+                    let sky = arnold_light::physical_sky(sky).map_err(|e| (sky.line, e))?;
+                    // The dome's colour is the sky: its intensity and exposure scale it.
+                    let placement = MapPlacement::new(0.0, emission.x)
+                        .rotated(crate::math::orthogonal_part(&m))
+                        .seen_by_camera(camera);
+                    let lights = sky.lights(placement).map_err(what)?;
+                    self.out.imported.contents.lights.extend(lights.into_iter().map(LightSource::Inline));
+                    return Ok(());
+                }
                 match linked_node.filter(|n| n.kind == "image").and_then(|n| text(n, "filename")) {
                     Some(file) if format == "latlong" => {
                         let mut map = arnold_light::latlong_map(self.dir.join(file), emission);
@@ -528,7 +566,14 @@ impl Reader<'_> {
                 None
             }
         };
-        self.out.procedurals.push(Procedural { path: self.dir.join(file), transform, frame, node: node_label(node) });
+        let shader = node.param("shader").is_some().then(|| self.surface(node));
+        self.out.procedurals.push(Procedural {
+            path: self.dir.join(file),
+            transform,
+            frame,
+            node: node_label(node),
+            shader,
+        });
         Ok(())
     }
 }

@@ -322,7 +322,7 @@ impl Reader<'_> {
     }
 
     /// A surface's material: its Arnold shader's, else Lambert 0.5 grey.
-    fn surface(&mut self, node: &Node) -> Material {
+    pub(super) fn surface(&mut self, node: &Node) -> Material {
         let default = Material::Diffuse { color: Vec3::splat(0.5) };
         let Some(s) = self.shader_of(node) else { return default };
         let s = s.clone();

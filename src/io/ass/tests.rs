@@ -278,3 +278,49 @@ fn utility_shaders_colour_curve_segments_at_random_and_draw_flat() {
     assert!(colors[0] != colors[1] && colors[1] != colors[2] && colors[2] == colors[3], "{colors:?}");
     assert!(s.imported.warnings.iter().all(|w| !w.contains("utility")), "{:?}", s.imported.warnings);
 }
+
+/// The lights of `text`, which must all be inline.
+fn inline_lights(text: &str) -> Vec<Light> {
+    let s = scene(text);
+    s.imported
+        .contents
+        .lights
+        .into_iter()
+        .map(|l| match l {
+            LightSource::Inline(l) => l,
+            other => panic!("{other:?}"),
+        })
+        .collect()
+}
+
+#[test]
+fn a_dome_of_a_physical_sky_is_that_sky_and_its_sun_scaled_by_the_dome() {
+    let dome = |intensity: f32, sky: &str| {
+        inline_lights(&format!(
+            "skydome_light\n{{\n name d\n color s\n intensity {intensity}\n camera 0\n}}\nphysical_sky\n{{\n name s\n{sky}}}\n"
+        ))
+    };
+    let lights = dome(1.0, " elevation 90\n azimuth 0\n sun_size 2\n");
+    let [Light::Sun { direction, radiance, cos_max }, Light::EnvironmentMap(map)] = lights.as_slice() else {
+        panic!("{lights:?}")
+    };
+    assert!(direction.abs_diff_eq(Vec3::Y, 1e-5), "the sun straight up: {direction}");
+    assert!((cos_max - 1f32.to_radians().cos()).abs() < 1e-6, "a 2° disk");
+    assert_eq!(map.camera_visibility(), 0.0);
+    // Twice the dome's intensity, twice the sky and sun.
+    let twice = dome(2.0, " elevation 90\n azimuth 0\n sun_size 2\n");
+    let [Light::Sun { radiance: r2, .. }, Light::EnvironmentMap(m2)] = twice.as_slice() else { panic!() };
+    assert!((*r2 - 2.0 * *radiance).length() < 1e-3 * r2.length());
+    let up = map.radiance(Vec3::new(0.0, 0.5, 1.0).normalize());
+    assert!((m2.radiance(Vec3::new(0.0, 0.5, 1.0).normalize()) - 2.0 * up).length() < 1e-4 * up.length());
+    // The sun along `sun_direction` when not in degrees, in the X, Y, Z frame; no sun when
+    // it is off; no sky when that is off.
+    let lights = dome(1.0, " use_degrees off\n sun_direction 1 1 0\n X 0 1 0\n Y 1 0 0\n Z 0 0 -1\n");
+    let Light::Sun { direction, .. } = &lights[0] else { panic!("{lights:?}") };
+    assert!(direction.abs_diff_eq(Vec3::new(1.0, 1.0, 0.0).normalize(), 1e-5), "{direction}");
+    assert!(matches!(dome(1.0, " enable_sun off\n").as_slice(), [Light::EnvironmentMap(_)]));
+    assert!(matches!(dome(1.0, " enable_sky off\n").as_slice(), [Light::Sun { .. }]));
+    // A value that cannot make a sky names its node.
+    let e = error("skydome_light\n{\n name d\n color s\n}\nphysical_sky\n{\n name s\n sky_tint 1 -1 0\n}\n");
+    assert!(e.contains("sky tint") && e.contains("line"), "{e}");
+}

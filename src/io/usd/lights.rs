@@ -192,12 +192,19 @@ pub fn read_light(
                 };
             // +Y to +Z: 90° about +X.
             let pole = if pole_z { Mat3::from_rotation_x(0.5 * std::f32::consts::PI) } else { Mat3::IDENTITY };
+            let turn = crate::math::orthogonal_part(transform) * pole;
+            if let Some(sky) = arnold_sky(prim, time)? {
+                // The sky is the dome's colour: its intensity and exposure scale it.
+                let placement =
+                    crate::light::MapPlacement::new(0.0, num("intensity", 1.0)? * num("exposure", 0.0)?.exp2())
+                        .rotated(turn)
+                        .seen_by_camera(camera_visibility);
+                let lights = sky.lights(placement).map_err(anyhow::Error::msg)?;
+                return Ok(lights.into_iter().map(LightSource::Inline).collect());
+            }
             match dome_texture(prim, time, emission, notes)? {
                 Some(mut map) => {
-                    map.placement = map
-                        .placement
-                        .rotated(crate::math::orthogonal_part(transform) * pole)
-                        .seen_by_camera(camera_visibility);
+                    map.placement = map.placement.rotated(turn).seen_by_camera(camera_visibility);
                     return Ok(vec![LightSource::File(map)]);
                 }
                 None => Light::Environment { radiance: emission, camera_visibility },
@@ -228,6 +235,49 @@ pub fn read_light(
             Light::Quad { corner, edge_u, edge_v, radiance, camera_visibility }
         }
     })])
+}
+
+/// The Arnold `physical_sky` shader a dome's `primvars:arnold:shaders` node graph connects
+/// to its `outputs:color` (how Arnold-USD and Houdini write a physical sky dome), if any.
+fn arnold_sky(dome: &Prim, time: TimeCode) -> Res<Option<crate::light::PhysicalSky>> {
+    let graph = token(value(dome, "primvars:arnold:shaders", time)?, "");
+    let Ok(path) = sdf::Path::new(&graph) else { return Ok(None) };
+    let graph = dome.stage().prim(path);
+    let Some(shader) = super::shapes::connected_shader(&graph, "outputs:color")? else { return Ok(None) };
+    if token(value(&shader, "info:id", time)?, "") != "arnold:physical_sky" {
+        return Ok(None);
+    }
+    let sky = arnold_light::physical_sky(&ShaderInputs { shader: &shader, time })
+        .map_err(|e| anyhow::anyhow!("{}: {e}", shader.path()))?;
+    Ok(Some(sky))
+}
+
+/// A shader prim's `inputs:` at a time, for the Arnold code shared with other readers.
+struct ShaderInputs<'a> {
+    shader: &'a Prim,
+    time: TimeCode,
+}
+
+impl arnold_light::Params for ShaderInputs<'_> {
+    fn number(&self, name: &str, default: f32) -> Result<f32, String> {
+        let x =
+            number(input(self.shader, name, self.time).map_err(|e| e.to_string())?, name).map_err(|e| e.to_string())?;
+        let x = x.map_or(default, |x| x as f32);
+        match x.is_finite() {
+            true => Ok(x),
+            false => Err(format!("`inputs:{name}` must be finite")),
+        }
+    }
+
+    fn triple(&self, name: &str, default: Vec3) -> Result<Vec3, String> {
+        let v =
+            vec3(input(self.shader, name, self.time).map_err(|e| e.to_string())?, name).map_err(|e| e.to_string())?;
+        Ok(v.unwrap_or(default))
+    }
+
+    fn boolean(&self, name: &str, default: bool) -> Result<bool, String> {
+        Ok(boolean(input(self.shader, name, self.time).map_err(|e| e.to_string())?, default))
+    }
 }
 
 /// A cylinder light (`length` along its local X, `radius`, centred on its origin, emitting

@@ -557,7 +557,7 @@ fn bound_material(prim: &Prim) -> Res<Option<Prim>> {
 }
 
 /// The shader `material`'s `output` is connected to, if any.
-fn connected_shader(material: &Prim, output: &str) -> Res<Option<Prim>> {
+pub(super) fn connected_shader(material: &Prim, output: &str) -> Res<Option<Prim>> {
     let target = material.attribute(output).connections()?.into_iter().next();
     Ok(target.map(|path| material.stage().prim(path.prim_path())))
 }

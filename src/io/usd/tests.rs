@@ -1957,3 +1957,36 @@ def Xform "root" {
     let expected = 10.0 / (4.0 * std::f32::consts::PI * 100.0);
     assert!((radiance / expected - 1.0).abs() < 1e-4, "{radiance} vs {expected}");
 }
+
+#[test]
+fn a_dome_whose_arnold_shaders_graph_is_a_physical_sky_is_that_sky() {
+    let body = r#"
+def Scope "materials" {
+    def ArnoldNodeGraph "graph" {
+        token outputs:color.connect = </materials/graph/sky.outputs:shader>
+        def Shader "sky" {
+            uniform token info:id = "arnold:physical_sky"
+            float inputs:elevation = 90
+            float inputs:sun_size = 1
+            token outputs:shader
+        }
+    }
+}
+def DomeLight "Dome" {
+    float inputs:intensity = 0.5
+    string primvars:arnold:shaders = "/materials/graph" (interpolation = "constant")
+}
+def DomeLight "Plain" { float inputs:intensity = 0.5 }
+"#;
+    let s = read_body(body);
+    assert_eq!(s.contents.lights.len(), 3, "{:?}", s.contents.lights);
+    let LightSource::Inline(Light::Sun { direction, .. }) = s.contents.lights[0] else {
+        panic!("{:?}", s.contents.lights[0])
+    };
+    assert!(direction.abs_diff_eq(Vec3::Y, 1e-5), "{direction}");
+    let LightSource::Inline(Light::EnvironmentMap(ref map)) = s.contents.lights[1] else { panic!() };
+    // A blue sky: bluer up than at the horizon's ground.
+    let zenith = map.radiance(Vec3::new(0.3, 1.0, 0.0).normalize());
+    assert!(zenith.z > zenith.x && zenith.z > 0.0, "{zenith}");
+    assert_eq!(s.contents.lights[2], Light::Environment { radiance: Vec3::splat(0.5), camera_visibility: 1.0 }.into());
+}
