@@ -8,6 +8,11 @@
 //! - a point light of no radius is a point whose irradiance falls off with the square of
 //!   the distance (Arnold's only decay); with a radius it is a sphere whose surface emits
 //!   the emission, divided by the sphere's area when `normalize` is on ([`sphere`]);
+//! - a spot light is a point in a cone of full angle `cone_angle`, falling off to dark
+//!   over the `penumbra_angle` inside its edge ([`spot`]);
+//! - a disk light of radius r is drawn as the square of its area, one-sided along its
+//!   local −Z ([`disk`]); a cylinder light (its axis from `bottom` to `top`, emitting from
+//!   its side) as a row of spheres of the side's area ([`cylinder`]);
 //! - a sky dome's image is a latitude-longitude map laid out as OpenEXR's (the top row +Y,
 //!   the left edge longitude +π, longitude 0 along +Z and π/2 along +X), tress's layout
 //!   turned 180° about +Y, times the emission ([`latlong_map`]);
@@ -15,7 +20,12 @@
 
 use crate::light::{Light, MapPlacement, PhysicalSky};
 use crate::scene::{EnvironmentFile, Projection};
-use glam::Vec3;
+use glam::{Affine3A, Vec3};
+use std::f32::consts::{PI, TAU};
+
+/// Most spheres a cylinder light is drawn with (a cylinder longer than this many diameters
+/// gets spheres larger than its radius, so that their area still matches).
+const MAX_CYLINDER_SPHERES: usize = 64;
 
 /// `color × intensity × 2^exposure`, or why it cannot light (not finite, or negative).
 pub fn emission(color: Vec3, intensity: f32, exposure: f32) -> Result<Vec3, String> {
@@ -50,6 +60,80 @@ pub fn sphere(center: Vec3, radius: f32, emission: Vec3, normalize: bool, camera
     let area = 4.0 * std::f32::consts::PI * radius * radius;
     let radiance = if normalize { emission / area } else { emission };
     Light::Sphere { center, radius, radiance, camera_visibility }
+}
+
+/// A spot light at `position` shining along the unit `direction` with intensity
+/// `emission` inside its cone of full angle `cone_angle` degrees, falling off to dark over
+/// the `penumbra_angle` degrees inside the cone's edge (Arnold user guide, "Spot Light"),
+/// with the inverse-square decay.
+pub fn spot(position: Vec3, direction: Vec3, emission: Vec3, cone_angle: f32, penumbra_angle: f32) -> Light {
+    let outer = (0.5 * cone_angle).clamp(0.0, 90.0);
+    let inner = (outer - penumbra_angle.max(0.0)).max(0.0);
+    Light::Spot {
+        position,
+        direction,
+        intensity: emission,
+        cos_inner: inner.to_radians().cos(),
+        cos_outer: outer.to_radians().cos(),
+        decay: 2,
+    }
+}
+
+/// A disk light of `radius` in the local XY plane of `transform`, shining along its local
+/// −Z and emitting `emission` (over its area when `normalize`), drawn as the square of the
+/// same area and emission; seen by camera rays with weight `camera_visibility`.
+pub fn disk(transform: &Affine3A, radius: f32, emission: Vec3, normalize: bool, camera_visibility: f32) -> Light {
+    let side = radius * PI.sqrt();
+    rectangle(transform, [side, side], emission, normalize, camera_visibility)
+}
+
+/// A `w × h` rectangle centred in the local XY plane of `transform`, shining along its
+/// local −Z with `emission` (over its placed area when `normalize`).
+pub fn rectangle(
+    transform: &Affine3A,
+    [w, h]: [f32; 2],
+    emission: Vec3,
+    normalize: bool,
+    camera_visibility: f32,
+) -> Light {
+    // Edges ordered so that edge_u × edge_v is the local −Z the light shines along.
+    let corner = transform.transform_point3(Vec3::new(-0.5 * w, -0.5 * h, 0.0));
+    let edge_u = transform.transform_vector3(Vec3::new(0.0, h, 0.0));
+    let edge_v = transform.transform_vector3(Vec3::new(w, 0.0, 0.0));
+    let area = edge_u.cross(edge_v).length();
+    let radiance = if normalize && area > 0.0 { emission / area } else { emission };
+    Light::Quad { corner, edge_u, edge_v, radiance, camera_visibility }
+}
+
+/// A cylinder light of `radius` about the segment from `bottom` to `top`, emitting
+/// `emission` from its side (over the side's area when `normalize`), drawn as a row of
+/// spheres along the axis: `length / 2·radius` such spheres have exactly its side's area
+/// (n · 4πr² = 2πr · length); when the count is rounded to a whole number, their radius is
+/// set so that their area (and so, at the cylinder's radiance, their power) is still the
+/// side's. Seen by camera rays with weight `camera_visibility`.
+pub fn cylinder(
+    bottom: Vec3,
+    top: Vec3,
+    radius: f32,
+    emission: Vec3,
+    normalize: bool,
+    camera_visibility: f32,
+) -> Vec<Light> {
+    let axis = top - bottom;
+    let length = axis.length();
+    let side = TAU * radius * length;
+    let n = if radius > 0.0 {
+        (length / (2.0 * radius)).round().clamp(1.0, MAX_CYLINDER_SPHERES as f32) as usize
+    } else {
+        1
+    };
+    // Spheres with the side's area in all: n · 4π r_s² = 2π r · length.
+    let r = if side > 0.0 { (side / (4.0 * PI * n as f32)).sqrt() } else { radius };
+    let radiance = if normalize && side > 0.0 { emission / side } else { emission };
+    let step = axis / n as f32;
+    (0..n)
+        .map(|k| Light::Sphere { center: bottom + step * (k as f32 + 0.5), radius: r, radiance, camera_visibility })
+        .collect()
 }
 
 /// The sky dome image at `path` as an environment map in the dome's own frame, times

@@ -17,9 +17,14 @@
 //! - lights, by Arnold's conventions ([`super::arnold_light`]): `distant_light` (shining
 //!   along its local −Z, `angle`), `point_light` (`position` or `matrix`, `radius`,
 //!   `normalize`), `quad_light` (`vertices`, one-sided towards the side its vertices wind
-//!   counter-clockwise around, per unit area when `normalize`), `skydome_light` (colour, or
+//!   counter-clockwise around, per unit area when `normalize`; with `portal` on, a light
+//!   portal that emits nothing itself and lets in the sky domes of `portal_mode`
+//!   `interior_only`, Arnold's default, which then light through their portals only),
+//!   `spot_light` (`cone_angle`, `penumbra_angle`;
+//!   a `radius` drawn as a point of the same power), `disk_light` (`position`, `direction`,
+//!   `radius`), `cylinder_light` (`bottom`, `top`, `radius`), `skydome_light` (colour, or
 //!   a linked `image` node's `filename` as a latitude-longitude map, × intensity ×
-//!   2^exposure; `camera` its weight for camera rays).
+//!   2^exposure; `camera` its weight for camera rays; `portal_mode`).
 //! - `usd` procedurals (`filename`, relative to the `.ass` file; `matrix`; `frame`;
 //!   `shader`, which every surface in the file is drawn with, as Arnold does) and
 //!   `procedural` nodes naming another `.ass` or USD file: listed in [`AssScene`]'s
@@ -125,6 +130,8 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
         out: AssScene::default(),
         shapes: HashMap::new(),
         faces: FaceBudget::default(),
+        portals: Vec::new(),
+        domes: Vec::new(),
     };
     for (i, n) in nodes.iter().enumerate() {
         if !n.name.is_empty() {
@@ -141,7 +148,8 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
         let used: &[&str] = match node.kind.as_str() {
             "options" => &OPTIONS_READ,
             "persp_camera" | "ortho_camera" => &CAMERA_READ,
-            "distant_light" | "point_light" | "quad_light" | "skydome_light" => {
+            "distant_light" | "point_light" | "quad_light" | "skydome_light" | "spot_light" | "disk_light"
+            | "cylinder_light" => {
                 reader.light(node)?;
                 &LIGHT_READ
             }
@@ -180,6 +188,9 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
             kind => {
                 let what = match OUTPUT.iter().any(|o| kind.starts_with(o) || kind.ends_with(o)) {
                     true => format!("`{kind}` nodes: not read (tress writes its own image: -o, --filter)"),
+                    false if kind == "photometric_light" => {
+                        format!("`{kind}` nodes: not read (tress reads no IES profiles; they do not light)")
+                    }
                     false => format!("`{kind}` nodes: not read"),
                 };
                 reader.notes.note(what, node);
@@ -193,6 +204,7 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
             reader.notes.note(format!("`{}` parameters not read: {}", node.kind, unread.join(", ")), node);
         }
     }
+    reader.resolve_portals();
     let mut out = reader.out;
     out.imported.warnings.extend(reader.notes.lines());
     Ok(out)
@@ -202,7 +214,7 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
 const OPTIONS_READ: [&str; 6] = ["xres", "yres", "camera", "AA_samples", "GI_diffuse_depth", "GI_specular_depth"];
 const CAMERA_READ: [&str; 7] =
     ["matrix", "fov", "near_clip", "far_clip", "screen_window_min", "screen_window_max", "lens_shift"];
-const LIGHT_READ: [&str; 11] = [
+const LIGHT_READ: [&str; 19] = [
     "matrix",
     "color",
     "intensity",
@@ -214,6 +226,14 @@ const LIGHT_READ: [&str; 11] = [
     "vertices",
     "camera",
     "format",
+    "portal",
+    "portal_mode",
+    "cone_angle",
+    "penumbra_angle",
+    "cosine_power",
+    "bottom",
+    "top",
+    "direction",
 ];
 const PROCEDURAL_READ: [&str; 5] = ["filename", "matrix", "frame", "visibility", "shader"];
 
@@ -227,6 +247,11 @@ struct Reader<'a> {
     shapes: HashMap<usize, Option<shapes::Shape>>,
     /// Faces subdivision has made so far in the file.
     faces: FaceBudget,
+    /// The light portals (`quad_light`s with `portal` on): a corner and two edges, the
+    /// quad facing into the room.
+    portals: Vec<(Vec3, Vec3, Vec3)>,
+    /// The indices in the lights of the sky domes whose `portal_mode` is `interior_only`.
+    domes: Vec<usize>,
 }
 
 /// The values of parameter `name`, if the node sets it.
@@ -325,6 +350,18 @@ impl arnold_light::Params for Node {
 /// A reader error's message, without its line.
 fn at_line((_, message): (usize, String)) -> String {
     message
+}
+
+/// A point parameter, `default` when not set.
+fn point(node: &Node, name: &str, default: Vec3) -> Res<Vec3> {
+    match numbers(node, name)? {
+        None => Ok(default),
+        Some(p) if p.len() == 3 => Ok(Vec3::new(p[0], p[1], p[2])),
+        Some(p) => Err((
+            node.param(name).map_or(node.line, |p| p.line),
+            format!("`{}` `{name}` has {} numbers, not a point", node_label(node), p.len()),
+        )),
+    }
 }
 
 /// The node's `matrix` (the first motion key), identity when not set.
@@ -483,13 +520,55 @@ impl Reader<'_> {
                 arnold_light::distant(direction, emission, num32(node, "angle", 0.0)?)
             }
             "point_light" => {
-                let position = match numbers(node, "position")? {
-                    Some(p) if p.len() == 3 => Vec3::new(p[0], p[1], p[2]),
-                    _ => Vec3::ZERO,
-                };
                 let radius = num32(node, "radius", 0.0)?.max(0.0) * m.matrix3.determinant().abs().cbrt();
                 let camera = num32(node, "camera", 0.0)?.max(0.0);
-                arnold_light::sphere(m.transform_point3(position), radius, emission, normalize, camera)
+                arnold_light::sphere(
+                    m.transform_point3(point(node, "position", Vec3::ZERO)?),
+                    radius,
+                    emission,
+                    normalize,
+                    camera,
+                )
+            }
+            "spot_light" => {
+                let position = m.transform_point3(point(node, "position", Vec3::ZERO)?);
+                let direction = m.transform_vector3(Vec3::NEG_Z).normalize_or(Vec3::NEG_Z);
+                // A disk of `radius` normalized emits the point's power; unnormalized, its
+                // area times more.
+                let radius = num32(node, "radius", 0.0)?.max(0.0) * m.matrix3.determinant().abs().cbrt();
+                if radius > 0.0 {
+                    self.notes.note("spot light radii: drawn as a point of the same power", node);
+                }
+                let emission = if normalize { emission } else { emission * std::f32::consts::PI * radius * radius };
+                if num32(node, "cosine_power", 0.0)? != 0.0 {
+                    self.notes.note("spot light `cosine_power` other than 0: not applied", node);
+                }
+                let (cone, penumbra) = (num32(node, "cone_angle", 65.0)?, num32(node, "penumbra_angle", 0.0)?);
+                arnold_light::spot(position, direction, emission, cone, penumbra)
+            }
+            "disk_light" => {
+                // Arnold places a disk by its `position` and `direction` under the matrix;
+                // its radius is not scaled (Arnold node reference, `disk_light`).
+                let centre = m.transform_point3(point(node, "position", Vec3::ZERO)?);
+                let back = -m.transform_vector3(point(node, "direction", Vec3::NEG_Z)?).normalize_or(Vec3::NEG_Z);
+                let (a, b) = back.any_orthonormal_pair();
+                let (a, b) = if a.cross(b).dot(back) > 0.0 { (a, b) } else { (b, a) };
+                let frame = Affine3A::from_cols(a.into(), b.into(), back.into(), centre.into());
+                let radius = num32(node, "radius", 0.5)?.max(0.0);
+                arnold_light::disk(&frame, radius, emission, normalize, num32(node, "camera", 0.0)?.max(0.0))
+            }
+            "cylinder_light" => {
+                // The axis from `bottom` to `top` under the matrix; the radius not scaled
+                // (Arnold node reference, `disk_light`: "we don't handle scaling in disk and
+                // cylinder lights").
+                let (bottom, top) = (point(node, "bottom", Vec3::NEG_Y)?, point(node, "top", Vec3::Y)?);
+                let radius = num32(node, "radius", 1.0)?.max(0.0);
+                let camera = num32(node, "camera", 0.0)?.max(0.0);
+                let (bottom, top) = (m.transform_point3(bottom), m.transform_point3(top));
+                for light in arnold_light::cylinder(bottom, top, radius, emission, normalize, camera) {
+                    self.out.imported.contents.lights.push(LightSource::Inline(light));
+                }
+                return Ok(());
             }
             "quad_light" => {
                 // Arnold's default quad: the unit square −1..1 in the local XY plane.
@@ -506,6 +585,11 @@ impl Reader<'_> {
                     );
                 }
                 let (edge_u, edge_v) = (p[3] - p[0], p[1] - p[0]);
+                if flag(node, "portal", false)? {
+                    // A portal emits nothing: it lets its sky domes in (`resolve_portals`).
+                    self.portals.push((p[0], edge_u, edge_v));
+                    return Ok(());
+                }
                 let area = edge_u.cross(edge_v).length();
                 let radiance = if normalize && area > 0.0 { emission / area } else { emission };
                 Light::Quad {
@@ -518,6 +602,10 @@ impl Reader<'_> {
             }
             _ => {
                 let camera = num32(node, "camera", 1.0)?.max(0.0);
+                let mode = text(node, "portal_mode").unwrap_or_else(|| "interior_only".into());
+                if mode == "interior_only" {
+                    self.domes.push(self.out.imported.contents.lights.len());
+                }
                 let format = text(node, "format").unwrap_or_else(|| "latlong".into());
                 if let Some(sky) = linked_node.filter(|n| n.kind == "physical_sky") {
                     let sky = arnold_light::physical_sky(sky).map_err(|e| (sky.line, e))?;
@@ -547,6 +635,43 @@ impl Reader<'_> {
         };
         self.out.imported.contents.lights.push(LightSource::Inline(light));
         Ok(())
+    }
+
+    /// Sky domes and their portals. With portals, a dome of `portal_mode` `interior_only`
+    /// (Arnold's default) lights nothing outside them (Arnold user guide, "Light Portal"):
+    /// its light comes in through the portals only, which is what quads of the dome's
+    /// radiance facing in give (exact for a uniform dome); a textured dome's portals take
+    /// its colour × intensity. Other modes keep the dome whole, the portals only guiding
+    /// Arnold's sampling.
+    fn resolve_portals(&mut self) {
+        if self.portals.is_empty() {
+            return;
+        }
+        let lights = &mut self.out.imported.contents.lights;
+        let mut domes: Vec<(Vec3, f32)> = Vec::new();
+        for &i in self.domes.iter().rev() {
+            let dome = match &lights[i] {
+                LightSource::Inline(Light::Environment { radiance, camera_visibility }) => {
+                    (*radiance, *camera_visibility)
+                }
+                LightSource::File(map) => {
+                    self.out.imported.warnings.push(
+                        "sky dome images seen through light portals: the portals emit the dome's colour × intensity"
+                            .into(),
+                    );
+                    (map.tint, map.placement.camera_visibility())
+                }
+                // Another kind of sky is kept whole.
+                _ => continue,
+            };
+            lights.remove(i);
+            domes.push(dome);
+        }
+        for &(corner, edge_u, edge_v) in &self.portals {
+            for &(radiance, camera_visibility) in &domes {
+                lights.push(LightSource::Inline(Light::Quad { corner, edge_u, edge_v, radiance, camera_visibility }));
+            }
+        }
     }
 
     /// A `usd` or `procedural` node, placed by `transform`.

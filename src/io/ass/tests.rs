@@ -157,6 +157,63 @@ fn lights_emit_intensity_times_two_to_the_exposure() {
 }
 
 #[test]
+fn portals_let_their_interior_only_sky_in_and_emit_nothing_themselves() {
+    let portal = "quad_light\n{\n name p\n vertices 4 1 VECTOR 0 0 0 0 1 0 1 1 0 1 0 0\n portal on\n intensity 9\n}\n";
+    let s = scene(&format!("skydome_light\n{{\n name s\n intensity 0.5\n camera 0\n}}\n{portal}"));
+    // The dome comes in through the portal only, at its radiance, seen as the dome is.
+    let want = Light::Quad {
+        corner: Vec3::ZERO,
+        edge_u: Vec3::X,
+        edge_v: Vec3::Y,
+        radiance: Vec3::splat(0.5),
+        camera_visibility: 0.0,
+    };
+    assert_eq!(scene_lights(&s), vec![want]);
+    // Letting light outside the portals through, the dome is whole and the portal nothing.
+    let s = scene(&format!("skydome_light\n{{\n name s\n portal_mode \"interior_exterior\"\n}}\n{portal}"));
+    assert!(matches!(scene_lights(&s)[..], [Light::Environment { .. }]), "{:?}", scene_lights(&s));
+}
+
+#[test]
+fn spot_disk_and_cylinder_lights_are_read_by_arnolds_parameters() {
+    let s = scene(
+        "spot_light\n{\n name s\n matrix 1 0 0 0 0 0 -1 0 0 1 0 0 0 5 0 1\n cone_angle 60\n penumbra_angle 10\n\
+          radius 0.5\n exposure 1\n}\n\
+         disk_light\n{\n name d\n position 0 3 0\n direction 0 -1 0\n radius 1\n intensity 2\n}\n\
+         cylinder_light\n{\n name c\n radius 0.5\n normalize off\n}\n\
+         photometric_light\n{\n name p\n filename \"a.ies\"\n}\n",
+    );
+    let lights = scene_lights(&s);
+    // Local −Z turned to −Y; the penumbra inside the cone's 30° edge; the radius a point of
+    // the same power.
+    let Light::Spot { position, direction, intensity, cos_inner, cos_outer, decay: 2 } = lights[0] else {
+        panic!("{:?}", lights[0])
+    };
+    assert_eq!((position, intensity), (Vec3::new(0.0, 5.0, 0.0), Vec3::splat(2.0)));
+    assert!((direction - Vec3::NEG_Y).length() < 1e-6, "{direction}");
+    assert!((cos_outer - 30f32.to_radians().cos()).abs() < 1e-6 && (cos_inner - 20f32.to_radians().cos()).abs() < 1e-6);
+    // The disk: a square of its area π, shining down, its emission spread over it.
+    let Light::Quad { corner, edge_u, edge_v, radiance, .. } = lights[1] else { panic!("{:?}", lights[1]) };
+    let n = edge_u.cross(edge_v);
+    assert!((n.length() - std::f32::consts::PI).abs() < 1e-5 && (n.normalize() - Vec3::NEG_Y).length() < 1e-5);
+    assert!(((corner + 0.5 * (edge_u + edge_v)) - Vec3::new(0.0, 3.0, 0.0)).length() < 1e-5);
+    assert!((radiance - Vec3::splat(2.0 / std::f32::consts::PI)).length() < 1e-5, "{radiance}");
+    // The cylinder from (0, −1, 0) to (0, 1, 0), 2 long and 1 wide: two spheres of its
+    // side's area, at its radiance (not normalized).
+    let spheres: Vec<&Light> = lights[2..].iter().collect();
+    assert_eq!(spheres.len(), 2, "{lights:?}");
+    for (l, y) in spheres.iter().zip([-0.5, 0.5]) {
+        let Light::Sphere { center, radius, radiance, .. } = l else { panic!("{l:?}") };
+        assert_eq!((*center, *radiance), (Vec3::new(0.0, y, 0.0), Vec3::ONE));
+        assert!((2.0 * 4.0 * std::f32::consts::PI * radius * radius - std::f32::consts::TAU).abs() < 1e-5);
+    }
+    let w = &s.imported.warnings;
+    for what in ["spot light radii", "`photometric_light` nodes: not read (tress reads no IES profiles"] {
+        assert!(w.iter().any(|w| w.contains(what)), "{what}: {w:?}");
+    }
+}
+
+#[test]
 fn polymeshes_and_curves_are_read_with_their_instances() {
     let s = scene(
         "polymesh\n{\n name m\n nsides 2 1 UINT 4 3\n vidxs 7 1 UINT 0 1 2 3 0 2 4\n\
@@ -281,13 +338,17 @@ fn utility_shaders_colour_curve_segments_at_random_and_draw_flat() {
 
 /// The lights of `text`, which must all be inline.
 fn inline_lights(text: &str) -> Vec<Light> {
-    let s = scene(text);
+    scene_lights(&scene(text))
+}
+
+/// The lights of `s`, which must all be inline.
+fn scene_lights(s: &AssScene) -> Vec<Light> {
     s.imported
         .contents
         .lights
-        .into_iter()
+        .iter()
         .map(|l| match l {
-            LightSource::Inline(l) => l,
+            LightSource::Inline(l) => l.clone(),
             other => panic!("{other:?}"),
         })
         .collect()

@@ -66,10 +66,6 @@ pub const LIGHT_TYPES: [&str; 7] =
 /// Arnold's per-ray weights of its light nodes (1 by default) that tress has no switch for.
 const ARNOLD_RAY_WEIGHTS: [&str; 6] = ["diffuse", "specular", "transmission", "sss", "indirect", "volume"];
 
-/// Most spheres a cylinder light is drawn with (a cylinder longer than this many diameters
-/// gets spheres larger than its radius, so that their area still matches).
-const MAX_CYLINDER_SPHERES: usize = 64;
-
 /// An `inputs:` attribute, or the same name without the prefix as lights authored before
 /// UsdLux took it (USD 21.02) spell it.
 fn input(prim: &Prim, name: &str, time: TimeCode) -> Res<Option<openusd::sdf::Value>> {
@@ -217,22 +213,17 @@ pub fn read_light(
             arnold_light::sphere(transform.transform_point3(Vec3::ZERO), radius, emission, normalize, camera_visibility)
         }
         _ => {
-            let (w, h) = if kind == "RectLight" {
+            // Normalized, the emission is per unit area in the stage's unit.
+            let emission = if normalize { emission / unit_area } else { emission };
+            if kind == "RectLight" {
                 if input(prim, "texture:file", time)?.is_some() {
                     notes.note("RectLight textures: not applied".into(), prim);
                 }
-                (size("width", 1.0)?, size("height", 1.0)?)
+                let sides = [size("width", 1.0)?, size("height", 1.0)?];
+                arnold_light::rectangle(transform, sides, emission, normalize, camera_visibility)
             } else {
-                let side = size("radius", 0.5)? * std::f32::consts::PI.sqrt();
-                (side, side)
-            };
-            // Edges ordered so that edge_u × edge_v is the local −Z the light shines along.
-            let corner = transform.transform_point3(Vec3::new(-0.5 * w, -0.5 * h, 0.0));
-            let edge_u = transform.transform_vector3(Vec3::new(0.0, h, 0.0));
-            let edge_v = transform.transform_vector3(Vec3::new(w, 0.0, 0.0));
-            let area = edge_u.cross(edge_v).length();
-            let radiance = if normalize && area > 0.0 { emission / (area * unit_area) } else { emission };
-            Light::Quad { corner, edge_u, edge_v, radiance, camera_visibility }
+                arnold_light::disk(transform, size("radius", 0.5)?, emission, normalize, camera_visibility)
+            }
         }
     })])
 }
@@ -281,9 +272,8 @@ impl arnold_light::Params for ShaderInputs<'_> {
 }
 
 /// A cylinder light (`length` along its local X, `radius`, centred on its origin, emitting
-/// `emission` from its side, per unit area when `normalize`) as a row of spheres along its
-/// placed axis with the side's area and power (the module docs), seen by camera rays with
-/// weight `camera_visibility`.
+/// `emission` from its side, per unit area when `normalize`) as Arnold's cylinder light
+/// is drawn ([`arnold_light::cylinder`]), placed by `transform`.
 fn cylinder_spheres(
     transform: &Affine3A,
     length: f32,
@@ -292,27 +282,14 @@ fn cylinder_spheres(
     normalize: bool,
     camera_visibility: f32,
 ) -> Vec<LightSource> {
-    let axis = transform.transform_vector3(Vec3::X);
-    let length = length * axis.length();
+    let half = transform.transform_vector3(Vec3::new(0.5 * length, 0.0, 0.0));
+    let centre = transform.transform_point3(Vec3::ZERO);
     // The radius scales with the transform's two other axes.
     let radius =
         radius * (transform.transform_vector3(Vec3::Y).length() * transform.transform_vector3(Vec3::Z).length()).sqrt();
-    let side = std::f32::consts::TAU * radius * length;
-    let n = if radius > 0.0 {
-        (length / (2.0 * radius)).round().clamp(1.0, MAX_CYLINDER_SPHERES as f32) as usize
-    } else {
-        1
-    };
-    // Spheres with the side's area in all: n · 4π r_s² = 2π r · length.
-    let r = if n > 0 && side > 0.0 { (side / (4.0 * std::f32::consts::PI * n as f32)).sqrt() } else { radius };
-    let radiance = if normalize && side > 0.0 { emission / side } else { emission };
-    let centre = transform.transform_point3(Vec3::ZERO);
-    let step = axis.normalize_or(Vec3::X) * (length / n as f32);
-    (0..n)
-        .map(|k| {
-            let center = centre + step * (k as f32 + 0.5 - 0.5 * n as f32);
-            LightSource::Inline(Light::Sphere { center, radius: r, radiance, camera_visibility })
-        })
+    arnold_light::cylinder(centre - half, centre + half, radius, emission, normalize, camera_visibility)
+        .into_iter()
+        .map(LightSource::Inline)
         .collect()
 }
 
