@@ -57,11 +57,17 @@ pub struct PhysicalSky {
 }
 
 impl PhysicalSky {
+    /// Arnold's default height of the sun, in degrees.
+    pub const DEFAULT_ELEVATION: f32 = 45.0;
+    /// Arnold's default direction of the sun around the horizon, in degrees from +x
+    /// towards +z.
+    pub const DEFAULT_AZIMUTH: f32 = 90.0;
+
     /// Arnold's `physical_sky` defaults: the sun 45 degrees high, turbidity 3, ground
     /// albedo 0.1, a 0.51 degree sun, no tints, intensity 1.
     pub fn arnold_default() -> PhysicalSky {
         PhysicalSky {
-            sun: sun_direction(45.0, 90.0),
+            sun: sun_direction(PhysicalSky::DEFAULT_ELEVATION, PhysicalSky::DEFAULT_AZIMUTH),
             turbidity: 3.0,
             ground_albedo: Color::splat(0.1),
             sky_tint: Color::ONE,

@@ -9,7 +9,7 @@ use crate::fur::{AttractorModel, Attractors, FurDescription, Placement as FurPla
 use crate::geometry::TriangleMesh;
 use crate::hair_system::ramp::RampValue;
 use crate::hair_system::{FollicleParams, HairColors, HairSystem, Interp, NoiseMethod, Placement, Ramp, RampKey};
-use crate::light::{Light, MapPlacement};
+use crate::light::{Light, MapPlacement, PhysicalSky};
 use crate::math::Color;
 use crate::scene::{
     EnvironmentFile, FurEntry, GuideSource, HairSource, HairSystemEntry, LightSource, MaterialSource, Projection,
@@ -269,9 +269,9 @@ pub(super) fn check(name: &str, v: &[f32], min: f32) -> Result<(), String> {
     }
 }
 
-pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
+pub(super) fn light(l: &LightToml, base: &Path) -> Result<Vec<LightSource>, String> {
     const ANY: f32 = f32::NEG_INFINITY;
-    Ok(LightSource::Inline(match *l {
+    Ok(vec![LightSource::Inline(match *l {
         LightToml::Distant { direction, irradiance, angular_diameter } => {
             check("direction", &direction, ANY)?;
             check("irradiance", &irradiance, 0.0)?;
@@ -345,19 +345,46 @@ pub(super) fn light(l: &LightToml, base: &Path) -> Result<LightSource, String> {
                 }
                 // Read by `prepare`, which reports a file it cannot use.
                 (None, Some(file)) => {
-                    return Ok(LightSource::File(EnvironmentFile {
+                    return Ok(vec![LightSource::File(EnvironmentFile {
                         path: base.join(file),
                         projection: Projection::LatLong,
                         tint: Color::ONE,
                         illuminance: None,
                         placement: MapPlacement::new(rotation, scale).seen_by_camera(camera_visibility),
                         fallback: None,
-                    }))
+                    })])
                 }
                 _ => return Err("give exactly one of `radiance` and `file`".into()),
             }
         }
-    }))
+        LightToml::Sky {
+            elevation,
+            azimuth,
+            turbidity,
+            ground_albedo,
+            sun_size,
+            intensity,
+            exposure,
+            camera_visibility,
+        } => {
+            check("elevation, azimuth, exposure", &[elevation, azimuth, exposure], ANY)?;
+            check("turbidity, sun_size, intensity", &[turbidity, sun_size, intensity], 0.0)?;
+            check("camera_visibility", &[camera_visibility], 0.0)?;
+            check("ground_albedo", &ground_albedo, 0.0)?;
+            if !(1.0..=10.0).contains(&turbidity) {
+                return Err("`turbidity` must be between 1 and 10".into());
+            }
+            let sky = PhysicalSky {
+                sun: crate::light::sun_direction(elevation, azimuth),
+                turbidity,
+                ground_albedo: ground_albedo.into(),
+                sun_size,
+                ..PhysicalSky::arnold_default()
+            };
+            let placement = MapPlacement::new(0.0, intensity * exposure.exp2()).seen_by_camera(camera_visibility);
+            return Ok(sky.lights(placement)?.into_iter().map(LightSource::Inline).collect());
+        }
+    })])
 }
 
 /// The material a table describes; textures are named by path, for `prepare` to read.

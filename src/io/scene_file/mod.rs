@@ -178,7 +178,7 @@ pub fn parse(text: &str, path: &Path, frame: Option<u32>) -> Result<(Description
     };
     let mut contents = Contents::default();
     for (i, l) in scene.light.iter().enumerate() {
-        contents.lights.push(light(l, base).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
+        contents.lights.extend(light(l, base).map_err(|m| invalid(format!("light {}: {m}", i + 1)))?);
     }
     for (i, m) in scene.mesh.iter().enumerate() {
         let what = |m: String| invalid(format!("mesh {}: {m}", i + 1));

@@ -300,6 +300,44 @@ pub(super) enum LightToml {
         #[serde(default = "one")]
         camera_visibility: f32,
     },
+    /// A physical daylight sky and sun ([`crate::light::PhysicalSky`]).
+    Sky {
+        /// Degrees of the sun above the horizon.
+        #[serde(default = "default_elevation")]
+        elevation: f32,
+        /// Degrees around +y from +x towards +z.
+        #[serde(default = "default_azimuth")]
+        azimuth: f32,
+        #[serde(default = "default_turbidity")]
+        turbidity: f32,
+        #[serde(default = "default_ground_albedo", deserialize_with = "exact")]
+        ground_albedo: V3,
+        /// Degrees across; 0 leaves the sun out.
+        #[serde(default = "default_sun_size")]
+        sun_size: f32,
+        #[serde(default = "default_intensity")]
+        intensity: f32,
+        #[serde(default)]
+        exposure: f32,
+        #[serde(default = "one")]
+        camera_visibility: f32,
+    },
+}
+
+fn default_elevation() -> f32 {
+    crate::light::PhysicalSky::DEFAULT_ELEVATION
+}
+fn default_azimuth() -> f32 {
+    crate::light::PhysicalSky::DEFAULT_AZIMUTH
+}
+fn default_turbidity() -> f32 {
+    crate::light::PhysicalSky::arnold_default().turbidity
+}
+fn default_ground_albedo() -> V3 {
+    crate::light::PhysicalSky::arnold_default().ground_albedo.into()
+}
+fn default_sun_size() -> f32 {
+    crate::light::PhysicalSky::arnold_default().sun_size
 }
 
 fn default_intensity() -> f32 {

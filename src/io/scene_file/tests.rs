@@ -520,3 +520,27 @@ fn an_orthographic_camera_takes_its_window_height() {
         assert!(e.contains("ortho_height") || e.contains("fisheye"), "{bad}: {e}");
     }
 }
+
+/// `type = "sky"` is a physical sky map and its sun, as Arnold's `physical_sky` draws them.
+#[test]
+fn a_sky_light_is_a_sky_map_and_a_sun() {
+    let lights = |body: &str| parse(&format!("[[light]]\ntype = \"sky\"\n{body}\n")).map(|d| d.contents.lights);
+    let l = lights("elevation = 30\nazimuth = 0\nexposure = 1\ncamera_visibility = 0").unwrap();
+    let [LightSource::Inline(Light::Sun { direction, .. }), LightSource::Inline(Light::EnvironmentMap(map))] = &l[..]
+    else {
+        panic!("{l:?}")
+    };
+    assert!(direction.abs_diff_eq(Vec3::new(30f32.to_radians().cos(), 0.5, 0.0), 1e-5), "{direction}");
+    assert_eq!(map.camera_visibility(), 0.0);
+    // Exposure 1 doubles the sky of the default one (same sun).
+    let dim = lights("elevation = 30\nazimuth = 0").unwrap();
+    let LightSource::Inline(Light::EnvironmentMap(dim)) = &dim[1] else { panic!() };
+    let d = Vec3::new(0.0, 1.0, 1.0).normalize();
+    assert!((map.radiance(d) - 2.0 * dim.radiance(d)).length() < 1e-5, "{} {}", map.radiance(d), dim.radiance(d));
+    // No sun with a sun_size of 0; errors name the light and the key.
+    assert_eq!(lights("sun_size = 0").unwrap().len(), 1);
+    let e = lights("turbidity = 20").unwrap_err().to_string();
+    assert!(e.contains("light 1") && e.contains("turbidity"), "{e}");
+    let e = lights("ground_albedo = [0.1, -1, 0]").unwrap_err().to_string();
+    assert!(e.contains("ground_albedo"), "{e}");
+}
