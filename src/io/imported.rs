@@ -37,6 +37,9 @@ pub struct Imported {
     pub contents: Contents,
     /// What was read only in part or skipped, one line each, for the user.
     pub warnings: Vec<String>,
+    /// The file's renderer lights a scene only by its own lights (Arnold): without any, it
+    /// renders black, not with tress's default light and sky.
+    pub no_default_light: bool,
 }
 
 /// Fraction of a scene's size (its bounding box's diagonal) that strands whose file gives
@@ -133,7 +136,8 @@ impl Imported {
     /// A scene of its own: the file's camera (or one framing the geometry from the front,
     /// slightly above, when it has none), its settings over tress's defaults, and its
     /// lights (or, as Maya renders a scene without lights, one distant light from the
-    /// camera and a dim sky). Returns the warnings too, with those this adds.
+    /// camera and a dim sky; none when [`Imported::no_default_light`]). Returns the
+    /// warnings too, with those this adds.
     pub fn into_description(mut self) -> (Description, Vec<String>) {
         let mut settings = RenderSettings::default();
         if let Some([w, h]) = self.resolution {
@@ -150,7 +154,9 @@ impl Imported {
                 framing_camera(&self.contents.bounds())
             }
         };
-        if self.contents.lights.is_empty() {
+        if self.contents.lights.is_empty() && self.no_default_light {
+            self.warnings.push("the file has no lights: black, as its renderer draws it".into());
+        } else if self.contents.lights.is_empty() {
             self.warnings.push("the file has no lights: lighting with a default light from the camera".into());
             let direction = (camera.eye - camera.target + camera.up * 0.5 * (camera.eye - camera.target).length())
                 .normalize_or(Vec3::Y);

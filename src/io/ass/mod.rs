@@ -24,7 +24,9 @@
 //!   a `radius` drawn as a point of the same power), `disk_light` (`position`, `direction`,
 //!   `radius`), `cylinder_light` (`bottom`, `top`, `radius`), `skydome_light` (colour, or
 //!   a linked `image` node's `filename` as a latitude-longitude map, × intensity ×
-//!   2^exposure; `camera` its weight for camera rays; `portal_mode`).
+//!   2^exposure; `camera` its weight for camera rays; `portal_mode`). Arnold adds no light
+//!   of its own, so a file without lights renders black
+//!   ([`Imported::no_default_light`]).
 //! - `usd` procedurals (`filename`, relative to the `.ass` file; `matrix`; `frame`;
 //!   `shader`, which every surface in the file is drawn with, as Arnold does) and
 //!   `procedural` nodes naming another `.ass` or USD file: listed in [`AssScene`]'s
@@ -206,6 +208,8 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
     }
     reader.resolve_portals();
     let mut out = reader.out;
+    // Arnold adds no light of its own: a file without lights renders black.
+    out.imported.no_default_light = true;
     out.imported.warnings.extend(reader.notes.lines());
     Ok(out)
 }

@@ -214,6 +214,13 @@ fn spot_disk_and_cylinder_lights_are_read_by_arnolds_parameters() {
 }
 
 #[test]
+fn a_file_without_lights_renders_black_as_in_arnold() {
+    let (d, w) = scene("sphere\n{\n name b\n}\n").imported.into_description();
+    assert!(d.contents.lights.is_empty(), "{:?}", d.contents.lights);
+    assert!(w.iter().any(|w| w.contains("no lights: black")), "{w:?}");
+}
+
+#[test]
 fn polymeshes_and_curves_are_read_with_their_instances() {
     let s = scene(
         "polymesh\n{\n name m\n nsides 2 1 UINT 4 3\n vidxs 7 1 UINT 0 1 2 3 0 2 4\n\
