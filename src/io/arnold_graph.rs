@@ -18,6 +18,10 @@
 //!   drawn).
 //! - `multiply` (`input1 × input2`, both 1 by default), `color_correct` (its `input`; its
 //!   other parameters are reported, not applied).
+//! - `checkerboard` (`color1`, `color2`, frequencies, offsets, `contrast`; the texture
+//!   filtered over the ray's footprint instead of Arnold's filter controls): on strands by
+//!   the curve's `uvs`, else Arnold's implicit coordinates (v along); on a surface shader's
+//!   diffuse or emitted colour a textured surface ([`super::arnold_surface::textured`]).
 //! - A link to one channel (`node.r`, `.g`, `.b`) reads that channel as grey; `.a`, the
 //!   alpha of an opaque colour, is 1.
 
@@ -25,6 +29,7 @@ use super::arnold_hair::{ArnoldShader, Param};
 use crate::geometry::StrandSet;
 use crate::hair_system::ramp::{Interp, Ramp, RampKey};
 use crate::math::Color;
+use crate::shading::texture::{Checker, ColorMap};
 use crate::shading::Material;
 
 /// A parameter's value as a reader finds it in its file.
@@ -57,12 +62,14 @@ pub struct StrandPlace {
     pub strand: u32,
     /// The curve segment (Arnold's primitive) along the strand.
     pub segment: u32,
+    /// The curve's texture coordinates, when it has them (Arnold's curve `uvs`).
+    pub uv: Option<[f32; 2]>,
 }
 
 impl StrandPlace {
-    /// Point `v` along strand 0's first segment.
+    /// Point `v` along strand 0's first segment, without texture coordinates.
     pub fn at(v: f32) -> StrandPlace {
-        StrandPlace { v, strand: 0, segment: 0 }
+        StrandPlace { v, strand: 0, segment: 0, uv: None }
     }
 }
 
@@ -82,6 +89,9 @@ pub enum Pattern {
     /// A random colour per curve segment, as Arnold's `utility` shader colours primitives
     /// (`color_mode "prims"`): each channel a hash of the strand and segment.
     Primitives,
+    /// A checkerboard by the curve's texture coordinates, else by Arnold's implicit ones
+    /// on curves (u 0.5 across, v along).
+    Checker(Checker),
 }
 
 /// Samples along v that [`Pattern::mean`] averages.
@@ -109,17 +119,22 @@ impl Pattern {
                 let h = hash_u32(at.strand.wrapping_mul(0x9e37_79b9) ^ hash_u32(at.segment));
                 Color::new(unit_float(h), unit_float(hash_u32(h)), unit_float(hash_u32(h ^ 0x5bd1_e995)))
             }
+            Pattern::Checker(c) => c.lookup(at.uv.unwrap_or([0.5, at.v]), 0.0),
         }
     }
 
     /// The mean over a strand's length (v from 0 to 1, at sample midpoints, each sample
     /// another segment, so that random colours per segment average too).
     pub fn mean(&self) -> Color {
-        if let Some(c) = self.constant() {
-            return c;
+        match self {
+            Pattern::Constant(c) => return *c,
+            Pattern::Checker(c) => return c.average(),
+            _ => {}
         }
         let sum: Color = (0..MEAN_SAMPLES)
-            .map(|i| self.at(StrandPlace { v: (i as f32 + 0.5) / MEAN_SAMPLES as f32, strand: 0, segment: i as u32 }))
+            .map(|i| {
+                self.at(StrandPlace { segment: i as u32, ..StrandPlace::at((i as f32 + 0.5) / MEAN_SAMPLES as f32) })
+            })
             .sum();
         sum / MEAN_SAMPLES as f32
     }
@@ -158,13 +173,15 @@ impl Pattern {
 pub fn bake(pattern: &Pattern, tint: Color, set: &StrandSet, pieces: usize) -> Vec<[f32; 3]> {
     let mut out = Vec::with_capacity(set.points.len());
     let pieces = pieces.max(1);
+    let uvs = set.strand_info.as_ref().map(|i| &i.root_uv);
     for (strand, s) in set.offsets.windows(2).enumerate() {
+        let uv = uvs.and_then(|u| u.get(strand).copied());
         let n = (s[1] - s[0]) as usize;
         let last = n.saturating_sub(1).max(1);
         out.extend((0..n).map(|k| {
             // A point where two segments meet starts the next one; the tip ends the last.
             let segment = (k.min(last - 1) / pieces) as u32;
-            let at = StrandPlace { v: k as f32 / last as f32, strand: strand as u32, segment };
+            let at = StrandPlace { v: k as f32 / last as f32, strand: strand as u32, segment, uv };
             (tint * pattern.at(at)).to_array()
         }));
     }
@@ -279,12 +296,38 @@ pub fn shade<S: ArnoldShader, N: Network>(
         true => params.along(&mut varying),
         false => None,
     };
+    // On a surface, the first checkerboard on a parameter that colours the surface
+    // textures it: the material made with that parameter at 1, the map applied.
+    let mut map = None;
+    if !strands {
+        if let Some(k) = varying
+            .iter()
+            .position(|(name, p)| matches!(p, Pattern::Checker(_)) && S::MAPS.iter().any(|(m, _)| m == name))
+        {
+            let (name, p) = varying.remove(k);
+            let slot = S::MAPS.iter().find(|(m, _)| *m == name).map(|(_, s)| *s);
+            if let (Pattern::Checker(c), Some(slot)) = (p, slot) {
+                set(&mut params, name, Color::ONE);
+                map = Some((name, slot, c));
+            }
+        }
+    }
     let mut left_out = Vec::new();
     for (name, p) in varying {
         set(&mut params, name, p.mean());
         left_out.push(name.to_string());
     }
     let (mut material, mut warning) = params.material(label, &connected);
+    if let Some((name, slot, c)) = map {
+        match super::arnold_surface::textured(&material, slot, ColorMap::Checker(c.clone())) {
+            Some(m) => material = m,
+            None => {
+                set(&mut params, name, c.average());
+                (material, warning) = params.material(label, &connected);
+                left_out.push(name.to_string());
+            }
+        }
+    }
     let along = match (along, base_color(&material)) {
         (Some(p), Some(tint)) => Some(Pattern::product(Pattern::Constant(tint), p)),
         (Some(p), None) => {
@@ -301,7 +344,7 @@ pub fn shade<S: ArnoldShader, N: Network>(
     };
     let mut extra = Vec::new();
     if !left_out.is_empty() {
-        extra.push(format!("shading networks varying along v on {} (drawn in their mean)", left_out.join(", ")));
+        extra.push(format!("varying shading networks on {} (drawn in their mean)", left_out.join(", ")));
     }
     if !wrong.is_empty() {
         extra.push(format!("{} of the wrong kind or beyond single precision (defaults used)", wrong.join(", ")));
@@ -380,6 +423,7 @@ impl<'a, N: Network> Eval<'a, N> {
                 let b = self.param(node, "input2", Color::ONE, depth)?;
                 Some(Pattern::product(a, b))
             }
+            "checkerboard" => self.checker(node, depth),
             "color_correct" => {
                 let set: Vec<&str> =
                     COLOR_CORRECT_READ[2..].iter().copied().filter(|p| self.net.value(node, p).is_some()).collect();
@@ -396,6 +440,44 @@ impl<'a, N: Network> Eval<'a, N> {
                 None
             }
         }
+    }
+
+    /// A checkerboard whose colours and numbers are constants.
+    fn checker(&mut self, node: &N::Node, depth: usize) -> Option<Pattern> {
+        let mut c = Checker::default();
+        for (name, slot) in [("color1", &mut c.color1), ("color2", &mut c.color2)] {
+            *slot = match self.param(node, name, *slot, depth)?.constant() {
+                Some(x) => x,
+                None => {
+                    self.note("checkerboards of varying colours: not evaluated".into(), node);
+                    return None;
+                }
+            };
+        }
+        for (name, slot) in [
+            ("u_frequency", &mut c.u_frequency),
+            ("v_frequency", &mut c.v_frequency),
+            ("u_offset", &mut c.u_offset),
+            ("v_offset", &mut c.v_offset),
+            ("contrast", &mut c.contrast),
+        ] {
+            match self.net.value(node, name) {
+                None => {}
+                Some(Value::Numbers(v)) if v.len() == 1 && v[0].is_finite() => *slot = v[0],
+                Some(_) => {
+                    self.note(format!("checkerboard `{name}` not a number: its default used"), node);
+                }
+            }
+        }
+        for name in ["filter_strength", "filter_offset", "uvset"] {
+            if self.net.value(node, name).is_some() {
+                self.note(format!("checkerboard `{name}`: not applied (filtered over the ray's footprint)"), node);
+            }
+        }
+        if !(c.color1.is_finite() && c.color2.is_finite()) {
+            return None;
+        }
+        Some(Pattern::Checker(c))
     }
 
     /// A ramp node: by v along strands; across them (u) its mean; else reported.
@@ -473,7 +555,22 @@ impl<'a, N: Network> Eval<'a, N> {
 
 /// The node types [`Eval`] evaluates and the parameters it reads of each (the readers
 /// report the others).
-pub const READ: [(&str, &[&str]); 4] = [
+pub const READ: [(&str, &[&str]); 5] = [
+    (
+        "checkerboard",
+        &[
+            "color1",
+            "color2",
+            "u_frequency",
+            "v_frequency",
+            "u_offset",
+            "v_offset",
+            "contrast",
+            "filter_strength",
+            "filter_offset",
+            "uvset",
+        ],
+    ),
     ("ramp_rgb", &["type", "position", "color", "interpolation", "input", "offset"]),
     ("ramp_float", &["type", "position", "value", "interpolation", "input", "offset"]),
     ("multiply", &["input1", "input2"]),

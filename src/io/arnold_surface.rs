@@ -525,10 +525,11 @@ impl ArnoldShader for Standard {
 /// Arnold's `utility` shader (a debugging shader: Arnold user guide, "Utility"), by
 /// what tress's materials can draw of it: `shade_mode` `flat` is unlit of its colour,
 /// `lambert` Lambert of it; `ndoteye` (Arnold's default, the colour dimmed by the facing
-/// ratio) is drawn unlit, and `ambocc`, `plastic` and `metal` as Lambert, each said.
-/// `color_mode` `color` (the default) is `color`; `prims` a random colour per curve
-/// segment on strands ([`super::arnold_graph::Pattern::Primitives`]) and `color` on
-/// surfaces, said; every other mode draws `color`, said.
+/// ratio, lit by no light) is drawn unlit, and `ambocc`, `plastic` and `metal` as Lambert,
+/// each said. `color_mode` `color` (the default) is `color`; `prims`
+/// a random colour per curve segment on strands
+/// ([`super::arnold_graph::Pattern::Primitives`]) and their mean, 0.5 grey, on surfaces,
+/// said; every other mode draws 0.5 grey, said.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Utility {
     /// What colours the surface (`color`, `prims`, ...).
@@ -569,11 +570,24 @@ impl ArnoldShader for Utility {
 
     fn material(&self, shader: &str, connected: &[String]) -> (Material, Option<String>) {
         let finite = |c: Color| Color::from_array(c.to_array().map(|x| if x.is_finite() { x.max(0.0) } else { 0.0 }));
-        let color = finite(self.color);
         let mut left_out = Vec::new();
+        // Colours tress cannot draw are tress's default surface grey, the mean of random
+        // colours.
+        let color = match self.color_mode.as_str() {
+            "color" => finite(self.color),
+            "prims" => {
+                left_out.push("color_mode prims on surfaces (drawn 0.5 grey, their mean)".into());
+                Material::DEFAULT_COLOR
+            }
+            other => {
+                left_out.push(format!("color_mode {other} (drawn 0.5 grey)"));
+                Material::DEFAULT_COLOR
+            }
+        };
         let material = match self.shade_mode.as_str() {
             "flat" => Material::Unlit { color },
             "lambert" => Material::Diffuse { color: color.min(Color::ONE) },
+            // Lit by no light, as Arnold's: unlit, without the falloff.
             "ndoteye" => {
                 left_out.push("shade_mode ndoteye (drawn flat, without the facing ratio)".to_string());
                 Material::Unlit { color }
@@ -583,11 +597,6 @@ impl ArnoldShader for Utility {
                 Material::Diffuse { color: color.min(Color::ONE) }
             }
         };
-        match self.color_mode.as_str() {
-            "color" => {}
-            "prims" => left_out.push("color_mode prims on surfaces (drawn in `color`)".into()),
-            other => left_out.push(format!("color_mode {other} (drawn in `color`)")),
-        }
         let opacity = Color::splat(self.opacity);
         (material, simple_warning(shader, "utility", left_out, opacity, connected))
     }
@@ -720,9 +729,9 @@ mod tests {
         assert_eq!(flat.material("u", &[]), (Material::Unlit { color: red }, None));
         let lit = Utility { shade_mode: "lambert".into(), color: red, ..Default::default() };
         assert_eq!(lit.material("u", &[]).0, Material::Diffuse { color: red });
-        // Arnold's default, ndoteye, drawn flat; prims on a surface drawn in `color`: both said.
+        // Arnold's default, ndoteye, drawn flat; prims on a surface their mean: both said.
         let (m, w) = Utility { color_mode: "prims".into(), ..Default::default() }.material("u", &[]);
-        assert_eq!(m, Material::Unlit { color: Color::ONE });
+        assert_eq!(m, Material::Unlit { color: Color::splat(0.5) });
         let w = w.unwrap();
         assert!(w.contains("ndoteye") && w.contains("prims on surfaces"), "{w}");
         // On strands prims are random colours per segment, and no longer said.

@@ -12,7 +12,7 @@
 //!   default), `b-spline`, `catmull-rom` or `linear`, sampled by the USD reader's
 //!   evaluation ([`crate::io::usd::curves::strands`]); Arnold's cubic curves are open (they
 //!   do not reach a B-spline's or Catmull-Rom's end points). Every `mode` (ribbon, thick,
-//!   oriented) is drawn as round strands.
+//!   oriented) is drawn as round strands. `uvs`, one per curve, texture the curves.
 //! - `sphere`: `center`, `radius`.
 //! - `visibility`: Arnold's ray bits ([`crate::io::usd::visibility::from_bits`]), with
 //!   `matte`; a shape of visibility 0 is not drawn, but its `ginstance`s are.
@@ -30,7 +30,7 @@ use super::parse::{Atom, Node};
 use super::{flag, matrix, node_label, num, num32, numbers, text, Reader, Res};
 use crate::geometry::curve::CubicBasis;
 use crate::geometry::subdivision::{arnold_iterations, PolygonMesh};
-use crate::geometry::{StrandSet, TriangleMesh};
+use crate::geometry::{StrandInfo, StrandSet, TriangleMesh};
 use crate::io::arnold_graph::{self, Eval, Network, Value};
 use crate::io::arnold_hair::{ArnoldShader, Hair, StandardHair};
 use crate::io::arnold_surface::{Flat, Lambert, Standard, StandardSurface, Utility};
@@ -63,8 +63,8 @@ pub(super) const POLYMESH_READ: [&str; 17] = [
     "shidxs",
 ];
 /// The parameters read of `curves`.
-pub(super) const CURVES_READ: [&str; 9] =
-    ["num_points", "points", "radius", "basis", "mode", "matrix", "shader", "visibility", "matte"];
+pub(super) const CURVES_READ: [&str; 10] =
+    ["num_points", "points", "radius", "basis", "mode", "matrix", "shader", "visibility", "matte", "uvs"];
 /// The parameters read of `sphere`.
 pub(super) const SPHERE_READ: [&str; 6] = ["center", "radius", "matrix", "shader", "visibility", "matte"];
 /// The parameters read of `ginstance`.
@@ -298,8 +298,19 @@ impl Reader<'_> {
             n => return Err(bad(format!("{n} radii for {} points ({varying} segment ends)", points.len()))),
         };
         let widths: Vec<f32> = radius.iter().map(|r| 2.0 * r).collect();
-        let (set, _, skipped) = curves::strands(&shape, &points, &counts, (Some((&widths, interp)), 0.0), None)
+        let (mut set, kept, skipped) = curves::strands(&shape, &points, &counts, (Some((&widths, interp)), 0.0), None)
             .map_err(|e| bad(format!("{e:#}")))?;
+        // `uvs`: one texture coordinate per curve (Arnold's, from the surface it grows on),
+        // which textures on the curves read.
+        if let Some(uv) = numbers(node, "uvs")? {
+            match uv.len() == 2 * counts.len() {
+                true => {
+                    let root_uv = kept.iter().map(|&(i, _, _)| [uv[2 * i], uv[2 * i + 1]]).collect();
+                    set.strand_info = Some(StrandInfo { root_uv, clump: Vec::new() });
+                }
+                false => self.notes.note("curves `uvs` not one per curve: not read", node),
+            }
+        }
         if skipped > 0 {
             self.notes.note("curves with too few points for their basis: skipped", node);
         }

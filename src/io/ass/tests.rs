@@ -326,7 +326,7 @@ fn networks_not_evaluated_keep_the_parameters_value_and_are_reported() {
     // On a surface a ramp along v is drawn in its mean, said.
     let MaterialSource::Inline(m) = &s.imported.contents.meshes[0].material else { panic!() };
     assert_eq!(*m, Material::Diffuse { color: Vec3::splat(0.35) });
-    assert!(w.iter().any(|w| w.contains("varying along v on Kd_color (drawn in their mean)")), "{w:?}");
+    assert!(w.iter().any(|w| w.contains("varying shading networks on Kd_color (drawn in their mean)")), "{w:?}");
 }
 
 #[test]
@@ -391,4 +391,24 @@ fn a_dome_of_a_physical_sky_is_that_sky_and_its_sun_scaled_by_the_dome() {
     // A value that cannot make a sky names its node.
     let e = error("skydome_light\n{\n name d\n color s\n}\nphysical_sky\n{\n name s\n sky_tint 1 -1 0\n}\n");
     assert!(e.contains("sky tint") && e.contains("line"), "{e}");
+}
+
+#[test]
+fn checkerboards_texture_curves_by_their_uvs_and_meshes_by_theirs() {
+    let s = scene(
+        "curves\n{\n name c\n num_points 2 1 UINT 2 2\n points 4 1 VECTOR 0 0 0 0 1 0 1 0 0 1 1 0\n basis \"linear\"\n\
+          uvs 2 1 VECTOR2 0.25 0.25 0.75 0.25\n shader \"h\"\n}\n\
+         hair\n{\n name h\n rootcolor k\n tipcolor k\n}\n\
+         checkerboard\n{\n name k\n color1 1 0 0\n color2 0 1 0\n}\n\
+         polymesh\n{\n name m\n vidxs 3 1 UINT 0 1 2\n vlist 3 1 VECTOR 0 0 0 1 0 0 0 1 0\n shader \"l\"\n}\n\
+         lambert\n{\n name l\n Kd 0.5\n Kd_color k\n}\n",
+    );
+    // Each strand its own cell, root to tip: Arnold's default two cells a side.
+    let (colors, _) = strand_colors(&s);
+    assert_eq!(colors, vec![[0.0, 1.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 0.0]]);
+    let MaterialSource::Inline(Material::Textured(t)) = &s.imported.contents.meshes[0].material else {
+        panic!("{:?}", s.imported.contents.meshes[0].material)
+    };
+    assert_eq!(t.tint, Vec3::splat(0.5));
+    assert!(s.imported.warnings.iter().all(|w| !w.contains("checkerboard")), "{:?}", s.imported.warnings);
 }
