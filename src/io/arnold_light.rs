@@ -65,8 +65,17 @@ pub fn sphere(center: Vec3, radius: f32, emission: Vec3, normalize: bool, camera
 /// A spot light at `position` shining along the unit `direction` with intensity
 /// `emission` inside its cone of full angle `cone_angle` degrees, falling off to dark over
 /// the `penumbra_angle` degrees inside the cone's edge (Arnold user guide, "Spot Light"),
-/// with the inverse-square decay.
-pub fn spot(position: Vec3, direction: Vec3, emission: Vec3, cone_angle: f32, penumbra_angle: f32) -> Light {
+/// with the inverse-square decay. A `radius` is drawn as a point of the same power: a disk
+/// of that radius emits the point's power when `normalize`d, its area times more when not
+/// (a radius of 0 is the point itself).
+pub fn spot(
+    position: Vec3,
+    direction: Vec3,
+    emission: Vec3,
+    [radius, cone_angle, penumbra_angle]: [f32; 3],
+    normalize: bool,
+) -> Light {
+    let emission = if normalize || radius <= 0.0 { emission } else { emission * PI * radius * radius };
     let outer = (0.5 * cone_angle).clamp(0.0, 90.0);
     let inner = (outer - penumbra_angle.max(0.0)).max(0.0);
     Light::Spot {

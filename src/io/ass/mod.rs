@@ -537,18 +537,15 @@ impl Reader<'_> {
             "spot_light" => {
                 let position = m.transform_point3(point(node, "position", Vec3::ZERO)?);
                 let direction = m.transform_vector3(Vec3::NEG_Z).normalize_or(Vec3::NEG_Z);
-                // A disk of `radius` normalized emits the point's power; unnormalized, its
-                // area times more.
                 let radius = num32(node, "radius", 0.0)?.max(0.0) * m.matrix3.determinant().abs().cbrt();
                 if radius > 0.0 {
                     self.notes.note("spot light radii: drawn as a point of the same power", node);
                 }
-                let emission = if normalize { emission } else { emission * std::f32::consts::PI * radius * radius };
                 if num32(node, "cosine_power", 0.0)? != 0.0 {
                     self.notes.note("spot light `cosine_power` other than 0: not applied", node);
                 }
                 let (cone, penumbra) = (num32(node, "cone_angle", 65.0)?, num32(node, "penumbra_angle", 0.0)?);
-                arnold_light::spot(position, direction, emission, cone, penumbra)
+                arnold_light::spot(position, direction, emission, [radius, cone, penumbra], normalize)
             }
             "disk_light" => {
                 // Arnold places a disk by its `position` and `direction` under the matrix;

@@ -412,3 +412,14 @@ fn checkerboards_texture_curves_by_their_uvs_and_meshes_by_theirs() {
     assert_eq!(t.tint, Vec3::splat(0.5));
     assert!(s.imported.warnings.iter().all(|w| !w.contains("checkerboard")), "{:?}", s.imported.warnings);
 }
+
+fn a_spot_light_without_a_radius_shines_normalized_or_not() {
+    for normalize in ["on", "off"] {
+        let lights = inline_lights(&format!(
+            "spot_light\n{{\n name s\n intensity 3\n cone_angle 40\n normalize {normalize}\n}}\n"
+        ));
+        let [Light::Spot { intensity, cos_outer, .. }] = lights.as_slice() else { panic!("{lights:?}") };
+        assert_eq!(*intensity, Vec3::splat(3.0), "normalize {normalize}");
+        assert!((cos_outer - 20f32.to_radians().cos()).abs() < 1e-6);
+    }
+}

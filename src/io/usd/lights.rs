@@ -148,11 +148,19 @@ pub fn read_light(
     if boolean(input(prim, "enableColorTemperature", time)?, false) && num("colorTemperature", 6500.0)? != 6500.0 {
         notes.note("light `colorTemperature` other than 6500 K: not applied".into(), prim);
     }
-    if ["shaping:cone:angle", "shaping:focus", "shaping:ies:file"]
-        .iter()
-        .any(|n| value(prim, &format!("inputs:{n}"), time).ok().flatten().is_some())
-    {
-        notes.note("light shaping (cones, focus, IES profiles): not applied".into(), prim);
+    // A sphere light shaped by a cone is Arnold's spot light (as Arnold-USD reads it).
+    let cone = number(input(prim, "shaping:cone:angle", time)?, "inputs:shaping:cone:angle")?
+        .map(|a| a as f32)
+        .filter(|a| *a > 0.0 && kind == "SphereLight");
+    let authored = |n: &str| value(prim, &format!("inputs:{n}"), time).ok().flatten().is_some();
+    if cone.is_none() && authored("shaping:cone:angle") && kind != "SphereLight" {
+        notes.note("light cones on lights other than sphere lights: not applied".into(), prim);
+    }
+    if authored("shaping:focus") {
+        notes.note("light shaping `focus`: not applied".into(), prim);
+    }
+    if authored("shaping:ies:file") {
+        notes.note("light IES profiles: not applied".into(), prim);
     }
     note_arnold_light_parameters(prim, time, notes);
     // Arnold's default `camera` weight: 1 on a sky dome, 0 on its area lights.
@@ -205,6 +213,18 @@ pub fn read_light(
                 }
                 None => Light::Environment { radiance: emission, camera_visibility },
             }
+        }
+        "SphereLight" if cone.is_some() => {
+            // Arnold-USD: the spot's full cone is twice the USD half-angle, its penumbra
+            // that cone times the softness.
+            let cone_angle = 2.0 * cone.unwrap_or_default();
+            let softness = number(input(prim, "shaping:cone:softness", time)?, "inputs:shaping:cone:softness")?
+                .map_or(0.0, |s| s as f32);
+            anyhow::ensure!(cone_angle.is_finite() && softness.is_finite(), "light cone angles must be finite");
+            let direction = transform.transform_vector3(Vec3::NEG_Z).normalize_or(Vec3::NEG_Z);
+            let radius = size("radius", 0.5)? * scale;
+            let position = transform.transform_point3(Vec3::ZERO);
+            arnold_light::spot(position, direction, emission, [radius, cone_angle, cone_angle * softness], normalize)
         }
         "SphereLight" => {
             let radius = size("radius", 0.5)? * scale;

@@ -1990,3 +1990,33 @@ def DomeLight "Plain" { float inputs:intensity = 0.5 }
     assert!(zenith.z > zenith.x && zenith.z > 0.0, "{zenith}");
     assert_eq!(s.contents.lights[2], Light::Environment { radiance: Vec3::splat(0.5), camera_visibility: 1.0 }.into());
 }
+
+#[test]
+fn a_sphere_light_shaped_by_a_cone_is_arnolds_spot_light() {
+    let body = r#"
+def SphereLight "Spot" (prepend apiSchemas = ["ShapingAPI"]) {
+    float inputs:intensity = 4
+    float inputs:radius = 0
+    float inputs:shaping:cone:angle = 30
+    float inputs:shaping:cone:softness = 0.5
+    float inputs:shaping:focus = 2
+    float xformOp:rotateX = -90
+    uniform token[] xformOpOrder = ["xformOp:rotateX"]
+}
+def RectLight "Rect" (prepend apiSchemas = ["ShapingAPI"]) { float inputs:shaping:cone:angle = 30 }
+"#;
+    let s = read_body(body);
+    let LightSource::Inline(Light::Spot { direction, intensity, cos_inner, cos_outer, .. }) = s.contents.lights[0]
+    else {
+        panic!("{:?}", s.contents.lights[0])
+    };
+    // Turned from −Z to shine down; Arnold's cone of twice the half-angle, its penumbra
+    // the cone times the softness inside the edge: full light within 0°, dark past 30°.
+    assert!(direction.abs_diff_eq(Vec3::NEG_Y, 1e-5), "{direction}");
+    assert_eq!(intensity, Vec3::splat(4.0));
+    assert!((cos_outer - 30f32.to_radians().cos()).abs() < 1e-6 && (cos_inner - 1.0).abs() < 1e-6);
+    assert!(matches!(s.contents.lights[1], LightSource::Inline(Light::Quad { .. })));
+    let w = &s.warnings;
+    assert!(w.iter().any(|w| w.contains("`focus`: not applied")), "{w:?}");
+    assert!(w.iter().any(|w| w.contains("cones on lights other than sphere lights")), "{w:?}");
+}
