@@ -413,6 +413,7 @@ fn checkerboards_texture_curves_by_their_uvs_and_meshes_by_theirs() {
     assert!(s.imported.warnings.iter().all(|w| !w.contains("checkerboard")), "{:?}", s.imported.warnings);
 }
 
+#[test]
 fn a_spot_light_without_a_radius_shines_normalized_or_not() {
     for normalize in ["on", "off"] {
         let lights = inline_lights(&format!(
