@@ -454,13 +454,7 @@ impl<'a, N: Network> Eval<'a, N> {
                 }
             };
         }
-        for (name, slot) in [
-            ("u_frequency", &mut c.u_frequency),
-            ("v_frequency", &mut c.v_frequency),
-            ("u_offset", &mut c.u_offset),
-            ("v_offset", &mut c.v_offset),
-            ("contrast", &mut c.contrast),
-        ] {
+        for (name, slot) in c.numbers_mut() {
             match self.net.value(node, name) {
                 None => {}
                 Some(Value::Numbers(v)) if v.len() == 1 && v[0].is_finite() => *slot = v[0],

@@ -196,6 +196,19 @@ pub struct Checker {
     pub contrast: f32,
 }
 
+impl Checker {
+    /// Its numeric parameters by Arnold's names, for readers to fill.
+    pub fn numbers_mut(&mut self) -> [(&'static str, &mut f32); 5] {
+        [
+            ("u_frequency", &mut self.u_frequency),
+            ("v_frequency", &mut self.v_frequency),
+            ("u_offset", &mut self.u_offset),
+            ("v_offset", &mut self.v_offset),
+            ("contrast", &mut self.contrast),
+        ]
+    }
+}
+
 impl Default for Checker {
     /// Arnold's defaults: white and black cells, two of each over the unit square.
     fn default() -> Self {

@@ -519,13 +519,7 @@ fn checker(shader: &Prim, time: TimeCode, notes: &mut Notes) -> Res<Checker> {
         *slot = vec3(value(shader, &format!("inputs:{name}"), time)?, &what)?.unwrap_or(*slot);
         anyhow::ensure!(slot.is_finite(), "`{what}` must be finite");
     }
-    for (name, slot) in [
-        ("u_frequency", &mut c.u_frequency),
-        ("v_frequency", &mut c.v_frequency),
-        ("u_offset", &mut c.u_offset),
-        ("v_offset", &mut c.v_offset),
-        ("contrast", &mut c.contrast),
-    ] {
+    for (name, slot) in c.numbers_mut() {
         let what = format!("{}.inputs:{name}", shader.path());
         *slot = number(value(shader, &format!("inputs:{name}"), time)?, &what)?.map_or(*slot, |x| x as f32);
         anyhow::ensure!(slot.is_finite(), "`{what}` must be finite");
