@@ -120,9 +120,10 @@ impl PhysicalSky {
         let solid = 2.0 * PI * (1.0 - cos_max);
         let sun_irradiance =
             sun_colour(elevation) * self.sun_tint * (SUN_SCALE * self.intensity * direct_normal(elevation, turbidity));
+        // In the world: turned and scaled as the map is.
         let sun_light = (self.sun_size > 0.0 && solid > 0.0 && sun.y > 0.0).then(|| Light::Sun {
-            direction: sun,
-            radiance: sun_irradiance / solid,
+            direction: placement.to_world(sun),
+            radiance: sun_irradiance / solid * placement.scale(),
             cos_max,
         });
 
@@ -138,17 +139,7 @@ impl PhysicalSky {
             }
         })?;
         let map = self.sky.then_some(Light::EnvironmentMap(map));
-        Ok(sun_light.map(|s| place(&s, placement)).into_iter().chain(map).collect())
-    }
-}
-
-/// The sun disk in the world: turned and scaled by the map's placement.
-fn place(sun: &Light, placement: MapPlacement) -> Light {
-    match *sun {
-        Light::Sun { direction, radiance, cos_max } => {
-            Light::Sun { direction: placement.to_world(direction), radiance: radiance * placement.scale(), cos_max }
-        }
-        ref other => other.clone(),
+        Ok(sun_light.into_iter().chain(map).collect())
     }
 }
 
