@@ -216,8 +216,18 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
 
 /// The parameters read of each node type (others are reported).
 const OPTIONS_READ: [&str; 6] = ["xres", "yres", "camera", "AA_samples", "GI_diffuse_depth", "GI_specular_depth"];
-const CAMERA_READ: [&str; 7] =
-    ["matrix", "fov", "near_clip", "far_clip", "screen_window_min", "screen_window_max", "lens_shift"];
+const CAMERA_READ: [&str; 10] = [
+    "matrix",
+    "position",
+    "look_at",
+    "up",
+    "fov",
+    "near_clip",
+    "far_clip",
+    "screen_window_min",
+    "screen_window_max",
+    "lens_shift",
+];
 const LIGHT_READ: [&str; 19] = [
     "matrix",
     "color",
@@ -435,12 +445,21 @@ impl Reader<'_> {
                 c.name
             ));
         }
-        let m = matrix(c)?;
-        let eye = m.transform_point3(Vec3::ZERO);
-        let forward = m.transform_vector3(Vec3::NEG_Z);
-        let up = m.transform_vector3(Vec3::Y);
+        // Arnold's cameras before its `matrix` (and files still written so) are placed by
+        // `position`, `look_at` and `up`; the matrix wins when both are given. Only a matrix
+        // can scale the camera (and so its clipping range): the look-at direction is a unit.
+        let (eye, forward, up) = match c.param("matrix") {
+            None if c.param("position").is_some() || c.param("look_at").is_some() => {
+                let eye = point(c, "position", Vec3::ZERO)?;
+                (eye, (point(c, "look_at", Vec3::NEG_Z)? - eye).normalize_or_zero(), point(c, "up", Vec3::Y)?)
+            }
+            _ => {
+                let m = matrix(c)?;
+                (m.transform_point3(Vec3::ZERO), m.transform_vector3(Vec3::NEG_Z), m.transform_vector3(Vec3::Y))
+            }
+        };
         if !(forward.length() > 0.0 && up.cross(forward).length() > 0.0) {
-            return Err((c.line, format!("camera `{}`: its matrix gives no view and up directions", c.name)));
+            return Err((c.line, format!("camera `{}`: its placement gives no view and up directions", c.name)));
         }
         let [w, h] = self.out.imported.resolution.unwrap_or([320, 240]);
         let aspect = h as f32 / w as f32;

@@ -424,3 +424,17 @@ fn a_spot_light_without_a_radius_shines_normalized_or_not() {
         assert!((cos_outer - 20f32.to_radians().cos()).abs() < 1e-6);
     }
 }
+
+#[test]
+fn a_camera_without_a_matrix_is_placed_by_position_look_at_and_up() {
+    let cam = |params: &str| scene(&format!("persp_camera\n{{\n name c\n{params}}}\n")).imported.camera.unwrap();
+    // Looking from +X at the origin, +Y up: the matrix whose local −Z points along −X.
+    let placed = cam(" position 5 0 0\n look_at 0 0 0\n up 0 1 0\n");
+    let matrix = cam(" matrix 0 0 -1 0 0 1 0 0 1 0 0 0 5 0 0 1\n");
+    assert_eq!(format!("{placed:?}"), format!("{matrix:?}"));
+    // The matrix wins over a position.
+    let both = cam(" matrix 0 0 -1 0 0 1 0 0 1 0 0 0 5 0 0 1\n position 9 9 9\n");
+    assert_eq!(format!("{both:?}"), format!("{matrix:?}"));
+    let e = error("persp_camera\n{\n name c\n position 1 2 3\n look_at 1 2 3\n}\n");
+    assert!(e.contains("no view and up directions"), "{e}");
+}
