@@ -33,6 +33,7 @@ pub mod arcs;
 pub mod blender;
 pub mod camera;
 pub mod crate_file;
+pub mod crate_legacy;
 pub mod curves;
 mod export;
 pub mod instancer;

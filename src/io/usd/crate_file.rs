@@ -26,32 +26,34 @@ use openusd::usdc::CrateFile;
 pub const MAX_EXPANSION: u64 = 1 << 12;
 /// Deepest nesting of time samples and dictionaries inside values.
 pub const MAX_VALUE_DEPTH: usize = 32;
-/// The oldest crate version the crate reads (older ones reach unimplemented code).
+/// The oldest crate version the crate reads (older ones reach unimplemented code). Layers
+/// opened as files are rewritten first by [`super::crate_legacy::upgrade`]; the layers
+/// inside a `.usdz` package, which the crate reads from the package, are not.
 const MIN_VERSION: [u8; 3] = [0, 4, 0];
 const BOOTSTRAP_BYTES: u64 = 88;
 
 /// Little-endian reads at checked offsets of the file.
-struct Bytes<'a>(&'a [u8]);
+pub(super) struct Bytes<'a>(pub(super) &'a [u8]);
 
 impl Bytes<'_> {
-    fn len(&self) -> u64 {
+    pub(super) fn len(&self) -> u64 {
         self.0.len() as u64
     }
-    fn u64_at(&self, at: u64) -> Result<u64, String> {
+    pub(super) fn u64_at(&self, at: u64) -> Result<u64, String> {
         let at = usize::try_from(at).map_err(|_| "an offset past the end of the file".to_string())?;
         match self.0.get(at..at.saturating_add(8)) {
             Some(b) => Ok(u64::from_le_bytes(b.try_into().expect("8 bytes"))),
             None => Err(format!("a value at byte {at} past the end of the file ({} bytes)", self.0.len())),
         }
     }
-    fn u32_at(&self, at: u64) -> Result<u64, String> {
+    pub(super) fn u32_at(&self, at: u64) -> Result<u64, String> {
         let at = usize::try_from(at).map_err(|_| "an offset past the end of the file".to_string())?;
         match self.0.get(at..at.saturating_add(4)) {
             Some(b) => Ok(u32::from_le_bytes(b.try_into().expect("4 bytes")) as u64),
             None => Err(format!("a value at byte {at} past the end of the file ({} bytes)", self.0.len())),
         }
     }
-    fn byte_at(&self, at: u64) -> Result<u8, String> {
+    pub(super) fn byte_at(&self, at: u64) -> Result<u8, String> {
         usize::try_from(at).ok().and_then(|at| self.0.get(at).copied()).ok_or_else(|| "a byte past the end".into())
     }
 }

@@ -28,13 +28,14 @@ pub enum LayerKind {
 
 /// Checks a layer's bytes and returns them as the crate should read them: text layers
 /// rewritten by [`normalize_numbers`], [`legacy_type_names`] and [`grammar_gaps`] (line
-/// numbers unchanged), binary
-/// crate files (their sizes checked by [`super::crate_file::check`]) and packages as they
-/// are (a package's layers checked by `check_package`).
+/// numbers unchanged), binary crate files of older versions rewritten as
+/// [`super::crate_legacy`] says (their sizes checked by [`super::crate_file::check`]), and
+/// packages as they are (a package's layers checked by `check_package`).
 pub fn prepare_layer(bytes: Vec<u8>) -> Result<(LayerKind, Vec<u8>), String> {
     if bytes.starts_with(USDC_MAGIC) {
+        let bytes = super::crate_legacy::upgrade(bytes)?;
         super::crate_file::check(&bytes)?;
-        return Ok((LayerKind::Crate, bytes));
+        return Ok((LayerKind::Crate, super::crate_legacy::array_sample_times(bytes)?));
     }
     if bytes.starts_with(ZIP_MAGIC) {
         check_package(&bytes)?;

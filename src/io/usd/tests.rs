@@ -845,7 +845,8 @@ fn damaged_binary_crate_files_are_errors_not_aborts() {
         }
     }
     assert!(refused > good.len() / 4, "{refused} of {} damaged files refused", good.len());
-    // A crate version the reader cannot read is refused by name.
+    // A file of this layout marked as an older version is refused as damaged, naming
+    // the version it claims (its sections do not parse in that version's layout).
     let mut old = good.clone();
     old[8..11].copy_from_slice(&[0, 3, 0]);
     std::fs::write(&path, &old).unwrap();
