@@ -5,7 +5,7 @@
 //! samples and evaluates transform stacks; this module turns the composed prims into
 //! tress's scene at one time code (the `--frame`, else the stage's `startTimeCode`):
 //!
-//! - `BasisCurves` and `NurbsCurves` to strand sets ([`curves`]);
+//! - `BasisCurves`, `HermiteCurves` and `NurbsCurves` to strand sets ([`curves`]);
 //! - `Mesh` and the gprims `Sphere`, `Cube`, `Cylinder`, `Cone`, `Capsule` to meshes,
 //!   coloured by a bound `UsdPreviewSurface`'s `diffuseColor` or `displayColor`
 //!   ([`shapes`]);
@@ -383,7 +383,7 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
 
 /// Whether prims of type `kind` draw geometry tress reads: curves, meshes and gprims.
 fn is_drawable(kind: &str) -> bool {
-    matches!(kind, "BasisCurves" | "NurbsCurves" | "Mesh" | "Points") || shapes::GPRIMS.contains(&kind)
+    matches!(kind, "BasisCurves" | "HermiteCurves" | "NurbsCurves" | "Mesh" | "Points") || shapes::GPRIMS.contains(&kind)
 }
 
 /// A curves, mesh, points or gprim prim (of type `kind`) into `contents`, placed by `transform`;
@@ -405,8 +405,12 @@ fn read_drawable(
         return Ok(());
     };
     match kind {
-        "BasisCurves" | "NurbsCurves" => {
-            let read = if kind == "BasisCurves" { curves::read_basis_curves } else { curves::read_nurbs_curves };
+        "BasisCurves" | "HermiteCurves" | "NurbsCurves" => {
+            let read = match kind {
+                "BasisCurves" => curves::read_basis_curves,
+                "HermiteCurves" => curves::read_hermite_curves,
+                _ => curves::read_nurbs_curves,
+            };
             let mut entry = match read(prim, time, transform, skin, notes) {
                 Ok(Some(entry)) => entry,
                 Ok(None) => return Ok(()),

@@ -1,4 +1,5 @@
-//! `BasisCurves` and `NurbsCurves` prims to strand sets, at the frame's time code.
+//! `BasisCurves`, `HermiteCurves` and `NurbsCurves` prims to strand sets, at the frame's
+//! time code.
 
 use super::skel::Skinning;
 use super::values::{doubles, floats, held_value, interpolation, ints, value, vec3s, Interpolation, Res};
@@ -356,12 +357,88 @@ pub fn read_basis_curves(
         }
     };
     let shape = CurveShape { basis, periodic: wrap == "periodic", pinned: wrap == "pinned" };
+    let d = curve_data(prim, time, skin, notes)?;
+    curves_entry(prim, &shape, d, transform, notes)
+}
+
+/// A `HermiteCurves` prim: each span between two points is the cubic Hermite curve of
+/// their outgoing `tangents`, drawn as the cubic Bézier of control points `P0`,
+/// `P0 + T0 / 3`, `P1 − T1 / 3`, `P1` (the same polynomial). Vertex primvars, one per
+/// point, are then one per Bézier segment end (varying). With `skin`, the points are
+/// skinned first (the tangents are not).
+pub fn read_hermite_curves(
+    prim: &Prim,
+    time: TimeCode,
+    transform: Affine3A,
+    skin: Option<&Skinning>,
+    notes: &mut Notes,
+) -> Res<Option<HairEntry>> {
     let mut d = curve_data(prim, time, skin, notes)?;
+    let tangents = vec3s(value(prim, "tangents", time)?, "tangents")?.unwrap_or_default();
+    if tangents.len() != d.points.len() {
+        notes.note(
+            format!(
+                "HermiteCurves with {} `tangents` for {} points: drawn through their points",
+                tangents.len(),
+                d.points.len()
+            ),
+            prim,
+        );
+        return curves_entry(prim, &CurveShape { basis: None, periodic: false, pinned: false }, d, transform, notes);
+    }
+    anyhow::ensure!(tangents.iter().all(|t| t.is_finite()), "`tangents` must be finite");
+    let (mut points, mut at) = (Vec::new(), 0);
+    for n in &mut d.counts {
+        let curve = d.points[at..at + *n].iter().zip(&tangents[at..at + *n]);
+        for (i, (&p, &t)) in curve.enumerate() {
+            if i > 0 {
+                points.push(p - t / 3.0);
+            }
+            points.push(p);
+            if i + 1 < *n {
+                points.push(p + t / 3.0);
+            }
+        }
+        at += *n;
+        *n = (3 * *n).saturating_sub(2);
+    }
+    d.points = points;
+    vertex_as_varying(&mut d.widths);
+    vertex_as_varying(&mut d.colors);
+    vertex_as_varying(&mut d.uvs);
+    curves_entry(
+        prim,
+        &CurveShape { basis: Some(CubicBasis::Bezier), periodic: false, pinned: false },
+        d,
+        transform,
+        notes,
+    )
+}
+
+/// A vertex primvar of Hermite curves, one per point, as the varying primvar (one per
+/// segment end) of the Bézier curves they are drawn as.
+fn vertex_as_varying<T>(primvar: &mut Option<(Vec<T>, Interpolation)>) {
+    if let Some((_, interp)) = primvar {
+        if *interp == Interpolation::Vertex {
+            *interp = Interpolation::Varying;
+        }
+    }
+}
+
+/// Curves of `shape` through the control points of `d` as a hair entry, with their
+/// primvars fitted (see `check_primvars`); `None` when no curve has enough points.
+fn curves_entry(
+    prim: &Prim,
+    shape: &CurveShape,
+    mut d: CurveData,
+    transform: Affine3A,
+    notes: &mut Notes,
+) -> Res<Option<HairEntry>> {
     let varying_total: usize = d.counts.iter().map(|&n| shape.ends(n)).sum();
     let constant_color = d.check_primvars(varying_total, prim, notes);
     let widths = d.widths.as_ref().map(|(w, i)| (w.as_slice(), *i));
     let colors = d.colors.as_ref().filter(|_| constant_color.is_none()).map(|(c, i)| (c.as_slice(), *i));
-    let (mut set, kept, skipped) = strands(&shape, &d.points, &d.counts, (widths, d.fallback_width), colors)?;
+    let (mut set, kept, skipped) = strands(shape, &d.points, &d.counts, (widths, d.fallback_width), colors)?;
     if let Some((uv, interp)) = &d.uvs {
         let root_uv = kept.iter().map(|&(i, offset, varying)| root_uv(uv, *interp, i, offset, varying)).collect();
         set.strand_info = Some(StrandInfo { root_uv, clump: Vec::new() });

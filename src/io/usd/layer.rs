@@ -180,8 +180,9 @@ pub fn normalize_numbers(text: &str) -> String {
 }
 
 /// Type names older layers use (USD's `Sdf` value type aliases, as Houdini and early
-/// exporters write them) and the names the crate knows them by.
-const TYPE_ALIASES: [(&str, &str); 27] = [
+/// exporters write them; the parser of USD's text format still registers them) and the
+/// names the crate knows them by.
+const TYPE_ALIASES: [(&str, &str); 40] = [
     ("Vec2i", "int2"),
     ("Vec3i", "int3"),
     ("Vec4i", "int4"),
@@ -194,21 +195,34 @@ const TYPE_ALIASES: [(&str, &str); 27] = [
     ("Vec2d", "double2"),
     ("Vec3d", "double3"),
     ("Vec4d", "double4"),
+    ("Point", "point3d"),
     ("PointHalf", "point3h"),
     ("PointFloat", "point3f"),
     ("PointDouble", "point3d"),
+    ("Normal", "normal3d"),
     ("NormalHalf", "normal3h"),
     ("NormalFloat", "normal3f"),
     ("NormalDouble", "normal3d"),
+    ("Vector", "vector3d"),
+    ("VectorFloat", "vector3f"),
+    ("Color", "color3d"),
     ("ColorHalf", "color3h"),
     ("ColorFloat", "color3f"),
     ("ColorDouble", "color3d"),
     ("Color4Half", "color4h"),
     ("Color4Float", "color4f"),
     ("Color4Double", "color4d"),
+    ("Quath", "quath"),
+    ("Quatf", "quatf"),
+    ("Quatd", "quatd"),
     ("Matrix2d", "matrix2d"),
     ("Matrix3d", "matrix3d"),
     ("Matrix4d", "matrix4d"),
+    ("Frame", "frame4d"),
+    ("Transform", "matrix4d"),
+    ("PointIndex", "int"),
+    ("EdgeIndex", "int"),
+    ("FaceIndex", "int"),
 ];
 
 /// Rewrites `TYPE_ALIASES` where they stand as an attribute's type: a word (outside
@@ -222,13 +236,11 @@ pub fn legacy_type_names(text: &str) -> String {
         if !b[i].is_ascii_uppercase() || (i > 0 && (ident(b[i - 1]) || b[i - 1] == b':')) {
             return;
         }
-        let Some(&(from, to)) = TYPE_ALIASES.iter().find(|(from, _)| b[i..].starts_with(from.as_bytes())) else {
+        let word = b[i..].iter().take_while(|&&c| ident(c)).count();
+        let Some(&(from, to)) = TYPE_ALIASES.iter().find(|(from, _)| from.as_bytes() == &b[i..i + word]) else {
             return;
         };
         let mut j = i + from.len();
-        if b.get(j).copied().is_some_and(ident) {
-            return;
-        }
         if b[j..].starts_with(b"[]") {
             j += 2;
         }
@@ -254,11 +266,16 @@ pub fn legacy_type_names(text: &str) -> String {
 /// `matrix4d[]`.
 const ARRAY_STAND_INS: [(&str, &str); 3] = [("uint[]", "int64[]"), ("uint64[]", "int64[]"), ("matrix[]", "matrix4d[]")];
 
-/// Rewrites three forms of the USDA grammar (Pixar's `Sdf` text format) the crate's parser
+/// Rewrites forms of the USDA grammar (Pixar's `Sdf` text format) the crate's parser
 /// rejects, outside strings and paths, so the rest of the layer reads:
+/// - spaces or tabs after the `#usda 1.0` header (the crate wants the line break right
+///   after the version) are dropped;
 /// - `//` line comments (the format's lexer skips `#`, `//` and `/* */` comments; the
 ///   crate only `#` and `/* */`) become `# ` comments;
 /// - `uint[]` and `uint64[]` attributes become `int64[]`, `matrix[]` ones `matrix4d[]`;
+/// - the legacy variability `config` becomes `uniform`, as USD's parser converts it;
+/// - an `asset` or `asset[]` attribute's values written as strings (`"tex.png"`, which
+///   USD's parser takes as asset paths) become asset paths `@tex.png@`;
 /// - the `@path@` samples of an `asset` attribute's `.timeSamples` (an IES profile or a
 ///   volume file per frame; the crate reads no asset there) become the strings `"path"`.
 ///
@@ -266,6 +283,12 @@ const ARRAY_STAND_INS: [(&str, &str); 3] = [("uint[]", "int64[]"), ("uint64[]", 
 pub fn grammar_gaps(text: &str) -> String {
     let ident = |c: u8| c.is_ascii_alphanumeric() || c == b'_' || c == b':';
     let mut edits: Vec<(usize, usize, String)> = Vec::new();
+    let header = &text[..text.find('\n').unwrap_or(text.len())];
+    let header = header.strip_suffix('\r').unwrap_or(header);
+    let kept = header.trim_end_matches([' ', '\t']).len();
+    if header.starts_with("#usda") && kept < header.len() {
+        edits.push((kept, header.len(), String::new()));
+    }
     let mut asset_blocks: Vec<usize> = Vec::new();
     scan(text, |b, i, _| {
         if b[i] == b'/' && b.get(i + 1) == Some(&b'/') {
@@ -280,12 +303,24 @@ pub fn grammar_gaps(text: &str) -> String {
                 edits.push((i, i + from.len(), to.into()));
             }
         }
-        if b[i..].starts_with(b"asset") && b.get(i + 5).is_some_and(|c| *c == b' ' || *c == b'\t') {
-            // `asset NAME.timeSamples = {` on one line.
+        let space = |at: usize| b.get(at).is_some_and(|c| *c == b' ' || *c == b'\t');
+        if b[i..].starts_with(b"config") && space(i + 6) {
+            // Only as a variability: a type and the attribute's name follow.
+            let next = i + 6 + b[i + 6..].iter().take_while(|&&c| c == b' ' || c == b'\t').count();
+            if b.get(next).is_some_and(|c| c.is_ascii_alphabetic()) {
+                edits.push((i, i + 6, "uniform".into()));
+            }
+        }
+        let array = b[i..].starts_with(b"asset[]");
+        if b[i..].starts_with(b"asset") && (space(i + 5) || array && space(i + 7)) {
             let line_end = b[i..].iter().position(|&c| c == b'\n').map_or(b.len(), |n| i + n);
-            let decl: String = String::from_utf8_lossy(&b[i + 5..line_end]).split_whitespace().collect();
+            let decl_at = i + if array { 7 } else { 5 };
+            let decl: String = String::from_utf8_lossy(&b[decl_at..line_end]).split_whitespace().collect();
             if decl.contains(".timeSamples={") {
-                asset_blocks.push(i + 5 + b[i + 5..line_end].iter().position(|&c| c == b'{').unwrap_or(0));
+                // `asset NAME.timeSamples = {` on one line.
+                asset_blocks.push(decl_at + b[decl_at..line_end].iter().position(|&c| c == b'{').unwrap_or(0));
+            } else if decl.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+                edits.extend(quoted_assets(b, decl_at, line_end));
             }
         }
     });
@@ -324,6 +359,33 @@ pub fn grammar_gaps(text: &str) -> String {
     }
     out.push_str(&text[last..]);
     out
+}
+
+/// The edits that make asset paths of the plain strings in an attribute's value on
+/// `b[from..line_end]` (after its `=`, up to the metadata's `(` or the line's end): each
+/// `"` of a one-line string holding no `@`, `\` or `'` becomes `@`.
+fn quoted_assets(b: &[u8], from: usize, line_end: usize) -> Vec<(usize, usize, String)> {
+    let Some(eq) = b[from..line_end].iter().position(|&c| c == b'=') else { return Vec::new() };
+    let mut edits = Vec::new();
+    let mut j = from + eq + 1;
+    while j < line_end {
+        match b[j] {
+            b'(' | b'#' | b'@' => break,
+            b'"' if b[j..].starts_with(b"\"\"\"") => break,
+            b'"' => {
+                let Some(len) = b[j + 1..line_end].iter().position(|&c| c == b'"') else { break };
+                let body = &b[j + 1..j + 1 + len];
+                if body.iter().any(|c| matches!(c, b'@' | b'\\' | b'\'')) {
+                    break;
+                }
+                edits.push((j, j + 1, "@".into()));
+                edits.push((j + 1 + len, j + 2 + len, "@".into()));
+                j += len + 2;
+            }
+            _ => j += 1,
+        }
+    }
+    edits
 }
 
 /// Checks that every prim a layer defines (`def`, `over` or `class`, then an optional type,
