@@ -383,7 +383,8 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
 
 /// Whether prims of type `kind` draw geometry tress reads: curves, meshes and gprims.
 fn is_drawable(kind: &str) -> bool {
-    matches!(kind, "BasisCurves" | "HermiteCurves" | "NurbsCurves" | "Mesh" | "Points") || shapes::GPRIMS.contains(&kind)
+    matches!(kind, "BasisCurves" | "HermiteCurves" | "NurbsCurves" | "Mesh" | "Points")
+        || shapes::GPRIMS.contains(&kind)
 }
 
 /// A curves, mesh, points or gprim prim (of type `kind`) into `contents`, placed by `transform`;

@@ -626,28 +626,7 @@ mod tests {
         let good = legacy_file([0, 0, 1]);
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("damaged.usd");
-        let read = |bytes: &[u8]| {
-            std::fs::write(&path, bytes).unwrap();
-            match read_usd(&path, &ImportOptions::default()) {
-                Ok(_) => true,
-                Err(e) => {
-                    assert!(e.to_string().starts_with(&path.display().to_string()), "{e}");
-                    false
-                }
-            }
-        };
-        assert!(read(&good));
-        let mut refused = 0;
-        for cut in 0..good.len() {
-            refused += !read(&good[..cut]) as usize;
-        }
-        for at in (0..good.len() - 8).step_by(4) {
-            for v in [1u64 << 40, u64::MAX, 0, 0x7fff_ffff_ffff] {
-                let mut bad = good.clone();
-                bad[at..at + 8].copy_from_slice(&v.to_le_bytes());
-                refused += !read(&bad) as usize;
-            }
-        }
+        let refused = crate::io::usd::tests::damaged_copies_refused(&good, &path, 1);
         assert!(refused > good.len(), "{refused} damaged files refused");
         // /Other's sibling offset pointed back at the root's record: a loop, refused.
         let paths = good.windows(8).position(|w| w == b"PATHS\0\0\0").unwrap();

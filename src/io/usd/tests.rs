@@ -419,7 +419,9 @@ fn hermite_curves_follow_their_tangents() {
     assert!(point(c, 3 * half).distance(Vec3::new(1.625, 0.625, 0.0)) < 1e-5, "{}", point(c, 3 * half));
     assert_eq!((point(c, PIECES_PER_SEGMENT), c.points[PIECES_PER_SEGMENT][3]), (Vec3::new(1.0, 1.0, 0.0), 0.25));
     // Without a tangent per point, drawn through the points, and said.
-    let s = read_body(r#"def HermiteCurves "H" { int[] curveVertexCounts = [2] point3f[] points = [(0, 0, 0), (1, 1, 0)] }"#);
+    let s = read_body(
+        r#"def HermiteCurves "H" { int[] curveVertexCounts = [2] point3f[] points = [(0, 0, 0), (1, 1, 0)] }"#,
+    );
     assert_eq!((point(strands(&s, 0), 0), point(strands(&s, 0), 1)), (Vec3::ZERO, Vec3::ONE.with_z(0.0)));
     assert!(s.warnings.iter().any(|w| w.contains("HermiteCurves with 0 `tangents` for 2 points")), "{:?}", s.warnings);
 }
@@ -889,17 +891,15 @@ fn binary_crate_files_and_packages_read_like_text() {
     }
 }
 
-/// Damaged binary crate files: truncated anywhere, or with any 8 bytes replaced by a huge
-/// count, a negative offset or zeros, they are errors naming the file (or still read),
-/// never an abort on an impossible allocation, a panic or a stack overflow.
-#[test]
-fn damaged_binary_crate_files_are_errors_not_aborts() {
-    let dir = tempfile::tempdir().unwrap();
-    let good = std::fs::read(binary_copy(&format!("{SCENE}\n{ANIMATED}"), dir.path(), "usdc")).unwrap();
-    let path = dir.path().join("damaged.usdc");
+/// How many of the damaged copies of the binary layer `good` are refused: cut short every
+/// `cut_step` bytes, and with each 8 bytes at a multiple of 4 replaced by a huge count, a
+/// negative offset or zeros. Each is read as `path`; a refusal must be an error naming it
+/// (a read is fine too), never a panic, an abort on an impossible allocation or a stack
+/// overflow.
+pub(super) fn damaged_copies_refused(good: &[u8], path: &Path, cut_step: usize) -> usize {
     let read = |bytes: &[u8]| {
-        std::fs::write(&path, bytes).unwrap();
-        match read_usd(&path, &ImportOptions::default()) {
+        std::fs::write(path, bytes).unwrap();
+        match read_usd(path, &ImportOptions::default()) {
             Ok(_) => true,
             Err(e) => {
                 assert!(e.to_string().starts_with(&path.display().to_string()), "{e}");
@@ -907,18 +907,28 @@ fn damaged_binary_crate_files_are_errors_not_aborts() {
             }
         }
     };
-    assert!(read(&good));
+    assert!(read(good));
     let mut refused = 0;
-    for cut in (0..good.len()).step_by(13) {
+    for cut in (0..good.len()).step_by(cut_step) {
         refused += !read(&good[..cut]) as usize;
     }
     for at in (0..good.len().saturating_sub(8)).step_by(4) {
         for v in [1u64 << 40, u64::MAX, 0, 0x7fff_ffff_ffff] {
-            let mut bad = good.clone();
+            let mut bad = good.to_vec();
             bad[at..at + 8].copy_from_slice(&v.to_le_bytes());
             refused += !read(&bad) as usize;
         }
     }
+    refused
+}
+
+/// Damaged binary crate files are errors naming the file, never aborts.
+#[test]
+fn damaged_binary_crate_files_are_errors_not_aborts() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = std::fs::read(binary_copy(&format!("{SCENE}\n{ANIMATED}"), dir.path(), "usdc")).unwrap();
+    let path = dir.path().join("damaged.usdc");
+    let refused = damaged_copies_refused(&good, &path, 13);
     assert!(refused > good.len() / 4, "{refused} of {} damaged files refused", good.len());
     // A file of this layout marked as an older version is refused as damaged, naming
     // the version it claims (its sections do not parse in that version's layout).
