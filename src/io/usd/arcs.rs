@@ -97,60 +97,106 @@ fn string_end(b: &[u8], mut i: usize, q: u8) -> usize {
 
 const ARC_KEYS: [&str; 5] = ["inherits", "specializes", "references", "payload", "subLayers"];
 
+/// What an open bracket holds. Prims are told from the dictionaries, lists and variant sets
+/// around them by where their `{` opens, not by depth alone: a `customData` or `variants`
+/// dictionary in a prim's metadata opens a `{` before the prim's body does.
+enum Frame {
+    /// A prim's body, or one of its variants' (whose child prims and arcs compose into
+    /// the prim, so are counted as its own).
+    Body(String),
+    /// The variants of one of the prim's variant sets: `variantSet "name" = { … }`.
+    Variants(String),
+    /// The metadata `( … )` of a prim or variant (of the prim it belongs to), or of the
+    /// layer (`None`): where arcs are written.
+    Meta(Option<String>),
+    /// A dictionary, list, tuple or property's metadata.
+    Other,
+}
+
+/// What the tokens since the last bracket began, awaiting the `{` of its body.
+enum Opening {
+    /// A prim spec: `def Type "Name"`.
+    Prim(String),
+    /// A variant set of this prim: `variantSet "name" =`.
+    VariantSet(String),
+    /// A variant, of a variant set of this prim: `"name"`.
+    Variant(String),
+}
+
 /// The composition arcs of a text layer.
 fn parse(text: &str) -> LayerArcs {
     let t = tokens(text);
     let mut out = LayerArcs::default();
-    // Open prims with the bracket depth their `{` opened at.
-    let mut open: Vec<(String, usize)> = Vec::new();
-    let mut pending: Option<String> = None;
-    let mut depth = 0usize;
+    let mut frames: Vec<Frame> = Vec::new();
+    let mut opening: Option<Opening> = None;
     let mut i = 0;
     while i < t.len() {
-        match &t[i] {
-            Token::Word(w) if matches!(w.as_str(), "def" | "over" | "class") => {
+        // The prim whose body the token is directly in (`""`: the layer's root).
+        let body = match frames.last() {
+            None => Some(""),
+            Some(Frame::Body(p)) => Some(p.as_str()),
+            Some(_) => None,
+        };
+        match (&t[i], frames.last()) {
+            (Token::Word(w), _) if matches!(w.as_str(), "def" | "over" | "class") => {
                 // `def Type "Name"` or `def "Name"`.
-                let name = t[i + 1..t.len().min(i + 3)].iter().find_map(|x| match x {
-                    Token::Str(s) => Some(s.clone()),
+                let name = match (t.get(i + 1), t.get(i + 2)) {
+                    (Some(Token::Str(s)), _) | (Some(Token::Word(_)), Some(Token::Str(s))) => Some(s),
                     _ => None,
-                });
-                if let Some(name) = name {
-                    let parent = open.last().map_or(String::new(), |(p, _)| p.clone());
-                    pending = Some(format!("{parent}/{name}"));
+                };
+                if let (Some(parent), Some(name)) = (body, name) {
+                    opening = Some(Opening::Prim(format!("{parent}/{name}")));
                 }
             }
-            Token::Word(w) if w == "defaultPrim" && open.is_empty() && pending.is_none() => {
+            (Token::Word(w), Some(Frame::Body(p))) if w == "variantSet" => {
+                opening = Some(Opening::VariantSet(p.clone()));
+            }
+            (Token::Str(_), Some(Frame::Variants(p))) => opening = Some(Opening::Variant(p.clone())),
+            (Token::Word(w), Some(Frame::Meta(None))) if w == "defaultPrim" => {
                 if let (Some(Token::Punct(b'=')), Some(Token::Str(s))) = (t.get(i + 1), t.get(i + 2)) {
                     out.default_prim = Some(s.clone());
                 }
             }
-            Token::Word(w) if ARC_KEYS.contains(&w.as_str()) && t.get(i + 1) == Some(&Token::Punct(b'=')) => {
+            (Token::Word(w), Some(Frame::Meta(holder)))
+                if ARC_KEYS.contains(&w.as_str()) && t.get(i + 1) == Some(&Token::Punct(b'=')) =>
+            {
                 let deleted = i > 0 && t[i - 1] == Token::Word("delete".into());
                 let (arcs, next) = arc_value(&t, i + 2);
-                let prim = pending.clone().or_else(|| open.last().map(|(p, _)| p.clone()));
-                match (w.as_str(), prim) {
+                match (w.as_str(), holder) {
                     _ if deleted => {}
                     ("subLayers", None) => out.sublayers.extend(arcs.into_iter().filter_map(|a| a.asset)),
                     ("subLayers", Some(_)) => {}
-                    (_, Some(p)) => out.prims.entry(p).or_default().extend(arcs),
+                    (_, Some(p)) => out.prims.entry(p.clone()).or_default().extend(arcs),
                     (_, None) => {}
                 }
                 i = next;
                 continue;
             }
-            Token::Punct(b'(' | b'[') => depth += 1,
-            Token::Punct(b')' | b']') => depth = depth.saturating_sub(1),
-            Token::Punct(b'{') => {
-                depth += 1;
-                if let Some(p) = pending.take() {
-                    open.push((p, depth));
-                }
+            (Token::Punct(b'('), top) => {
+                // The opening stays: its body's `{` follows the metadata.
+                let frame = match (top, &opening) {
+                    (None | Some(Frame::Body(_)), Some(Opening::Prim(p)))
+                    | (Some(Frame::Variants(_)), Some(Opening::Variant(p))) => Frame::Meta(Some(p.clone())),
+                    (None, None) => Frame::Meta(None),
+                    _ => Frame::Other,
+                };
+                frames.push(frame);
             }
-            Token::Punct(b'}') => {
-                if open.last().is_some_and(|(_, d)| *d == depth) {
-                    open.pop();
+            (Token::Punct(b'{'), top) => {
+                let frame = match (top, &opening) {
+                    (None | Some(Frame::Body(_)), Some(Opening::Prim(p)))
+                    | (Some(Frame::Variants(_)), Some(Opening::Variant(p))) => Frame::Body(p.clone()),
+                    (Some(Frame::Body(_)), Some(Opening::VariantSet(p))) => Frame::Variants(p.clone()),
+                    _ => Frame::Other,
+                };
+                if !matches!(frame, Frame::Other) {
+                    opening = None;
                 }
-                depth = depth.saturating_sub(1);
+                frames.push(frame);
+            }
+            (Token::Punct(b'['), _) => frames.push(Frame::Other),
+            (Token::Punct(b')' | b']' | b'}'), _) => {
+                frames.pop();
             }
             _ => {}
         }

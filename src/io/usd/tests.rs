@@ -866,6 +866,95 @@ fn arcs_back_to_their_own_prim_are_an_error_naming_the_chain() {
     assert_eq!(s.contents.meshes.len(), 1);
 }
 
+/// A dictionary in a prim's metadata (`customData`, `variants`) opens braces before the
+/// prim's body; the prim's children are still its own, and a variant's arcs its prim's.
+#[test]
+fn arcs_under_dictionary_metadata_and_in_variants_belong_to_their_prim() {
+    // `/i/a` references the root prim `/a`.
+    let child = r#"#usda 1.0
+over Xform "a"
+{
+}
+over Xform "i" (
+    customData = {
+        string s = "x"
+    }
+)
+{
+    def Xform "a" (
+        references = </a>
+    )
+    {
+    }
+}
+"#;
+    // A variant of `/world/opt` references its sibling.
+    let variant = r#"#usda 1.0
+def Xform "world"
+{
+    def Xform "target"
+    {
+    }
+    def "opt" (
+        variants = {
+            string state = "unloaded"
+        }
+        add variantSets = "state"
+    )
+    {
+        variantSet "state" = {
+            "unloaded" {
+            }
+            "loaded" (
+                references = </world/target>
+            ) {
+            }
+        }
+    }
+}
+"#;
+    for text in [child, variant] {
+        if let Err(e) = read_text(text) {
+            panic!("{text}: {e}");
+        }
+    }
+}
+
+#[test]
+fn cycles_under_dictionary_metadata_and_through_variants_are_still_errors() {
+    let child = r#"def Xform "A" (
+    customData = {
+        string s = "} {"
+        dictionary d = { int n = 1 }
+    }
+)
+{
+    def Xform "B" (
+        references = </A>
+    )
+    {
+    }
+}"#;
+    let variant = r#"def Xform "A" (
+    variants = {
+        string v = "on"
+    }
+    prepend variantSets = "v"
+)
+{
+    variantSet "v" = {
+        "on" (
+            references = </A>
+        ) {
+        }
+    }
+}"#;
+    for (body, chain) in [(child, "/A/B -> /A"), (variant, "/A -> /A")] {
+        let e = read_with("", body, &ImportOptions::default()).unwrap_err().to_string();
+        assert!(e.contains("composition arcs form a cycle") && e.contains(chain), "{body}: {e}");
+    }
+}
+
 /// `text` written by the crate as a binary crate layer (`usdc`) or package (`usdz`).
 fn binary_copy(text: &str, dir: &Path, ext: &str) -> std::path::PathBuf {
     let src = dir.join("src.usda");
