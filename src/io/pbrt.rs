@@ -58,11 +58,17 @@
 //! prepared; one that cannot be used is a constant sky of the light's colour, with a
 //! warning naming the file.
 //!
+//! **Area lights.** `AreaLightSource "diffuse"` (pbrt-v3 also calls it `"area"`) turns
+//! the shapes after it in its attribute block into emitting meshes, as a `Light::Mesh`
+//! replaces an emitting mesh everywhere in tress: `L` × `scale`, or v4's `power` over π ×
+//! the shape's area (per side), from the side pbrt's surface normal faces, or both with
+//! `twosided` (Pharr et al. 4th ed. §12.5).
+//!
 //! **Handedness.** pbrt's camera space is left-handed, tress's right-handed: rendered
 //! as they are, pbrt scenes would come out mirrored. The import mirrors the world about the
 //! camera's vertical plane instead, so images match pbrt's.
 //!
-//! Everything else (textures, media, area lights, object instances, other shapes and
+//! Everything else (textures, media, other area lights, object instances, other shapes and
 //! cameras) is skipped with one warning per kind; spectra other than `rgb` become grey of
 //! the same scale. Every parameter the import does not read is reported once per
 //! directive and name, with the file and line of its first use and how often it recurs,
@@ -74,8 +80,8 @@ use crate::geometry::curve::{cubic_point, CubicBasis};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::{Light, MapPlacement};
 use crate::scene::{
-    CameraDesc, CameraProjection, EnvironmentFile, Film, FilmFit, HairEntry, HairSource, LightSource, MeshEntry,
-    MeshSource, Projection,
+    CameraDesc, CameraProjection, EnvironmentFile, Film, FilmFit, HairEntry, HairSource, LightSource, MaterialSource,
+    MeshEntry, MeshSource, Projection,
 };
 use crate::shading::hair_bsdf::{color_from_sigma_a, Absorption, HairParams, PhysicalHair};
 use crate::shading::Material;
@@ -292,6 +298,17 @@ impl Params {
         }
     }
 
+    fn boolean(&self, name: &str, default: bool) -> Res<bool> {
+        match self.get(name) {
+            None => Ok(default),
+            Some(p) => match p.strings.as_slice() {
+                [t] if t == "true" => Ok(true),
+                [f] if f == "false" => Ok(false),
+                _ => Err((p.line, format!("\"{}\" must be true or false", p.name))),
+            },
+        }
+    }
+
     fn point3s(&self, name: &str) -> Res<Option<Vec<DVec3>>> {
         let Some(p) = self.get(name) else { return Ok(None) };
         if p.numbers.len() % 3 != 0 {
@@ -347,6 +364,18 @@ struct State {
     ctm: DMat4,
     material: usize,
     reverse: bool,
+    /// The `AreaLightSource` the shapes that follow emit, in this attribute block.
+    area_light: Option<AreaLight>,
+}
+
+/// A `diffuse` area light (Pharr et al. 4th ed. §12.5, "DiffuseAreaLight"): every shape
+/// under it emits `radiance` from the side its surface normal faces, or from both sides.
+#[derive(Clone, Copy)]
+struct AreaLight {
+    radiance: Vec3,
+    two_sided: bool,
+    /// pbrt-v4's `power`: the radiance is scaled so that each shape emits this many watts.
+    power: Option<f32>,
 }
 
 struct Parser {
@@ -397,7 +426,7 @@ impl Parser {
         Parser {
             dir,
             out: Imported::default(),
-            state: State { ctm: DMat4::IDENTITY, material: 0, reverse: false },
+            state: State { ctm: DMat4::IDENTITY, material: 0, reverse: false, area_light: None },
             stack: Vec::new(),
             named_coords: HashMap::new(),
             named_materials: HashMap::new(),
@@ -701,8 +730,15 @@ impl Parser {
                 self.open_objects.pop();
                 self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
             }
-            "Texture" | "AreaLightSource" | "MakeNamedMedium" | "PixelFilter" | "Accelerator" | "ColorSpace"
-            | "Option" | "Attribute" | "MediumInterface" => {
+            "AreaLightSource" => {
+                let (kind, p) = named(lex, t)?;
+                self.state.area_light = self.area_light(&kind, &p)?;
+                if self.state.area_light.is_some() {
+                    self.check_used("AreaLightSource", &kind, &p);
+                }
+            }
+            "Texture" | "MakeNamedMedium" | "PixelFilter" | "Accelerator" | "ColorSpace" | "Option" | "Attribute"
+            | "MediumInterface" => {
                 let _ = rest_params(lex)?;
                 self.warnings.insert(format!("`{}` is not supported: skipped", t.text));
             }
@@ -902,18 +938,7 @@ impl Parser {
         // pbrt-v4's photometric alternatives to `scale` (Pharr et al. 4th ed. §12.1-12.5):
         // a point light's power spreads over 4π sr, a spot's over its cone, a distant or
         // infinite light's illuminance is the irradiance it gives a surface facing it.
-        let positive = |name: &str| -> Res<Option<f32>> {
-            match p.has(name) {
-                true => match p.float(name, 0.0)? {
-                    v if !(v.is_finite() && v > 0.0) => {
-                        Err((p.line, format!("light \"{kind}\": {name} {v} must be positive")))
-                    }
-                    v if (v as f32).is_finite() && v as f32 > 0.0 => Ok(Some(v as f32)),
-                    _ => Err((p.line, format!("light \"{kind}\": {name} is beyond single precision"))),
-                },
-                false => Ok(None),
-            }
-        };
+        let positive = |name: &str| positive(p, &format!("light \"{kind}\""), name);
         // pbrt-v3's lights take `samples` (shadow rays per shading point): noise, not look.
         p.ignore(&["samples", "nsamples"]);
         let light = match kind {
@@ -996,6 +1021,70 @@ impl Parser {
         Ok(true)
     }
 
+    /// An `AreaLightSource`: `diffuse` or `area` (`L` × `scale`, `twosided`, v4's `power`); other
+    /// kinds are reported and their shapes drawn unlit.
+    fn area_light(&mut self, kind: &str, p: &Params) -> Res<Option<AreaLight>> {
+        // pbrt-v3 names the diffuse area light `area` too.
+        if kind != "diffuse" && kind != "area" {
+            self.warnings.insert(format!("area light \"{kind}\" is not supported: its shapes are drawn, not lit"));
+            return Ok(None);
+        }
+        p.ignore(&["samples", "nsamples"]);
+        let w = &mut self.warnings;
+        let radiance = p.color("L", Vec3::ONE, w)? * p.color("scale", Vec3::ONE, w)?;
+        if !(radiance.is_finite() && radiance.min_element() >= 0.0) {
+            return Err((p.line, "area light \"diffuse\": its emission must be finite and not negative".into()));
+        }
+        if p.has("filename") {
+            w.insert("area lights' image textures (`filename`) are not applied: they emit `L`".into());
+        }
+        let two_sided = p.boolean("twosided", false)?;
+        Ok(Some(AreaLight { radiance, two_sided, power: positive(p, "area light \"diffuse\"", "power")? }))
+    }
+
+    /// The mesh of a shape under an area light, placed by the current transform, as the
+    /// light it is (it replaces the shape, as an emitting mesh does in tress). The side it
+    /// emits from is pbrt's surface normal: the one the shape's vertex normals face when it
+    /// has them (spheres, disks and cylinders face out), else the triangles' winding, a
+    /// mirroring transform turning it; `ReverseOrientation` turns it again.
+    fn push_area_light(&mut self, light: AreaLight, mesh: &TriangleMesh, line: u32) -> Res<()> {
+        let to_world = Affine3A::from_mat4(self.state.ctm.as_mat4());
+        let normal_to_world = to_world.matrix3.inverse().transpose();
+        let mirror = to_world.matrix3.determinant() < 0.0;
+        let mut triangles = Vec::with_capacity(mesh.indices.len() * if light.two_sided { 2 } else { 1 });
+        for (i, corners) in mesh.indices.iter().enumerate() {
+            let [a, b, c] = mesh.corners(i as u32).map(|q| to_world.transform_point3(q));
+            let winding = (b - a).cross(c - a);
+            let facing = match &mesh.normals {
+                Some(n) => normal_to_world * corners.iter().map(|&k| n[k as usize]).sum::<Vec3>(),
+                None if mirror => -winding,
+                None => winding,
+            };
+            let front = (winding.dot(facing) >= 0.0) != self.state.reverse;
+            triangles.push(if front { [a, b, c] } else { [a, c, b] });
+            if light.two_sided {
+                triangles.push(if front { [a, c, b] } else { [a, b, c] });
+            }
+        }
+        let Some(mut emitter) = crate::light::MeshLight::new(triangles, light.radiance, 1.0) else {
+            self.warnings.insert("area lights on shapes of no area: not lit".into());
+            return Ok(());
+        };
+        if let Some(power) = light.power {
+            // Φ = π A L per side (a Lambertian emitter), A the shape's area.
+            let sides = if light.two_sided { 2.0 } else { 1.0 };
+            let area = emitter.area() / sides;
+            let radiance = light.radiance * power / (std::f32::consts::PI * sides * area);
+            if !radiance.is_finite() {
+                return Err((line, "area light \"diffuse\": its power over its shape's area is not finite".into()));
+            }
+            emitter = emitter.with_radiance(radiance);
+        }
+        self.out.contents.lights.push(LightSource::Inline(Light::Mesh(emitter)));
+        self.light_at.push((self.file_name.clone(), line));
+        Ok(())
+    }
+
     /// A shape; false when its kind is skipped.
     fn shape(&mut self, kind: &str, p: &Params) -> Res<bool> {
         let ctm = self.state.ctm;
@@ -1003,9 +1092,12 @@ impl Parser {
         if !transform.is_finite() {
             return Err((p.line, "the shape's transform is not finite".into()));
         }
-        let material = crate::scene::MaterialSource::Inline(self.materials[self.state.material].clone());
+        let material = MaterialSource::Inline(self.materials[self.state.material].clone());
         match kind {
             "curve" => {
+                if self.state.area_light.is_some() {
+                    self.warnings.insert("area lights on curves are not supported (nor in pbrt): drawn unlit".into());
+                }
                 let strand = curve(p, &ctm)?;
                 let m = self.state.material;
                 let set = match self.strands.iter_mut().find(|(k, _)| *k == m) {
@@ -1019,15 +1111,7 @@ impl Parser {
                     .map_err(|e| (p.line, e.to_string()))?;
                 set.push_strand(strand);
             }
-            "trianglemesh" => {
-                let mesh = triangle_mesh(p)?;
-                self.out.contents.meshes.push(MeshEntry {
-                    source: MeshSource::Inline(mesh),
-                    material,
-                    transform,
-                    visibility: Default::default(),
-                });
-            }
+            "trianglemesh" => self.push_mesh(triangle_mesh(p)?, material, transform, p.line)?,
             "plymesh" => {
                 let file = p.string("filename", "")?;
                 let path = self.dir.join(&file);
@@ -1035,12 +1119,7 @@ impl Parser {
                 let bytes = super::gzip::read_file(&path, crate::input_file::Kind::Geometry)
                     .map_err(|e| (p.line, e.to_string()))?;
                 let mesh = super::ply::parse_ply(&bytes, &path).map_err(|e| (p.line, e.to_string()))?;
-                self.out.contents.meshes.push(MeshEntry {
-                    source: MeshSource::Inline(mesh),
-                    material,
-                    transform,
-                    visibility: Default::default(),
-                });
+                self.push_mesh(mesh, material, transform, p.line)?;
             }
             "disk" | "cylinder" | "bilinearmesh" => {
                 let mesh = match kind {
@@ -1048,12 +1127,7 @@ impl Parser {
                     "cylinder" => surfaces::cylinder(p)?,
                     _ => surfaces::bilinear_mesh(p)?,
                 };
-                self.out.contents.meshes.push(MeshEntry {
-                    source: MeshSource::Inline(mesh),
-                    material,
-                    transform,
-                    visibility: Default::default(),
-                });
+                self.push_mesh(mesh, material, transform, p.line)?;
             }
             "sphere" => {
                 let r = p.float("radius", 1.0)?;
@@ -1063,13 +1137,7 @@ impl Parser {
                 if !((r as f32).is_finite() && r as f32 > 0.0) {
                     return Err((p.line, "sphere radius is beyond single precision".into()));
                 }
-                let mesh = TriangleMesh::sphere(r as f32, 48);
-                self.out.contents.meshes.push(MeshEntry {
-                    source: MeshSource::Inline(mesh),
-                    material,
-                    transform,
-                    visibility: Default::default(),
-                });
+                self.push_mesh(TriangleMesh::sphere(r as f32, 48), material, transform, p.line)?;
             }
             other => {
                 self.warnings.insert(format!("shape \"{other}\" is not supported: skipped"));
@@ -1077,6 +1145,23 @@ impl Parser {
             }
         }
         Ok(true)
+    }
+
+    /// A shape's mesh into the scene: drawn with `material`, or under an area light, that
+    /// light.
+    fn push_mesh(&mut self, mesh: TriangleMesh, material: MaterialSource, transform: Affine3A, line: u32) -> Res<()> {
+        match self.state.area_light {
+            Some(light) => self.push_area_light(light, &mesh, line),
+            None => {
+                self.out.contents.meshes.push(MeshEntry {
+                    source: MeshSource::Inline(mesh),
+                    material,
+                    transform,
+                    visibility: Default::default(),
+                });
+                Ok(())
+            }
+        }
     }
 
     fn finish(mut self) -> Result<Imported, LoadError> {
@@ -1196,6 +1281,20 @@ fn scale_emission(l: &mut Light, k: f32) {
         | Light::Environment { radiance: c, .. } => *c *= k,
         Light::EnvironmentMap(map) => *map = map.scaled(k),
         Light::Mesh(mesh) => *mesh = mesh.with_radiance(mesh.radiance() * k),
+    }
+}
+
+/// A light's parameter `name` that must be a positive number when given (pbrt-v4's
+/// photometric alternatives to `scale`), in single precision; `what` names the light in
+/// the error.
+fn positive(p: &Params, what: &str, name: &str) -> Res<Option<f32>> {
+    if !p.has(name) {
+        return Ok(None);
+    }
+    match p.float(name, 0.0)? {
+        v if !(v.is_finite() && v > 0.0) => Err((p.line, format!("{what}: {name} {v} must be positive"))),
+        v if (v as f32).is_finite() && v as f32 > 0.0 => Ok(Some(v as f32)),
+        _ => Err((p.line, format!("{what}: {name} is beyond single precision"))),
     }
 }
 

@@ -576,3 +576,55 @@ fn a_trianglemesh_with_empty_indices_is_an_error() {
     .to_string();
     assert!(e.starts_with("dir/scene.pbrt: line 2:") && e.contains("no triangles"), "{e}");
 }
+
+/// Area lights: the shapes under a `diffuse` (v3: `area`) light emit `L` × `scale` from
+/// the side pbrt's surface normal faces (a mesh's winding, turned by a mirroring transform
+/// and by `ReverseOrientation`; a sphere's outside), from both with `twosided`, scaled to
+/// v4's `power`; the light replaces the shape, for the shapes of its attribute block only.
+#[test]
+fn area_lights_emit_from_the_side_pbrt_faces() {
+    const QUAD: &str =
+        "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] \"point3 P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0]";
+    let lit = |before: &str, light: &str, shape: &str| {
+        let s = read(&format!(
+            "WorldBegin\nAttributeBegin\n{before}\nAreaLightSource {light}\n{shape}\nAttributeEnd\n{QUAD}\n"
+        ))
+        .unwrap();
+        assert!(s.warnings.iter().all(|w| !w.contains("not supported") && !w.contains("not used")), "{:?}", s.warnings);
+        // The quad after the block is drawn, not lit.
+        assert_eq!((s.contents.lights.len(), s.contents.meshes.len()), (1, 1));
+        let LightSource::Inline(light) = &s.contents.lights[0] else { panic!() };
+        let from = |z: f32| light.emitted(Vec3::new(0.1, 0.2, z), Vec3::new(0.0, 0.0, -z.signum()), 100.0).map(|e| e.1);
+        (from(5.0), from(-5.0))
+    };
+    let rgb = Vec3::new(2.0, 4.0, 6.0);
+    let diffuse = "\"diffuse\" \"rgb L\" [1 2 3] \"float scale\" 2";
+    assert_eq!(lit("", diffuse, QUAD), (Some(rgb), None));
+    assert_eq!(lit("ReverseOrientation", diffuse, QUAD), (None, Some(rgb)));
+    assert_eq!(lit("Scale -1 1 1", diffuse, QUAD), (Some(rgb), None));
+    assert_eq!(lit("", "\"area\" \"color L\" [1 2 3] \"color scale\" [2 2 2]", QUAD), (Some(rgb), None));
+    let two = "\"diffuse\" \"rgb L\" [1 2 3] \"float scale\" 2 \"bool twosided\" true";
+    assert_eq!(lit("", two, QUAD), (Some(rgb), Some(rgb)));
+    // 8π W from a 4 m² one-sided quad: L = Φ / (π A) = 2.
+    let power = lit("", "\"diffuse\" \"float power\" 25.132741", QUAD).0.unwrap();
+    assert!((power - Vec3::splat(2.0)).abs().max_element() < 1e-5, "{power}");
+    // A sphere emits from its outside (rays from z = ±5 meet it from outside both times).
+    assert_eq!(lit("", diffuse, "Shape \"sphere\" \"float radius\" 1"), (Some(rgb), Some(rgb)));
+    let inside = read(&format!("WorldBegin\nAreaLightSource {diffuse}\nShape \"sphere\"\n")).unwrap();
+    let LightSource::Inline(sphere) = &inside.contents.lights[0] else { panic!() };
+    assert_eq!(sphere.emitted(Vec3::ZERO, Vec3::X, 100.0), None);
+    // The import's mirror about the camera's vertical plane keeps the emitting side.
+    let s = read(&format!(
+        "LookAt 3 0 5  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\nAreaLightSource {diffuse}\n{QUAD}\n"
+    ));
+    let LightSource::Inline(light) = &s.unwrap().contents.lights[0] else { panic!() };
+    assert!(light.emitted(Vec3::new(0.1, 0.2, 5.0), Vec3::NEG_Z, 100.0).is_some());
+    assert!(light.emitted(Vec3::new(0.1, 0.2, -5.0), Vec3::Z, 100.0).is_none());
+    // Other kinds are reported; their shapes are drawn.
+    let s = read(&format!("WorldBegin\nAreaLightSource \"goniometric\"\n{QUAD}\n")).unwrap();
+    assert_eq!((s.contents.lights.len(), s.contents.meshes.len()), (0, 1));
+    assert!(s.warnings.iter().any(|w| w.contains("area light \"goniometric\" is not supported")), "{:?}", s.warnings);
+    // Negative emission is an error naming the line.
+    let e = read("WorldBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 -1 1]\n").unwrap_err().to_string();
+    assert!(e.contains("line 2") && e.contains("not negative"), "{e}");
+}
