@@ -317,7 +317,11 @@ pub fn grammar_gaps(text: &str) -> String {
             let decl_at = i + if array { 7 } else { 5 };
             let decl: String = String::from_utf8_lossy(&b[decl_at..line_end]).split_whitespace().collect();
             if decl.contains(".timeSamples={") {
-                // `asset NAME.timeSamples = {` on one line.
+                // `asset NAME.timeSamples = {` on one line (the crate reads arrays of asset
+                // paths as samples: `asset[]` ones stay).
+                if array {
+                    return;
+                }
                 asset_blocks.push(decl_at + b[decl_at..line_end].iter().position(|&c| c == b'{').unwrap_or(0));
             } else if decl.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
                 edits.extend(quoted_assets(b, decl_at, line_end));

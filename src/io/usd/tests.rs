@@ -396,6 +396,10 @@ fn legacy_and_lenient_text_forms_are_read() {
         assert!(openusd::usda::parser::Parser::new(&fixed).parse().is_ok(), "{one}: {fixed}");
     }
     assert!(openusd::usda::parser::Parser::new("#usda 1.0 \ndef \"A\" {}\n").parse().is_err());
+    // Samples of asset arrays, which the crate reads, are left as they are.
+    let samples = "#usda 1.0\ndef \"A\" { asset[] a.timeSamples = { 1: [@x.png@, @y.png@] } }\n";
+    assert_eq!(layer::grammar_gaps(samples), samples);
+    assert!(openusd::usda::parser::Parser::new(samples).parse().is_ok());
     let kept = "#usda 1.0\ndef Transform \"Point\" { string config = \"Color\" token Normal = \"asset\" }\n";
     assert_eq!(layer::grammar_gaps(&layer::legacy_type_names(kept)), kept);
 }
