@@ -1,6 +1,7 @@
 //! Geometry as plain data: triangle meshes and strand sets, and the ray/primitive tests.
 
 pub mod curve;
+pub mod loop_subdivision;
 pub mod mesh;
 pub mod segment;
 pub mod strands;

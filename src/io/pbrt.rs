@@ -12,7 +12,9 @@
 //! `"orthographic"` (the same window, in camera space units), `Film`
 //! (`xresolution`, `yresolution`), `Sampler` (`pixelsamples`), `Integrator`, `LightSource` `distant`,
 //! `infinite`, `point` and `spot`, `Material` and `MakeNamedMaterial`/`NamedMaterial`,
-//! and `Shape` `curve`, `trianglemesh`, `plymesh`, `sphere`, `disk`, `cylinder` and
+//! and `Shape` `curve`, `trianglemesh`, `loopsubdiv` (Loop subdivision at its `levels`,
+//! v3's `nlevels`, its vertices on the limit surface, as pbrt evaluates it:
+//! `geometry::loop_subdivision`), `plymesh`, `sphere`, `disk`, `cylinder` and
 //! `bilinearmesh` (the last three as meshes, `surfaces.rs`).
 //!
 //! **Compressed files.** Any file read (the scene, its includes, PLY meshes) may be gzip
@@ -77,6 +79,8 @@
 use super::imported::Imported;
 use crate::error::LoadError;
 use crate::geometry::curve::{cubic_point, CubicBasis};
+use crate::geometry::loop_subdivision;
+use crate::geometry::subdivision::{MAX_FACES_PER_FILE, MAX_FACES_PER_MESH};
 use crate::geometry::{StrandSet, TriangleMesh};
 use crate::light::{Light, MapPlacement};
 use crate::scene::{
@@ -419,6 +423,8 @@ struct Parser {
     included_bytes: u64,
     /// Names of the `ObjectBegin`s not yet ended, the outermost first.
     open_objects: Vec<String>,
+    /// Triangles `loopsubdiv` shapes have made so far (bounded by `MAX_FACES_PER_FILE`).
+    subdivided_faces: usize,
 }
 
 impl Parser {
@@ -447,6 +453,7 @@ impl Parser {
             includes: 0,
             included_bytes: 0,
             open_objects: Vec::new(),
+            subdivided_faces: 0,
         }
     }
 
@@ -1112,6 +1119,21 @@ impl Parser {
                 set.push_strand(strand);
             }
             "trianglemesh" => self.push_mesh(triangle_mesh(p)?, material, transform, p.line)?,
+            "loopsubdiv" => {
+                let cage = triangle_mesh(p)?;
+                // v4 names the level count `levels`, v3 `nlevels`; both default to 3.
+                let levels = p.int(if p.has("nlevels") { "nlevels" } else { "levels" }, 3)?.clamp(0, 32) as u32;
+                let room = MAX_FACES_PER_MESH.min(MAX_FACES_PER_FILE.saturating_sub(self.subdivided_faces));
+                let (mesh, applied) = loop_subdivision::subdivide(&cage.positions, &cage.indices, levels, room);
+                if applied < levels {
+                    self.warnings.insert(format!(
+                        "loopsubdiv: levels past {MAX_FACES_PER_MESH} triangles per mesh or {MAX_FACES_PER_FILE} \
+                         per file are not applied"
+                    ));
+                }
+                self.subdivided_faces += mesh.indices.len();
+                self.push_mesh(mesh, material, transform, p.line)?;
+            }
             "plymesh" => {
                 let file = p.string("filename", "")?;
                 let path = self.dir.join(&file);

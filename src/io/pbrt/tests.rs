@@ -628,3 +628,19 @@ fn area_lights_emit_from_the_side_pbrt_faces() {
     let e = read("WorldBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 -1 1]\n").unwrap_err().to_string();
     assert!(e.contains("line 2") && e.contains("not negative"), "{e}");
 }
+
+/// `loopsubdiv` (v4 `levels`, v3 `nlevels`, default 3) is Loop-subdivided to its limit
+/// surface: an octahedron's vertex (1, 0, 0) lands at (1/2, 0, 0) at any level.
+#[test]
+fn loop_subdivision_surfaces_are_subdivided_to_their_limit() {
+    let octahedron = "\"point3 P\" [1 0 0  -1 0 0  0 1 0  0 -1 0  0 0 1  0 0 -1] \
+        \"integer indices\" [0 2 4  2 1 4  1 3 4  3 0 4  2 0 5  1 2 5  3 1 5  0 3 5]";
+    for (levels, triangles) in [("", 8 * 64), ("\"integer levels\" 1", 8 * 4), ("\"integer nlevels\" 2", 8 * 16)] {
+        let s = read(&format!("WorldBegin\nShape \"loopsubdiv\" {levels} {octahedron}\n")).unwrap();
+        assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+        let MeshSource::Inline(mesh) = &s.contents.meshes[0].source else { panic!() };
+        assert_eq!(mesh.indices.len(), triangles, "{levels}");
+        assert!((mesh.positions[0] - Vec3::new(0.5, 0.0, 0.0)).length() < 1e-6, "{}", mesh.positions[0]);
+        assert!(mesh.normals.as_ref().is_some_and(|n| n[0].x > 0.99), "{levels}");
+    }
+}
