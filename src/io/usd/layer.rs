@@ -260,11 +260,13 @@ pub fn legacy_type_names(text: &str) -> String {
     out
 }
 
-/// Array types the crate cannot parse and the type it reads their values as: tress reads
+/// Value types the crate cannot parse and the type it reads their values as: tress reads
 /// no unsigned array, so widening one keeps the layer readable and loses nothing it uses;
 /// `matrix[]`, as Arnold's USD writer names an array of 4 × 4 double matrices, is
-/// `matrix4d[]`.
-const ARRAY_STAND_INS: [(&str, &str); 3] = [("uint[]", "int64[]"), ("uint64[]", "int64[]"), ("matrix[]", "matrix4d[]")];
+/// `matrix4d[]`; a `pathExpression` (a collection's membership, written as a string;
+/// tress reads no collections) is a `string`.
+const TYPE_STAND_INS: [(&str, &str); 4] =
+    [("uint[]", "int64[]"), ("uint64[]", "int64[]"), ("matrix[]", "matrix4d[]"), ("pathExpression", "string")];
 
 /// Rewrites forms of the USDA grammar (Pixar's `Sdf` text format) the crate's parser
 /// rejects, outside strings and paths, so the rest of the layer reads:
@@ -272,7 +274,8 @@ const ARRAY_STAND_INS: [(&str, &str); 3] = [("uint[]", "int64[]"), ("uint64[]", 
 ///   after the version) are dropped;
 /// - `//` line comments (the format's lexer skips `#`, `//` and `/* */` comments; the
 ///   crate only `#` and `/* */`) become `# ` comments;
-/// - `uint[]` and `uint64[]` attributes become `int64[]`, `matrix[]` ones `matrix4d[]`;
+/// - `uint[]` and `uint64[]` attributes become `int64[]`, `matrix[]` ones `matrix4d[]`,
+///   `pathExpression` ones `string`;
 /// - the legacy variability `config` becomes `uniform`, as USD's parser converts it;
 /// - an `asset` or `asset[]` attribute's values written as strings (`"tex.png"`, which
 ///   USD's parser takes as asset paths) become asset paths `@tex.png@`;
@@ -298,7 +301,7 @@ pub fn grammar_gaps(text: &str) -> String {
         if i > 0 && ident(b[i - 1]) {
             return;
         }
-        for (from, to) in ARRAY_STAND_INS {
+        for (from, to) in TYPE_STAND_INS {
             if b[i..].starts_with(from.as_bytes()) && b.get(i + from.len()).is_some_and(|c| c.is_ascii_whitespace()) {
                 edits.push((i, i + from.len(), to.into()));
             }

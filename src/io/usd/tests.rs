@@ -384,6 +384,7 @@ fn legacy_and_lenient_text_forms_are_read() {
         "def \"A\" { config token a = \"x\" }",
         "def \"A\" { asset a = \"t.png\" }",
         "def \"A\" { asset[] a = [\"t.png\"] }",
+        "def \"A\" { pathExpression e = \"/A//B* %:ref\" }",
         "def \"A\" { PointIndex[] a = [1] }",
         "def \"A\" { VectorFloat v = (0, 0, 1) }",
         "def \"A\" { Point p = (0, 0, 1) }",
