@@ -431,6 +431,40 @@ fn hermite_curves_follow_their_tangents() {
     assert!(s.warnings.iter().any(|w| w.contains("HermiteCurves with 0 `tangents` for 2 points")), "{:?}", s.warnings);
 }
 
+/// Value clips, as Houdini writes animation caches: the curves' `points` at each frame come
+/// from the clip the `clips` metadata makes active then, through the manifest.
+#[test]
+fn value_clips_give_the_points_of_the_active_clip() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| std::fs::write(dir.path().join(name), format!("#usda 1.0\n{text}")).unwrap();
+    write(
+        "root.usda",
+        r#"def BasisCurves "Hair" (
+    clips = {
+        dictionary default = {
+            asset[] assetPaths = [@./clip1.usda@, @./clip2.usda@]
+            asset manifestAssetPath = @./manifest.usda@
+            string primPath = "/Hair"
+            double2[] active = [(1, 0), (2, 1)]
+            double2[] times = [(1, 1), (2, 2)]
+        }
+    }
+) {
+    uniform token type = "linear"
+    int[] curveVertexCounts = [2]
+    point3f[] points
+}"#,
+    );
+    write("manifest.usda", "over \"Hair\" { point3f[] points }");
+    write("clip1.usda", "over \"Hair\" { point3f[] points.timeSamples = { 1: [(0, 0, 0), (0, 1, 0)] } }");
+    write("clip2.usda", "over \"Hair\" { point3f[] points.timeSamples = { 2: [(5, 0, 0), (5, 1, 0)] } }");
+    let root = |frame| {
+        let s = read_usd(&dir.path().join("root.usda"), &ImportOptions { frame: Some(frame), camera: None }).unwrap();
+        point(strands(&s, 0), 0)
+    };
+    assert_eq!((root(1), root(2)), (Vec3::ZERO, Vec3::new(5.0, 0.0, 0.0)));
+}
+
 const ANIMATED: &str = r#"def BasisCurves "Hair" {
     uniform token type = "linear"
     int[] curveVertexCounts.timeSamples = { 0: [2], 10: [2], 20: [3] }
