@@ -552,6 +552,41 @@ fn arnold_usd_procedurals_pull_in_their_file_placed_by_their_matrix_and_cycles_a
     assert!(e.contains("b.ass") && e.contains("already being read") && e.contains("a.ass"), "{e}");
 }
 
+/// A `usd` procedural reads its stage as Arnold does: in the stage's own axes (a Z-up
+/// stage is not turned to Y up, so the `.ass` camera sees it where Arnold's does), without
+/// the prims its `disable` operators select, directly or through a `merge`.
+#[test]
+fn arnold_usd_procedurals_keep_the_stage_axes_and_apply_disable_operators() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("z_up.usda"),
+        "#usda 1.0\n(\n upAxis = \"Z\"\n)\n\
+         def Xform \"W\" {\n def Sphere \"Kept\" { double3 xformOp:translate = (0, 0, 5)\n uniform token[] xformOpOrder = [\"xformOp:translate\"] }\n\
+         def Sphere \"Door1\" {}\n def Sphere \"Door2\" {}\n def Sphere \"Shelf\" {}\n}\n",
+    )
+    .unwrap();
+    let path = dir.path().join("scene.ass");
+    let scene = |operator: &str, nodes: &str| {
+        let text = format!("usd\n{{\n name proc\n filename \"z_up.usda\"\n {operator}\n}}\n{nodes}");
+        std::fs::write(&path, text).unwrap();
+        read_imported(&path).unwrap()
+    };
+    let all = scene("", "");
+    assert_eq!(all.contents.meshes.len(), 4);
+    let entry = &all.contents.meshes[0];
+    let tress::scene::MeshSource::Inline(ball) = &entry.source else { panic!("not inline") };
+    let centre = Vec3::from(ball.bounds_under(&entry.transform).center());
+    assert!((centre - Vec3::new(0.0, 0.0, 5.0)).length() < 1e-3, "{centre}");
+    let some = scene(
+        "operator \"both\"",
+        "merge\n{\n name both\n inputs 2 1 NODE doors off\n}\n\
+         disable\n{\n name doors\n selection \"/W/Door*\"\n}\n\
+         disable\n{\n name off\n selection \"/W/Shelf\"\n enable off\n}\n",
+    );
+    assert_eq!(some.contents.meshes.len(), 2, "{:?}", some.warnings);
+    assert!(some.warnings.iter().all(|w| !w.contains("disable") && !w.contains("merge")), "{:?}", some.warnings);
+}
+
 #[test]
 fn an_arnold_procedurals_shader_draws_every_surface_of_its_file() {
     let dir = tempfile::tempdir().unwrap();

@@ -49,6 +49,12 @@ pub struct ImportOptions {
     /// The camera to render through, by its prim path (USD) or its transform's or shape's
     /// name (Maya); `None` takes the file's first (Maya: other than `persp`).
     pub camera: Option<String>,
+    /// Prims not to draw, by path patterns (`*` any run of characters, `?` one), as an
+    /// Arnold `disable` operator on a `usd` procedural selects them; read by USD files.
+    pub hidden: Vec<String>,
+    /// Read a USD stage in its own axes, as Arnold's `usd` procedural does: a Z-up stage is
+    /// not turned to Y up.
+    pub stage_axes: bool,
 }
 
 /// True when `path` names a file [`read_imported`] reads (by its extension).
@@ -131,7 +137,12 @@ fn read_ass_tree(
             out.warnings.push(format!("procedural `{}`: {} is missing: not drawn", p.node, p.path.display()));
             continue;
         }
-        let options = ImportOptions { frame: p.frame.or(options.frame), camera: None };
+        let options = ImportOptions {
+            frame: p.frame.or(options.frame),
+            camera: None,
+            hidden: p.disabled.clone(),
+            stage_axes: true,
+        };
         let mut inner = match extension(&p.path).as_deref() {
             Some("ass") => {
                 let file = canonical(&p.path);
@@ -231,7 +242,7 @@ pub enum ReadSceneError {
 /// Maya ASCII, pbrt, USD text or raw .hair, .ply or .obj file (by extension), or a scene TOML at `frame`.
 /// Returns the description and the reader's warnings, each prefixed with the file's name.
 pub fn read_scene(path: &Path, frame: Option<u32>) -> Result<(crate::scene::Description, Vec<String>), ReadSceneError> {
-    read_scene_with(path, &ImportOptions { frame, camera: None })
+    read_scene_with(path, &ImportOptions { frame, camera: None, ..Default::default() })
 }
 
 /// [`read_scene`] through a camera of the file's (USD files with several).

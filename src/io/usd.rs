@@ -280,7 +280,9 @@ fn affine(m: DMat4, path: &sdf::Path) -> Res<Affine3A> {
 /// The composed stage at the options' time code into `out`.
 fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes: &mut Notes) -> Res<()> {
     let time = TimeCode::new(options.frame.map_or_else(|| stage.start_time_code(), f64::from));
-    let z_up = matches!(stage.stage_metadata("upAxis")?, Some(sdf::Value::Token(t)) if t.as_str() == "Z");
+    // Arnold's `usd` procedural reads a stage in its own axes, whatever its `upAxis`.
+    let z_up = !options.stage_axes
+        && matches!(stage.stage_metadata("upAxis")?, Some(sdf::Value::Token(t)) if t.as_str() == "Z");
     // Z up to Y up: (x, y, z) -> (x, z, -y).
     let up_fix = if z_up { DMat4::from_rotation_x(-std::f64::consts::FRAC_PI_2) } else { DMat4::IDENTITY };
     let mut paths = Vec::new();
@@ -291,8 +293,12 @@ fn read_stage(stage: &Stage, options: &ImportOptions, out: &mut Imported, notes:
     // its instances only, as in USD's renderers.
     let mut instancer_below: Option<String> = None;
     let order: HashMap<&str, usize> = paths.iter().enumerate().map(|(i, p)| (p.as_str(), i)).collect();
+    let hidden: Vec<wildmatch::WildMatch> = options.hidden.iter().map(|p| wildmatch::WildMatch::new(p)).collect();
     for path in &paths {
         if instancer_below.as_ref().is_some_and(|below| path.as_str().starts_with(below.as_str())) {
+            continue;
+        }
+        if hidden.iter().any(|h| h.matches(path.as_str())) {
             continue;
         }
         let prim = stage.prim(path.clone());

@@ -121,7 +121,10 @@ pub fn load_with_warnings(
     let (mut desc, notes) = match scene {
         // A file or a reference scene directory of scripts/gen_scenes.py (scene.json);
         // the warnings name the file.
-        Some(path) => tress::io::read_scene_with(path, &tress::io::ImportOptions { frame, camera: o.camera.clone() })?,
+        Some(path) => tress::io::read_scene_with(
+            path,
+            &tress::io::ImportOptions { frame, camera: o.camera.clone(), ..Default::default() },
+        )?,
         None => (tress::demo::description(o.demo_strands, 1), Vec::new()),
     };
     if let Some(w) = o.hair_width {

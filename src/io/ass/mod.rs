@@ -28,7 +28,10 @@
 //!   of its own, so a file without lights renders black
 //!   ([`Imported::no_default_light`]).
 //! - `usd` procedurals (`filename`, relative to the `.ass` file; `matrix`; `frame`;
-//!   `shader`, which every surface in the file is drawn with, as Arnold does) and
+//!   `shader`, which every surface in the file is drawn with, as Arnold does; `operator`:
+//!   the `disable` operators it leads to, directly or through `merge` nodes, hide the
+//!   prims their `selection` patterns match; the stage is read in its own axes, as Arnold
+//!   reads it, whatever its `upAxis`) and
 //!   `procedural` nodes naming another `.ass` or USD file: listed in [`AssScene`]'s
 //!   `procedurals` for the reader dispatch ([`super::read_imported_with`]) to read and
 //!   place, so that this reader reads no other format itself.
@@ -67,6 +70,9 @@ pub struct Procedural {
     pub node: String,
     /// The node's `shader`, which Arnold draws every surface the file holds with.
     pub shader: Option<crate::shading::Material>,
+    /// The selections of the `disable` operators its `operator` leads to (directly or
+    /// through `merge` nodes): the prims Arnold does not draw.
+    pub disabled: Vec<String>,
 }
 
 /// What an `.ass` file gives: its scene, and the files its procedurals pull in.
@@ -183,6 +189,9 @@ fn read_nodes(nodes: &[Node], dir: &Path, camera: Option<&str>) -> Res<AssScene>
             kind if arnold_graph::READ.iter().any(|(k, _)| *k == kind) => {
                 arnold_graph::READ.iter().find(|(k, _)| *k == kind).map_or(&[], |(_, names)| *names)
             }
+            // Read through the procedurals whose `operator` leads to them.
+            "disable" => &["selection", "enable"],
+            "merge" => &["inputs"],
             "standard_hair" => &StandardHair::NAMES,
             "hair" => <Hair as ArnoldShader>::NAMES,
             "image" => &["filename"],
@@ -249,7 +258,7 @@ const LIGHT_READ: [&str; 19] = [
     "top",
     "direction",
 ];
-const PROCEDURAL_READ: [&str; 5] = ["filename", "matrix", "frame", "visibility", "shader"];
+const PROCEDURAL_READ: [&str; 6] = ["filename", "matrix", "frame", "visibility", "shader", "operator"];
 
 struct Reader<'a> {
     nodes: &'a [Node],
@@ -712,13 +721,48 @@ impl Reader<'_> {
             }
         };
         let shader = node.param("shader").is_some().then(|| self.surface(node));
+        let mut disabled = Vec::new();
+        if let Some(operator) = text(node, "operator") {
+            self.disabled_by(node, &operator, 0, &mut disabled)?;
+        }
         self.out.procedurals.push(Procedural {
             path: self.dir.join(file),
             transform,
             frame,
             node: node_label(node),
             shader,
+            disabled,
         });
+        Ok(())
+    }
+
+    /// The selections of the enabled `disable` operators the operator `name`, named by
+    /// `procedural`, leads to: itself, or the `inputs` of a `merge`, followed at most 16
+    /// deep. Other operators are reported, not applied.
+    fn disabled_by(&mut self, procedural: &Node, name: &str, depth: usize, out: &mut Vec<String>) -> Res<()> {
+        let Some(&i) = self.by_name.get(name) else {
+            self.notes.note(format!("procedural operators that name no node: not applied ({name})"), procedural);
+            return Ok(());
+        };
+        let node = &self.nodes[i];
+        if depth > 16 {
+            return Err((node.line, format!("operator `{name}`: operators nest deeper than 16 or form a cycle")));
+        }
+        match node.kind.as_str() {
+            "disable" if flag(node, "enable", true)? => {
+                out.extend(text(node, "selection").iter().flat_map(|s| s.split_whitespace().map(str::to_string)));
+            }
+            "disable" => {}
+            "merge" => {
+                let inputs: Vec<String> = values(node, "inputs")
+                    .map(|(v, _)| v.iter().filter_map(Atom::text).map(str::to_string).collect())
+                    .unwrap_or_default();
+                for input in inputs {
+                    self.disabled_by(procedural, &input, depth + 1, out)?;
+                }
+            }
+            kind => self.notes.note(format!("`{kind}` operators on procedurals: not applied"), node),
+        }
         Ok(())
     }
 }

@@ -576,7 +576,8 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("old.usd");
         std::fs::write(&path, bytes).unwrap();
-        let s = read_usd(&path, &ImportOptions { frame: Some(frame), camera: None }).map_err(|e| e.to_string())?;
+        let s = read_usd(&path, &ImportOptions { frame: Some(frame), camera: None, ..Default::default() })
+            .map_err(|e| e.to_string())?;
         let HairSource::Inline(set) = &s.contents.hair[0].source else { panic!() };
         Ok(set.offsets[..set.offsets.len() - 1]
             .iter()

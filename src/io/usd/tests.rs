@@ -459,7 +459,11 @@ fn value_clips_give_the_points_of_the_active_clip() {
     write("clip1.usda", "over \"Hair\" { point3f[] points.timeSamples = { 1: [(0, 0, 0), (0, 1, 0)] } }");
     write("clip2.usda", "over \"Hair\" { point3f[] points.timeSamples = { 2: [(5, 0, 0), (5, 1, 0)] } }");
     let root = |frame| {
-        let s = read_usd(&dir.path().join("root.usda"), &ImportOptions { frame: Some(frame), camera: None }).unwrap();
+        let s = read_usd(
+            &dir.path().join("root.usda"),
+            &ImportOptions { frame: Some(frame), camera: None, ..Default::default() },
+        )
+        .unwrap();
         point(strands(&s, 0), 0)
     };
     assert_eq!((root(1), root(2)), (Vec3::ZERO, Vec3::new(5.0, 0.0, 0.0)));
@@ -479,7 +483,7 @@ const ANIMATED: &str = r#"def BasisCurves "Hair" {
 #[test]
 fn time_samples_are_read_at_the_frame_and_interpolated_where_the_topology_stays() {
     let at = |frame: Option<u32>, meta: &str| {
-        let s = read_with(meta, ANIMATED, &ImportOptions { frame, camera: None }).unwrap();
+        let s = read_with(meta, ANIMATED, &ImportOptions { frame, camera: None, ..Default::default() }).unwrap();
         strands(&s, 0).clone()
     };
     // Half way between samples of the same topology: points and widths blended.
@@ -531,17 +535,18 @@ fn cameras_give_the_view_field_of_view_and_image_aspect() {
     assert_eq!(c.clip, [0.1, 1000.0]);
     assert!(s.warnings.iter().all(|w| !w.contains("clippingRange")), "{:?}", s.warnings);
     // The rig moves: at frame 5 the camera is half way.
-    let s = read_with("", CAMERAS, &ImportOptions { frame: Some(5), camera: None }).unwrap();
+    let s = read_with("", CAMERAS, &ImportOptions { frame: Some(5), camera: None, ..Default::default() }).unwrap();
     assert!((s.camera.unwrap().eye.z - 15.0).abs() < 1e-4);
     // Picked by path, with its animated focal length and its turn: it looks along −X.
-    let pick = |frame| ImportOptions { frame: Some(frame), camera: Some("/Side".into()) };
+    let pick = |frame| ImportOptions { frame: Some(frame), camera: Some("/Side".into()), ..Default::default() };
     let s = read_with("", CAMERAS, &pick(10)).unwrap();
     let c = s.camera.unwrap();
     assert!((c.target - c.eye - Vec3::new(-1.0, 0.0, 0.0)).length() < 1e-5, "{} {}", c.eye, c.target);
     let want = 2.0 * (0.5f32 * 15.2908 / 100.0).atan().to_degrees();
     assert!((c.vfov - want).abs() < 1e-3, "{} {want}", c.vfov);
     assert_eq!(c.clip, [1.0, 1.0e6]);
-    let e = read_with("", CAMERAS, &ImportOptions { frame: None, camera: Some("/Nope".into()) }).unwrap_err();
+    let e = read_with("", CAMERAS, &ImportOptions { frame: None, camera: Some("/Nope".into()), ..Default::default() })
+        .unwrap_err();
     assert!(e.to_string().contains("/Nope") && e.to_string().contains("/Rig/Main, /Side"), "{e}");
 }
 
@@ -567,7 +572,7 @@ fn arnold_camera_primvars_place_and_zoom_a_camera_without_transform_ops() {
     }
 }
 "#;
-    let pick = |path: &str| ImportOptions { frame: None, camera: Some(path.into()) };
+    let pick = |path: &str| ImportOptions { frame: None, camera: Some(path.into()), ..Default::default() };
     let c = read_with("", camera, &pick("/Up/Arnold")).unwrap().camera.unwrap();
     assert!((c.eye - Vec3::new(0.0, 12.0, 6.0)).length() < 1e-5, "{}", c.eye);
     assert!((c.target - Vec3::new(0.0, 12.0, 5.0)).length() < 1e-5, "{}", c.target);
@@ -1079,7 +1084,7 @@ proptest! {
             let at = at.min(bytes.len() - 1);
             bytes[at] = c;
         }
-        let _ = read_with("", &String::from_utf8_lossy(&bytes), &ImportOptions { frame: Some(5), camera: None });
+        let _ = read_with("", &String::from_utf8_lossy(&bytes), &ImportOptions { frame: Some(5), camera: None, ..Default::default() });
     }
 }
 
@@ -1315,7 +1320,7 @@ fn read_skel(prims: &str, frame: u32) -> Imported {
 
 fn read_skel_with(prims: &str, on_skel: &str, on_root: &str, frame: u32) -> Imported {
     let body = SKEL.replace("{prims}", prims).replace("{anim_on_skel}", on_skel).replace("{anim_on_root}", on_root);
-    read_with("", &body, &ImportOptions { frame: Some(frame), camera: None }).unwrap()
+    read_with("", &body, &ImportOptions { frame: Some(frame), camera: None, ..Default::default() }).unwrap()
 }
 
 /// The world positions of hair entry `i`'s points.
@@ -1544,7 +1549,7 @@ fn bad_skinning_data_is_one_warning_and_the_rest_pose() {
         .replace("{prims}", &skinned_curve("Hair", influences))
         .replace("{anim_on_skel}", "rel skel:animationSource = </Rig/Anim>")
         .replace("{anim_on_root}", "");
-    let s = read_with("", &body, &ImportOptions { frame: Some(10), camera: None }).unwrap();
+    let s = read_with("", &body, &ImportOptions { frame: Some(10), camera: None, ..Default::default() }).unwrap();
     assert!(s.warnings.iter().any(|w| w.contains("/Rig/Anim: 1 `translations` for 2 joints")), "{:?}", s.warnings);
     // Blend shapes that cannot be applied are said, the skinning still done.
     let s =
@@ -1580,7 +1585,7 @@ fn blend_shape_stage(shapes: &str, frame: u32) -> Imported {
         .replace("{prims}", &hair)
         .replace("{anim_on_skel}", "rel skel:animationSource = </Rig/Anim>")
         .replace("{anim_on_root}", "");
-    read_with("", &body, &ImportOptions { frame: Some(frame), camera: None }).unwrap()
+    read_with("", &body, &ImportOptions { frame: Some(frame), camera: None, ..Default::default() }).unwrap()
 }
 
 /// `Up` moves both points along +x, `Sparse` (`pointIndices`) the second along +z, `Tween`
@@ -1678,7 +1683,7 @@ fn blend_shape_normal_offsets_turn_mesh_normals() {
         .replace("{prims}", mesh)
         .replace("{anim_on_skel}", "rel skel:animationSource = </Rig/Anim>")
         .replace("{anim_on_root}", "");
-    let s = read_with("", &body, &ImportOptions { frame: Some(10), camera: None }).unwrap();
+    let s = read_with("", &body, &ImportOptions { frame: Some(10), camera: None, ..Default::default() }).unwrap();
     let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!("an inline mesh") };
     let h = std::f32::consts::FRAC_1_SQRT_2;
     for n in m.normals.as_ref().expect("normals") {
@@ -1701,7 +1706,7 @@ proptest! {
             let at = at % bytes.len();
             bytes[at] = c;
         }
-        let _ = read_with("", &String::from_utf8_lossy(&bytes), &ImportOptions { frame: Some(5), camera: None });
+        let _ = read_with("", &String::from_utf8_lossy(&bytes), &ImportOptions { frame: Some(5), camera: None, ..Default::default() });
     }
 }
 
@@ -1812,7 +1817,7 @@ def Points "Reborn" {
     int64[] ids.timeSamples = { 0: [7], 10: [8] }
 }
 "#;
-    let s = read_with("", body, &ImportOptions { frame: Some(5), camera: None }).unwrap();
+    let s = read_with("", body, &ImportOptions { frame: Some(5), camera: None, ..Default::default() }).unwrap();
     assert_eq!(s.contents.meshes.len(), 2, "{:?}", s.warnings);
     let MeshSource::Inline(m) = &s.contents.meshes[0].source else { panic!("an inline mesh") };
     // Two balls of 42 vertices, 80 triangles each, around the points blended half way
