@@ -279,6 +279,8 @@ const TYPE_STAND_INS: [(&str, &str); 4] =
 /// - the legacy variability `config` becomes `uniform`, as USD's parser converts it;
 /// - an `asset` or `asset[]` attribute's values written as strings (`"tex.png"`, which
 ///   USD's parser takes as asset paths) become asset paths `@tex.png@`;
+/// - integer attributes' values written with a zero fraction (`int n = 5.0`, which USD's
+///   parser reads as 5) lose it;
 /// - the `@path@` samples of an `asset` attribute's `.timeSamples` (an IES profile or a
 ///   volume file per frame; the crate reads no asset there) become the strings `"path"`.
 ///
@@ -313,6 +315,13 @@ pub fn grammar_gaps(text: &str) -> String {
             if b.get(next).is_some_and(|c| c.is_ascii_alphabetic()) {
                 edits.push((i, i + 6, "uniform".into()));
             }
+        }
+        // An integer attribute's value on its declaration's line, written with a zero
+        // fraction (`int length = 5.0`).
+        let word = b[i..].iter().take_while(|&&c| c.is_ascii_alphanumeric() || c == b'[' || c == b']').count();
+        if INTEGER_TYPES.contains(&&b[i..i + word]) && space(i + word) {
+            let line_end = b[i..].iter().position(|&c| c == b'\n').map_or(b.len(), |n| i + n);
+            edits.extend(whole_numbers(b, i + word, line_end));
         }
         let array = b[i..].starts_with(b"asset[]");
         if b[i..].starts_with(b"asset") && (space(i + 5) || array && space(i + 7)) {
@@ -366,6 +375,39 @@ pub fn grammar_gaps(text: &str) -> String {
     }
     out.push_str(&text[last..]);
     out
+}
+
+/// Integer value types (scalars, tuples and their arrays), whose values USD's parser reads
+/// from numbers written with a zero fraction (`5.0`) and the crate's does not.
+const INTEGER_TYPES: [&[u8]; 10] =
+    [b"int", b"int[]", b"int2", b"int2[]", b"int3", b"int3[]", b"int4", b"int4[]", b"int64", b"int64[]"];
+
+/// The edits that drop the zero fraction of the numbers in an attribute's value on
+/// `b[from..line_end]` (after its `=`, as far as numbers, signs, spaces, commas and
+/// brackets go): `5.0` and `-3.00` become `5` and `-3`; other numbers stay, for the
+/// parser to judge.
+fn whole_numbers(b: &[u8], from: usize, line_end: usize) -> Vec<(usize, usize, String)> {
+    let Some(eq) = b[from..line_end].iter().position(|&c| c == b'=') else { return Vec::new() };
+    let mut edits = Vec::new();
+    let mut j = from + eq + 1;
+    let in_value = |c: u8| c.is_ascii_digit() || b" \t.,+-eE()[]".contains(&c);
+    while j < line_end && in_value(b[j]) {
+        if b[j].is_ascii_digit() && !b[j - 1].is_ascii_alphanumeric() && b[j - 1] != b'.' {
+            let dot = j + b[j..line_end].iter().take_while(|c| c.is_ascii_digit()).count();
+            if dot < line_end && b[dot] == b'.' {
+                let end = dot + 1 + b[dot + 1..line_end].iter().take_while(|&&c| c == b'0').count();
+                if end > dot + 1 && b.get(end).is_none_or(|c| !c.is_ascii_alphanumeric() && *c != b'.') {
+                    edits.push((dot, end, String::new()));
+                }
+                j = end;
+            } else {
+                j = dot;
+            }
+            continue;
+        }
+        j += 1;
+    }
+    edits
 }
 
 /// The edits that make asset paths of the plain strings in an attribute's value on

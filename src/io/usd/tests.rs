@@ -385,6 +385,8 @@ fn legacy_and_lenient_text_forms_are_read() {
         "def \"A\" { asset a = \"t.png\" }",
         "def \"A\" { asset[] a = [\"t.png\"] }",
         "def \"A\" { pathExpression e = \"/A//B* %:ref\" }",
+        "def \"A\" { int a = 5.0 }",
+        "def \"A\" { int2[] a = [(1.0, -2.00), (3, 4)] (elementSize = 1) }",
         "def \"A\" { PointIndex[] a = [1] }",
         "def \"A\" { VectorFloat v = (0, 0, 1) }",
         "def \"A\" { Point p = (0, 0, 1) }",
@@ -397,6 +399,16 @@ fn legacy_and_lenient_text_forms_are_read() {
         assert!(openusd::usda::parser::Parser::new(&fixed).parse().is_ok(), "{one}: {fixed}");
     }
     assert!(openusd::usda::parser::Parser::new("#usda 1.0 \ndef \"A\" {}\n").parse().is_err());
+    // Only zero fractions of integer attributes go; a fraction, a double and a string stay.
+    let ints = "#usda 1.0\ndef \"A\" { int a = 5.0 double d = 5.0 int b = 2.5 string s = \"5.0\" }\n";
+    let fixed = layer::grammar_gaps(ints);
+    assert!(fixed.contains("int a = 5 double d = 5.0 int b = 2.5 string s = \"5.0\""), "{fixed}");
+    // Numbers at the very end of the text or of a line, whole or not.
+    for end in ["int a = 5", "int a = 5.", "int a = 5.0", "int a = 5\n", "int a = 5.00\n", "int a = [1, 2.0]"] {
+        let fixed = layer::grammar_gaps(&format!("#usda 1.0\n{end}"));
+        let value = fixed.lines().nth(1).unwrap();
+        assert!(!value.contains(".0"), "{end}: {fixed}");
+    }
     // Samples of asset arrays, which the crate reads, are left as they are.
     let samples = "#usda 1.0\ndef \"A\" { asset[] a.timeSamples = { 1: [@x.png@, @y.png@] } }\n";
     assert_eq!(layer::grammar_gaps(samples), samples);
