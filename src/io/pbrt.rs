@@ -1049,13 +1049,11 @@ impl Parser {
         Ok(Some(AreaLight { radiance, two_sided, power: positive(p, "area light \"diffuse\"", "power")? }))
     }
 
-    /// The mesh of a shape under an area light, placed by the current transform, as the
-    /// light it is (it replaces the shape, as an emitting mesh does in tress). The side it
+    /// The mesh of a shape under an area light, placed by `to_world`, as the light it is (it replaces the shape, as an emitting mesh does in tress). The side it
     /// emits from is pbrt's surface normal: the one the shape's vertex normals face when it
     /// has them (spheres, disks and cylinders face out), else the triangles' winding, a
     /// mirroring transform turning it; `ReverseOrientation` turns it again.
-    fn push_area_light(&mut self, light: AreaLight, mesh: &TriangleMesh, line: u32) -> Res<()> {
-        let to_world = Affine3A::from_mat4(self.state.ctm.as_mat4());
+    fn push_area_light(&mut self, light: AreaLight, mesh: &TriangleMesh, to_world: Affine3A, line: u32) -> Res<()> {
         let normal_to_world = to_world.matrix3.inverse().transpose();
         let mirror = to_world.matrix3.determinant() < 0.0;
         let mut triangles = Vec::with_capacity(mesh.indices.len() * if light.two_sided { 2 } else { 1 });
@@ -1173,7 +1171,7 @@ impl Parser {
     /// light.
     fn push_mesh(&mut self, mesh: TriangleMesh, material: MaterialSource, transform: Affine3A, line: u32) -> Res<()> {
         match self.state.area_light {
-            Some(light) => self.push_area_light(light, &mesh, line),
+            Some(light) => self.push_area_light(light, &mesh, transform, line),
             None => {
                 self.out.contents.meshes.push(MeshEntry {
                     source: MeshSource::Inline(mesh),

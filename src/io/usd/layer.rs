@@ -295,6 +295,7 @@ pub fn grammar_gaps(text: &str) -> String {
         edits.push((kept, header.len(), String::new()));
     }
     let mut asset_blocks: Vec<usize> = Vec::new();
+    let end_of_line = |b: &[u8], i: usize| b[i..].iter().position(|&c| c == b'\n').map_or(b.len(), |n| i + n);
     scan(text, |b, i, _| {
         if b[i] == b'/' && b.get(i + 1) == Some(&b'/') {
             edits.push((i, i + 2, "# ".into()));
@@ -320,12 +321,11 @@ pub fn grammar_gaps(text: &str) -> String {
         // fraction (`int length = 5.0`).
         let word = b[i..].iter().take_while(|&&c| c.is_ascii_alphanumeric() || c == b'[' || c == b']').count();
         if INTEGER_TYPES.contains(&&b[i..i + word]) && space(i + word) {
-            let line_end = b[i..].iter().position(|&c| c == b'\n').map_or(b.len(), |n| i + n);
-            edits.extend(whole_numbers(b, i + word, line_end));
+            edits.extend(whole_numbers(b, i + word, end_of_line(b, i)));
         }
         let array = b[i..].starts_with(b"asset[]");
         if b[i..].starts_with(b"asset") && (space(i + 5) || array && space(i + 7)) {
-            let line_end = b[i..].iter().position(|&c| c == b'\n').map_or(b.len(), |n| i + n);
+            let line_end = end_of_line(b, i);
             let decl_at = i + if array { 7 } else { 5 };
             let decl: String = String::from_utf8_lossy(&b[decl_at..line_end]).split_whitespace().collect();
             if decl.contains(".timeSamples={") {
@@ -377,6 +377,12 @@ pub fn grammar_gaps(text: &str) -> String {
     out
 }
 
+/// Where an attribute's value starts on its declaration's line `b[from..line_end]`: after
+/// its `=`, if it has one there.
+fn value_start(b: &[u8], from: usize, line_end: usize) -> Option<usize> {
+    b[from..line_end].iter().position(|&c| c == b'=').map(|eq| from + eq + 1)
+}
+
 /// Integer value types (scalars, tuples and their arrays), whose values USD's parser reads
 /// from numbers written with a zero fraction (`5.0`) and the crate's does not.
 const INTEGER_TYPES: [&[u8]; 10] =
@@ -387,9 +393,8 @@ const INTEGER_TYPES: [&[u8]; 10] =
 /// brackets go): `5.0` and `-3.00` become `5` and `-3`; other numbers stay, for the
 /// parser to judge.
 fn whole_numbers(b: &[u8], from: usize, line_end: usize) -> Vec<(usize, usize, String)> {
-    let Some(eq) = b[from..line_end].iter().position(|&c| c == b'=') else { return Vec::new() };
+    let Some(mut j) = value_start(b, from, line_end) else { return Vec::new() };
     let mut edits = Vec::new();
-    let mut j = from + eq + 1;
     let in_value = |c: u8| c.is_ascii_digit() || b" \t.,+-eE()[]".contains(&c);
     while j < line_end && in_value(b[j]) {
         if b[j].is_ascii_digit() && !b[j - 1].is_ascii_alphanumeric() && b[j - 1] != b'.' {
@@ -414,9 +419,8 @@ fn whole_numbers(b: &[u8], from: usize, line_end: usize) -> Vec<(usize, usize, S
 /// `b[from..line_end]` (after its `=`, up to the metadata's `(` or the line's end): each
 /// `"` of a one-line string holding no `@`, `\` or `'` becomes `@`.
 fn quoted_assets(b: &[u8], from: usize, line_end: usize) -> Vec<(usize, usize, String)> {
-    let Some(eq) = b[from..line_end].iter().position(|&c| c == b'=') else { return Vec::new() };
+    let Some(mut j) = value_start(b, from, line_end) else { return Vec::new() };
     let mut edits = Vec::new();
-    let mut j = from + eq + 1;
     while j < line_end {
         match b[j] {
             b'(' | b'#' | b'@' => break,
